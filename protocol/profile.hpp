@@ -1,0 +1,45 @@
+// Stream profiles: the one place that says what each named stream carries and how finely.
+// The server offers a subset; the codec, the protocol checks and the clients all read this table.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace ocean {
+
+struct Profile {
+  std::uint8_t id;          // wire id, stable forever once released
+  std::string_view name;    // what users type: --profile mobile
+  std::uint16_t grid;       // the stream is grid x grid samples, band-limited from the sim
+  std::uint16_t rate_hz;    // frames per second
+  bool normals;             // slopes (dh/dx, dh/dz) are delivered, error-bounded by slope_step / 2
+  bool choppy;              // horizontal displacement and Jacobian are delivered
+  float height_step_m;      // height quantization step; reconstruction error <= step / 2
+  float slope_step;         // slope quantization step (dimensionless)
+  float disp_step_m;        // displacement quantization step (choppy profiles)
+};
+
+inline constexpr Profile kProfiles[] = {
+    // id  name              grid rate normals choppy  h-step  slope-step   disp-step
+    {1, "mobile",          64,  30,  true,   false,  0.01f,  1.0f / 256,  0.01f},
+    {2, "desktop",         256, 30,  true,   false,  0.01f,  1.0f / 256,  0.01f},
+    {3, "desktop-choppy",  256, 30,  true,   true,   0.01f,  1.0f / 256,  0.01f},
+    {4, "lite",            32,  15,  true,   false,  0.02f,  1.0f / 128,  0.02f},
+};
+
+inline std::span<const Profile> all_profiles() { return kProfiles; }
+
+inline const Profile* find_profile(std::string_view name) {
+  for (const Profile& p : kProfiles)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+inline const Profile* find_profile(std::uint8_t id) {
+  for (const Profile& p : kProfiles)
+    if (p.id == id) return &p;
+  return nullptr;
+}
+
+}  // namespace ocean
