@@ -1,0 +1,59 @@
+// The rate limiter is a serialiser: a packet leaves when the bytes queued before it have,
+// which is a token bucket with a one-packet burst; its queue is bounded in bytes (tail drop).
+#include "link_model.hpp"
+
+#include <algorithm>
+
+namespace ocean::loadtest {
+
+LinkModel::LinkModel(const LinkSpec& spec, std::uint64_t seed) : spec_(spec), rng_(seed ^ 0x9E3779B97F4A7C15ull) {}
+
+double LinkModel::uniform() {
+  // splitmix64: tiny, good enough for impairment decisions, the same on every platform.
+  std::uint64_t z = (rng_ += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+void LinkModel::schedule(std::vector<std::uint8_t> bytes, double due) {
+  pending_.push(InFlight{due, order_++, std::move(bytes)});
+}
+
+void LinkModel::send(std::vector<std::uint8_t> bytes, double now) {
+  ++stats_.offered;
+  if (spec_.loss > 0 && uniform() < spec_.loss) {
+    ++stats_.lost;
+    return;
+  }
+  double left_link = now;
+  if (spec_.rate_bps > 0) {
+    const double backlog_s = std::max(0.0, link_free_at_ - now);
+    const double backlog_bytes = backlog_s * spec_.rate_bps / 8.0;
+    if (backlog_bytes + static_cast<double>(bytes.size()) > spec_.queue_bytes) {
+      ++stats_.queue_drops;
+      return;
+    }
+    left_link = std::max(now, link_free_at_) + static_cast<double>(bytes.size()) * 8.0 / spec_.rate_bps;
+    link_free_at_ = left_link;
+  }
+  const double base = spec_.delay_ms * 1e-3;
+  const double jitter = spec_.jitter_ms * 1e-3 * (2.0 * uniform() - 1.0);
+  double due = left_link + base + jitter;
+  if (spec_.reorder > 0 && uniform() < spec_.reorder) {
+    // Skips the queue of in-flight packets: it may arrive before ones sent earlier.
+    due = left_link + base - spec_.jitter_ms * 1e-3;
+    ++stats_.reordered;
+  } else {
+    due = std::max(due, last_in_order_);
+    last_in_order_ = due;
+  }
+  if (spec_.duplicate > 0 && uniform() < spec_.duplicate) {
+    ++stats_.duplicated;
+    schedule(bytes, due + 0.001);
+  }
+  schedule(std::move(bytes), due);
+}
+
+}  // namespace ocean::loadtest
