@@ -1,0 +1,262 @@
+// Builds each message with the generated FlatBuffers builders and finishes it size-prefixed.
+#include "message_builders.hpp"
+
+#include <algorithm>
+
+#include "protocol_version.hpp"
+#include "wire_limits.hpp"
+
+namespace ocean::protocol {
+namespace {
+
+using flatbuffers::FlatBufferBuilder;
+using flatbuffers::Offset;
+
+template <typename T>
+Bytes finish(FlatBufferBuilder& fbb, wire::Body type, Offset<T> body) {
+  wire::MessageBuilder root(fbb);
+  root.add_version(kProtocolVersion);
+  root.add_body_type(type);
+  root.add_body(body.Union());
+  wire::FinishSizePrefixedMessageBuffer(fbb, root.Finish());
+  return Bytes(fbb.GetBufferPointer(), fbb.GetBufferPointer() + fbb.GetSize());
+}
+
+// Empty vectors and strings are left out: the reader treats absent and empty alike.
+Offset<flatbuffers::Vector<std::uint8_t>> bytes_of(FlatBufferBuilder& fbb,
+                                                   std::span<const std::uint8_t> bytes) {
+  return bytes.empty() ? 0 : fbb.CreateVector(bytes.data(), bytes.size());
+}
+
+Offset<flatbuffers::String> string_of(FlatBufferBuilder& fbb, const std::string& text) {
+  return text.empty() ? 0 : fbb.CreateString(text);
+}
+
+Offset<wire::StreamParams> stream_of(FlatBufferBuilder& fbb, const StreamParams& s) {
+  wire::StreamParamsBuilder b(fbb);
+  b.add_profile_id(s.profile_id);
+  b.add_grid(s.grid);
+  b.add_patch_x_m(s.patch_x_m);
+  b.add_patch_z_m(s.patch_z_m);
+  b.add_gravity_mps2(s.gravity_mps2);
+  b.add_depth_m(s.depth_m);
+  b.add_rate_hz(s.rate_hz);
+  b.add_height_step_m(s.height_step_m);
+  b.add_slope_step(s.slope_step);
+  b.add_disp_step_m(s.disp_step_m);
+  b.add_normals(s.normals);
+  b.add_choppy(s.choppy);
+  return b.Finish();
+}
+
+Offset<wire::SceneParams> scene_of(FlatBufferBuilder& fbb, const SceneParams& s) {
+  wire::SceneParamsBuilder b(fbb);
+  b.add_size_x(s.size_x);
+  b.add_size_z(s.size_z);
+  b.add_patch_x_m(s.patch_x_m);
+  b.add_patch_z_m(s.patch_z_m);
+  b.add_spectrum(s.spectrum);
+  b.add_spreading(s.spreading);
+  b.add_wind_speed_mps(s.wind_speed_mps);
+  b.add_wind_dir_deg(s.wind_dir_deg);
+  b.add_fetch_m(s.fetch_m);
+  b.add_amplitude(s.amplitude);
+  b.add_depth_m(s.depth_m);
+  b.add_small_wave_m(s.small_wave_m);
+  b.add_choppiness(s.choppiness);
+  b.add_gravity_mps2(s.gravity_mps2);
+  b.add_seed(s.seed);
+  return b.Finish();
+}
+
+}  // namespace
+
+Bytes encode(const Hello& m) {
+  FlatBufferBuilder fbb(128);
+  const auto name = string_of(fbb, m.client_name);
+  wire::HelloBuilder b(fbb);
+  b.add_profile_id(m.profile_id);
+  b.add_bandwidth_bps(m.bandwidth_bps);
+  b.add_transport(m.transport);
+  b.add_client_name(name);
+  return finish(fbb, wire::Body::Hello, b.Finish());
+}
+
+Bytes encode(const Welcome& m) {
+  FlatBufferBuilder fbb(512);
+  const auto stream = stream_of(fbb, m.stream);
+  const auto scene = scene_of(fbb, m.scene);
+  const auto offered = bytes_of(fbb, m.offered_profiles);
+  const auto cookie = bytes_of(fbb, m.udp_cookie);
+  wire::WelcomeBuilder b(fbb);
+  b.add_session_id(m.session_id);
+  b.add_stream(stream);
+  b.add_scene(scene);
+  b.add_offered_profiles(offered);
+  b.add_epoch_unix_ms(m.epoch_unix_ms);
+  b.add_current_tick(m.current_tick);
+  b.add_tick_period_s(m.tick_period_s);
+  b.add_udp_port(m.udp_port);
+  b.add_udp_cookie(cookie);
+  b.add_max_message_bytes(m.max_message_bytes);
+  return finish(fbb, wire::Body::Welcome, b.Finish());
+}
+
+Bytes encode(const UdpHello& m) {
+  // Padding = what the message lacks to reach the minimum; the vector's own 4-byte length and
+  // alignment are absorbed by measuring once without padding.
+  auto build = [&](std::size_t padding_bytes) {
+    FlatBufferBuilder fbb(kUdpHelloMinBytes + 64);
+    const auto cookie = bytes_of(fbb, m.cookie);
+    const std::vector<std::uint8_t> zeros(padding_bytes, 0);
+    const auto padding = fbb.CreateVector(zeros);
+    wire::UdpHelloBuilder b(fbb);
+    b.add_session_id(m.session_id);
+    b.add_cookie(cookie);
+    b.add_padding(padding);
+    return finish(fbb, wire::Body::UdpHello, b.Finish());
+  };
+  Bytes bytes = build(0);
+  if (bytes.size() < kUdpHelloMinBytes) bytes = build(kUdpHelloMinBytes - bytes.size());
+  return bytes;
+}
+
+Bytes encode(const UdpReady& m) {
+  FlatBufferBuilder fbb(64);
+  wire::UdpReadyBuilder b(fbb);
+  b.add_session_id(m.session_id);
+  return finish(fbb, wire::Body::UdpReady, b.Finish());
+}
+
+Bytes encode(const FrameChunk& m) {
+  FlatBufferBuilder fbb(m.payload.size() + kChunkOverheadBytes);
+  const auto payload = fbb.CreateVector(m.payload.data(), m.payload.size());
+  wire::FrameChunkBuilder b(fbb);
+  b.add_tick(m.frame.tick);
+  b.add_baseline(m.frame.baseline);
+  b.add_key(m.frame.key);
+  b.add_profile_id(m.frame.profile_id);
+  b.add_index(m.index);
+  b.add_count(m.count);
+  b.add_payload(payload);
+  return finish(fbb, wire::Body::FrameChunk, b.Finish());
+}
+
+Bytes encode(const Ack& m) {
+  FlatBufferBuilder fbb(128);
+  const auto cookie = bytes_of(fbb, m.cookie);
+  wire::AckBuilder b(fbb);
+  b.add_session_id(m.session_id);
+  b.add_cookie(cookie);
+  b.add_latest_tick(m.latest_tick);
+  b.add_ack_bits(m.ack_bits);
+  return finish(fbb, wire::Body::Ack, b.Finish());
+}
+
+Bytes encode(const KeyframeRequest& m) {
+  FlatBufferBuilder fbb(128);
+  const auto cookie = bytes_of(fbb, m.cookie);
+  wire::KeyframeRequestBuilder b(fbb);
+  b.add_session_id(m.session_id);
+  b.add_cookie(cookie);
+  b.add_reason(m.reason);
+  return finish(fbb, wire::Body::KeyframeRequest, b.Finish());
+}
+
+Bytes encode(const SetTransport& m) {
+  FlatBufferBuilder fbb(64);
+  wire::SetTransportBuilder b(fbb);
+  b.add_transport(m.transport);
+  return finish(fbb, wire::Body::SetTransport, b.Finish());
+}
+
+Bytes encode(const ParamChange& m) {
+  FlatBufferBuilder fbb(256);
+  const auto token = string_of(fbb, m.admin_token);
+  wire::ParamChangeBuilder b(fbb);
+  b.add_admin_token(token);
+  b.add_request_id(m.request_id);
+  if (m.wind_speed_mps) b.add_wind_speed_mps(*m.wind_speed_mps);
+  if (m.wind_dir_deg) b.add_wind_dir_deg(*m.wind_dir_deg);
+  if (m.amplitude) b.add_amplitude(*m.amplitude);
+  if (m.choppiness) b.add_choppiness(*m.choppiness);
+  if (m.spectrum) b.add_spectrum(*m.spectrum);
+  return finish(fbb, wire::Body::ParamChange, b.Finish());
+}
+
+Bytes encode(const SceneUpdate& m) {
+  FlatBufferBuilder fbb(256);
+  const auto scene = scene_of(fbb, m.scene);
+  wire::SceneUpdateBuilder b(fbb);
+  b.add_request_id(m.request_id);
+  b.add_effective_tick(m.effective_tick);
+  b.add_scene(scene);
+  return finish(fbb, wire::Body::SceneUpdate, b.Finish());
+}
+
+Bytes encode(const Error& m) {
+  FlatBufferBuilder fbb(128 + m.text.size());
+  const auto text = string_of(fbb, m.text);
+  wire::ErrorBuilder b(fbb);
+  b.add_code(to_wire(m.code));
+  b.add_text(text);
+  return finish(fbb, wire::Body::Error, b.Finish());
+}
+
+Bytes encode(const Bye& m) {
+  FlatBufferBuilder fbb(128 + m.text.size());
+  const auto text = string_of(fbb, m.text);
+  wire::ByeBuilder b(fbb);
+  b.add_reason(m.reason);
+  b.add_text(text);
+  return finish(fbb, wire::Body::Bye, b.Finish());
+}
+
+Bytes encode(const Ping& m) {
+  FlatBufferBuilder fbb(128);
+  const auto cookie = bytes_of(fbb, m.cookie);
+  wire::PingBuilder b(fbb);
+  b.add_session_id(m.session_id);
+  b.add_cookie(cookie);
+  b.add_seq(m.seq);
+  b.add_client_time_us(m.client_time_us);
+  return finish(fbb, wire::Body::Ping, b.Finish());
+}
+
+Bytes encode(const Pong& m) {
+  FlatBufferBuilder fbb(64);
+  wire::PongBuilder b(fbb);
+  b.add_seq(m.seq);
+  b.add_client_time_us(m.client_time_us);
+  b.add_server_tick(m.server_tick);
+  b.add_server_time_unix_ms(m.server_time_unix_ms);
+  return finish(fbb, wire::Body::Pong, b.Finish());
+}
+
+Bytes encode(const AnyMessage& message) {
+  return std::visit([](const auto& m) { return encode(m); }, message);
+}
+
+std::vector<Bytes> split_frame(const FrameHeader& header, std::span<const std::uint8_t> payload,
+                               std::size_t max_payload) {
+  if (max_payload == 0) return {};
+  const std::size_t count = std::max<std::size_t>(1, (payload.size() + max_payload - 1) / max_payload);
+  if (count > kMaxChunksPerFrame) return {};
+  std::vector<Bytes> chunks;
+  chunks.reserve(count);
+  FrameChunk chunk;
+  chunk.frame = header;
+  chunk.count = static_cast<std::uint16_t>(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::size_t begin = i * max_payload;
+    const std::size_t end = std::min(payload.size(), begin + max_payload);
+    chunk.index = static_cast<std::uint16_t>(i);
+    chunk.payload.assign(payload.begin() + begin, payload.begin() + end);
+    chunks.push_back(encode(chunk));
+  }
+  return chunks;
+}
+
+bool fits_datagram(std::span<const std::uint8_t> bytes) { return bytes.size() <= kMaxDatagram; }
+
+}  // namespace ocean::protocol

@@ -1,0 +1,153 @@
+// Copies verified FlatBuffers tables into plain values; absent vectors and strings read as empty.
+#include "message_readers.hpp"
+
+namespace ocean::protocol {
+namespace {
+
+Bytes bytes_of(const flatbuffers::Vector<std::uint8_t>* vector) {
+  return vector ? Bytes(vector->begin(), vector->end()) : Bytes{};
+}
+
+std::string string_of(const flatbuffers::String* text) { return text ? text->str() : std::string{}; }
+
+template <typename T>
+std::optional<T> optional_of(flatbuffers::Optional<T> value) {
+  return value ? std::optional<T>(*value) : std::nullopt;
+}
+
+}  // namespace
+
+StreamParams read(const wire::StreamParams& s) {
+  StreamParams out;
+  out.profile_id = s.profile_id();
+  out.grid = s.grid();
+  out.patch_x_m = s.patch_x_m();
+  out.patch_z_m = s.patch_z_m();
+  out.gravity_mps2 = s.gravity_mps2();
+  out.depth_m = s.depth_m();
+  out.rate_hz = s.rate_hz();
+  out.height_step_m = s.height_step_m();
+  out.slope_step = s.slope_step();
+  out.disp_step_m = s.disp_step_m();
+  out.normals = s.normals();
+  out.choppy = s.choppy();
+  return out;
+}
+
+SceneParams read(const wire::SceneParams& s) {
+  SceneParams out;
+  out.size_x = s.size_x();
+  out.size_z = s.size_z();
+  out.patch_x_m = s.patch_x_m();
+  out.patch_z_m = s.patch_z_m();
+  out.spectrum = s.spectrum();
+  out.spreading = s.spreading();
+  out.wind_speed_mps = s.wind_speed_mps();
+  out.wind_dir_deg = s.wind_dir_deg();
+  out.fetch_m = s.fetch_m();
+  out.amplitude = s.amplitude();
+  out.depth_m = s.depth_m();
+  out.small_wave_m = s.small_wave_m();
+  out.choppiness = s.choppiness();
+  out.gravity_mps2 = s.gravity_mps2();
+  out.seed = s.seed();
+  return out;
+}
+
+Hello read(const wire::Hello& m) {
+  return Hello{m.profile_id(), m.bandwidth_bps(), m.transport(), string_of(m.client_name())};
+}
+
+Welcome read(const wire::Welcome& m) {
+  Welcome out;
+  out.session_id = m.session_id();
+  if (m.stream()) out.stream = read(*m.stream());
+  if (m.scene()) out.scene = read(*m.scene());
+  out.offered_profiles = bytes_of(m.offered_profiles());
+  out.epoch_unix_ms = m.epoch_unix_ms();
+  out.current_tick = m.current_tick();
+  out.tick_period_s = m.tick_period_s();
+  out.udp_port = m.udp_port();
+  out.udp_cookie = bytes_of(m.udp_cookie());
+  out.max_message_bytes = m.max_message_bytes();
+  return out;
+}
+
+UdpHello read(const wire::UdpHello& m) { return UdpHello{m.session_id(), bytes_of(m.cookie())}; }
+
+UdpReady read(const wire::UdpReady& m) { return UdpReady{m.session_id()}; }
+
+FrameChunk read(const wire::FrameChunk& m) {
+  FrameChunk out;
+  out.frame = FrameHeader{m.tick(), m.baseline(), m.key(), m.profile_id()};
+  out.index = m.index();
+  out.count = m.count();
+  out.payload = bytes_of(m.payload());
+  return out;
+}
+
+Ack read(const wire::Ack& m) {
+  return Ack{m.session_id(), bytes_of(m.cookie()), m.latest_tick(), m.ack_bits()};
+}
+
+KeyframeRequest read(const wire::KeyframeRequest& m) {
+  return KeyframeRequest{m.session_id(), bytes_of(m.cookie()), m.reason()};
+}
+
+SetTransport read(const wire::SetTransport& m) { return SetTransport{m.transport()}; }
+
+ParamChange read(const wire::ParamChange& m) {
+  ParamChange out;
+  out.admin_token = string_of(m.admin_token());
+  out.request_id = m.request_id();
+  out.wind_speed_mps = optional_of(m.wind_speed_mps());
+  out.wind_dir_deg = optional_of(m.wind_dir_deg());
+  out.amplitude = optional_of(m.amplitude());
+  out.choppiness = optional_of(m.choppiness());
+  out.spectrum = optional_of(m.spectrum());
+  return out;
+}
+
+SceneUpdate read(const wire::SceneUpdate& m) {
+  SceneUpdate out;
+  out.request_id = m.request_id();
+  out.effective_tick = m.effective_tick();
+  if (m.scene()) out.scene = read(*m.scene());
+  return out;
+}
+
+Error read(const wire::Error& m) { return Error{from_wire(m.code()), string_of(m.text())}; }
+
+Bye read(const wire::Bye& m) { return Bye{m.reason(), string_of(m.text())}; }
+
+Ping read(const wire::Ping& m) {
+  return Ping{m.session_id(), bytes_of(m.cookie()), m.seq(), m.client_time_us()};
+}
+
+Pong read(const wire::Pong& m) {
+  return Pong{m.seq(), m.client_time_us(), m.server_tick(), m.server_time_unix_ms()};
+}
+
+AnyMessage decode(const wire::Message& message) {
+  switch (message.body_type()) {
+    case wire::Body::Hello: return read(*message.body_as_Hello());
+    case wire::Body::Welcome: return read(*message.body_as_Welcome());
+    case wire::Body::UdpHello: return read(*message.body_as_UdpHello());
+    case wire::Body::UdpReady: return read(*message.body_as_UdpReady());
+    case wire::Body::FrameChunk: return read(*message.body_as_FrameChunk());
+    case wire::Body::Ack: return read(*message.body_as_Ack());
+    case wire::Body::KeyframeRequest: return read(*message.body_as_KeyframeRequest());
+    case wire::Body::SetTransport: return read(*message.body_as_SetTransport());
+    case wire::Body::ParamChange: return read(*message.body_as_ParamChange());
+    case wire::Body::SceneUpdate: return read(*message.body_as_SceneUpdate());
+    case wire::Body::Error: return read(*message.body_as_Error());
+    case wire::Body::Bye: return read(*message.body_as_Bye());
+    case wire::Body::Ping: return read(*message.body_as_Ping());
+    case wire::Body::Pong: return read(*message.body_as_Pong());
+    case wire::Body::NONE: break;
+  }
+  // verify_message() rejects NONE and unknown types, so this is a caller bug.
+  return Error{Reason::unknown_message_type, "decode() called on an unverified message"};
+}
+
+}  // namespace ocean::protocol

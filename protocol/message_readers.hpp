@@ -1,0 +1,29 @@
+// decode(): a verified wire::Message -> its plain value (message_types.hpp). Only call these on
+// a message that verify_message() accepted; they copy, so the value outlives the bytes.
+// Hot paths may read the verified wire::Message directly instead (e.g. FrameChunk payloads).
+#pragma once
+
+#include "message_types.hpp"
+
+namespace ocean::protocol {
+
+AnyMessage decode(const wire::Message& message);
+
+StreamParams read(const wire::StreamParams& stream);
+SceneParams read(const wire::SceneParams& scene);
+Hello read(const wire::Hello& message);
+Welcome read(const wire::Welcome& message);
+UdpHello read(const wire::UdpHello& message);
+UdpReady read(const wire::UdpReady& message);
+FrameChunk read(const wire::FrameChunk& message);
+Ack read(const wire::Ack& message);
+KeyframeRequest read(const wire::KeyframeRequest& message);
+SetTransport read(const wire::SetTransport& message);
+ParamChange read(const wire::ParamChange& message);
+SceneUpdate read(const wire::SceneUpdate& message);
+Error read(const wire::Error& message);
+Bye read(const wire::Bye& message);
+Ping read(const wire::Ping& message);
+Pong read(const wire::Pong& message);
+
+}  // namespace ocean::protocol

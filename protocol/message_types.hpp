@@ -1,0 +1,176 @@
+// Plain C++ values of every message in ocean.fbs, so the server and clients build and read
+// messages without touching FlatBuffers. One struct per message; fields, units and limits are
+// those of ocean.fbs (PROTOCOL.md lists them); enums are the generated wire enums.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "ocean_generated.h"
+#include "wire_reason.hpp"
+
+namespace ocean::protocol {
+
+using Bytes = std::vector<std::uint8_t>;
+
+struct StreamParams {
+  std::uint8_t profile_id = 0;
+  std::uint16_t grid = 0;
+  double patch_x_m = 0.0;
+  double patch_z_m = 0.0;
+  double gravity_mps2 = 9.81;
+  double depth_m = 0.0;  // 0 = deep water
+  std::uint16_t rate_hz = 0;
+  float height_step_m = 0.0f;
+  float slope_step = 0.0f;
+  float disp_step_m = 0.0f;
+  bool normals = false;
+  bool choppy = false;
+  bool operator==(const StreamParams&) const = default;
+};
+
+// Mirrors server/sim/scene_params.hpp, except depth_m: 0 here means deep water (infinity there).
+struct SceneParams {
+  std::uint16_t size_x = 256;
+  std::uint16_t size_z = 256;
+  double patch_x_m = 256.0;
+  double patch_z_m = 256.0;
+  wire::Spectrum spectrum = wire::Spectrum::phillips;
+  wire::Spreading spreading = wire::Spreading::donelan_banner;
+  double wind_speed_mps = 10.0;
+  double wind_dir_deg = 0.0;
+  double fetch_m = 100000.0;
+  double amplitude = 1.0;
+  double depth_m = 0.0;  // 0 = deep water
+  double small_wave_m = 0.0;
+  double choppiness = 0.0;
+  double gravity_mps2 = 9.81;
+  std::uint64_t seed = 1;
+  bool operator==(const SceneParams&) const = default;
+};
+
+struct Hello {
+  std::uint8_t profile_id = 0;  // 0 = let the server choose
+  std::uint64_t bandwidth_bps = 0;
+  wire::Transport transport = wire::Transport::udp;
+  std::string client_name;
+  bool operator==(const Hello&) const = default;
+};
+
+struct Welcome {
+  std::uint64_t session_id = 0;
+  StreamParams stream;
+  SceneParams scene;
+  std::vector<std::uint8_t> offered_profiles;
+  std::int64_t epoch_unix_ms = 0;
+  std::uint32_t current_tick = 0;
+  double tick_period_s = 0.0;
+  std::uint16_t udp_port = 0;
+  Bytes udp_cookie;
+  std::uint32_t max_message_bytes = 0;
+  bool operator==(const Welcome&) const = default;
+};
+
+struct UdpHello {  // encode() adds the padding
+  std::uint64_t session_id = 0;
+  Bytes cookie;
+  bool operator==(const UdpHello&) const = default;
+};
+
+struct UdpReady {
+  std::uint64_t session_id = 0;
+  bool operator==(const UdpReady&) const = default;
+};
+
+// Everything of a FrameChunk but its payload: what split_frame() stamps on every chunk.
+struct FrameHeader {
+  std::uint32_t tick = 0;
+  std::uint32_t baseline = 0;  // == tick for a keyframe
+  bool key = false;
+  std::uint8_t profile_id = 0;
+  bool operator==(const FrameHeader&) const = default;
+};
+
+struct FrameChunk {
+  FrameHeader frame;
+  std::uint16_t index = 0;
+  std::uint16_t count = 1;
+  Bytes payload;
+  bool operator==(const FrameChunk&) const = default;
+};
+
+struct Ack {
+  std::uint64_t session_id = 0;
+  Bytes cookie;
+  std::uint32_t latest_tick = 0;
+  std::uint32_t ack_bits = 0;  // bit i = tick latest_tick - 1 - i received
+  bool operator==(const Ack&) const = default;
+};
+
+struct KeyframeRequest {
+  std::uint64_t session_id = 0;
+  Bytes cookie;
+  wire::KeyframeReason reason = wire::KeyframeReason::startup;
+  bool operator==(const KeyframeRequest&) const = default;
+};
+
+struct SetTransport {
+  wire::Transport transport = wire::Transport::tcp;
+  bool operator==(const SetTransport&) const = default;
+};
+
+struct ParamChange {
+  std::string admin_token;
+  std::uint32_t request_id = 0;
+  std::optional<double> wind_speed_mps;
+  std::optional<double> wind_dir_deg;
+  std::optional<double> amplitude;
+  std::optional<double> choppiness;
+  std::optional<wire::Spectrum> spectrum;
+  bool operator==(const ParamChange&) const = default;
+};
+
+struct SceneUpdate {
+  std::uint32_t request_id = 0;
+  std::uint32_t effective_tick = 0;
+  SceneParams scene;
+  bool operator==(const SceneUpdate&) const = default;
+};
+
+struct Error {
+  Reason code = Reason::internal_error;
+  std::string text;
+  bool operator==(const Error&) const = default;
+};
+
+struct Bye {
+  wire::ByeReason reason = wire::ByeReason::unspecified;
+  std::string text;
+  bool operator==(const Bye&) const = default;
+};
+
+struct Ping {
+  std::uint64_t session_id = 0;
+  Bytes cookie;
+  std::uint32_t seq = 0;
+  std::uint64_t client_time_us = 0;
+  bool operator==(const Ping&) const = default;
+};
+
+struct Pong {
+  std::uint32_t seq = 0;
+  std::uint64_t client_time_us = 0;
+  std::uint32_t server_tick = 0;
+  std::int64_t server_time_unix_ms = 0;
+  bool operator==(const Pong&) const = default;
+};
+
+// Any one message, as decode() returns it.
+using AnyMessage = std::variant<Hello, Welcome, UdpHello, UdpReady, FrameChunk, Ack,
+                                KeyframeRequest, SetTransport, ParamChange, SceneUpdate, Error, Bye,
+                                Ping, Pong>;
+
+}  // namespace ocean::protocol

@@ -1,0 +1,71 @@
+// Every size and range limit of the wire protocol, in one place so the builders, the verifier,
+// the framer and PROTOCOL.md agree. Sizes count the whole message including its 4-byte size prefix.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace ocean::protocol {
+
+// UDP: one message per datagram, never more than this (fits any path MTU >= 1280 with headers).
+inline constexpr std::size_t kMaxDatagram = 1200;
+
+// TCP: the default and the allowed range of Welcome.max_message_bytes.
+inline constexpr std::size_t kDefaultMaxMessageBytes = 64 * 1024;
+inline constexpr std::size_t kMinMaxMessageBytes = kMaxDatagram;
+inline constexpr std::size_t kMaxMaxMessageBytes = 4 * 1024 * 1024;
+
+// 4-byte size prefix + 4-byte root offset + 4-byte identifier: nothing shorter can be a message.
+inline constexpr std::size_t kSizePrefixBytes = 4;
+inline constexpr std::size_t kMinMessageBytes = 12;
+
+// Bytes a FrameChunk message needs besides its payload (measured worst case 87, with the widest
+// field values; tests/protocol checks it), so payload <= max message - this always fits.
+inline constexpr std::size_t kChunkOverheadBytes = 96;
+inline constexpr std::size_t kMaxChunkPayloadUdp = kMaxDatagram - kChunkOverheadBytes;
+constexpr std::size_t max_chunk_payload(std::size_t max_message_bytes) {
+  return max_message_bytes > kChunkOverheadBytes ? max_message_bytes - kChunkOverheadBytes : 0;
+}
+
+// Frame sequencing.
+inline constexpr std::uint16_t kMaxChunksPerFrame = 4096;
+// tick - baseline of a delta frame, in ticks: the client keeps the frames of its 32-tick ack
+// window, so a baseline at most this old is one it still holds (PROTOCOL.md section 7).
+inline constexpr std::uint32_t kMaxBaselineGap = 32;
+
+// UdpHello is padded to this size so the server's answer is never larger (no amplification).
+inline constexpr std::size_t kUdpHelloMinBytes = 256;
+
+// Vectors and strings.
+inline constexpr std::size_t kMinCookieBytes = 8;
+inline constexpr std::size_t kMaxCookieBytes = 64;
+inline constexpr std::size_t kMaxOfferedProfiles = 16;
+inline constexpr std::size_t kMaxClientNameBytes = 64;
+inline constexpr std::size_t kMaxAdminTokenBytes = 128;
+inline constexpr std::size_t kMaxTextBytes = 256;
+
+// Scene ranges: exactly what server/sim/scene_params.cpp validate() accepts, so every scene the
+// sim runs passes the wire check (depth differs only in encoding: 0 on the wire = deep water).
+inline constexpr std::uint16_t kMinSceneSize = 16;
+inline constexpr std::uint16_t kMaxSceneSize = 2048;
+inline constexpr double kMinPatchM = 0.01;
+inline constexpr double kMaxPatchM = 1e6;
+inline constexpr double kMaxWindSpeedMps = 100.0;
+inline constexpr double kMaxWindDirDeg = 1e6;  // magnitude
+inline constexpr double kMinFetchM = 1.0;
+inline constexpr double kMaxFetchM = 1e8;
+inline constexpr double kMaxAmplitude = 1e6;
+inline constexpr double kMaxSmallWaveM = 1e6;
+inline constexpr double kMaxChoppiness = 100.0;
+inline constexpr double kMinGravityMps2 = 0.01;
+inline constexpr double kMaxGravityMps2 = 1000.0;
+
+// Stream and timing ranges.
+inline constexpr std::uint16_t kMaxRateHz = 240;
+inline constexpr double kMaxTickPeriodS = 10.0;
+
+// FlatBuffers Verifier limits: our deepest message is Message > Welcome > SceneParams.
+inline constexpr unsigned kVerifierMaxDepth = 8;
+inline constexpr unsigned kVerifierMaxTables = 64;
+
+}  // namespace ocean::protocol

@@ -1,0 +1,353 @@
+// Every class of malformed input is rejected with its own reason, and a receiver that gets it
+// is left exactly as it was.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "message_builders.hpp"
+#include "protocol_version.hpp"
+#include "receiver.hpp"
+
+using namespace ocean::protocol;
+using namespace ocean::protocol::test;
+namespace wire = ocean::wire;
+using flatbuffers::FlatBufferBuilder;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Asserts the bytes are rejected for `reason` and that a busy receiver is unchanged by them.
+void expect_rejected(std::span<const std::uint8_t> bytes, const VerifyOptions& options, Reason reason) {
+  const Verified verified = verify_message(bytes, options);
+  INFO("got " << describe(verified));
+  CHECK_FALSE(verified.ok);
+  CHECK(verified.message == nullptr);
+  CHECK(verified.reason == reason);
+  if (!verified.ok) CHECK_FALSE(verified.field.empty());
+
+  Receiver receiver = busy_receiver();
+  const Receiver before = receiver;
+  CHECK(receiver.receive(bytes, options) == reason);
+  CHECK(receiver == before);
+}
+
+void expect_rejected(const AnyMessage& message, const VerifyOptions& options, Reason reason) {
+  expect_rejected(encode(message), options, reason);
+}
+
+// A Message root built by hand, for envelopes encode() never makes.
+Bytes raw_message(std::uint16_t version, std::uint8_t body_type, bool with_body) {
+  FlatBufferBuilder fbb;
+  flatbuffers::Offset<void> body = 0;
+  if (with_body) {
+    wire::UdpReadyBuilder b(fbb);
+    b.add_session_id(5);
+    body = b.Finish().Union();
+  }
+  wire::MessageBuilder root(fbb);
+  root.add_version(version);
+  root.add_body_type(static_cast<wire::Body>(body_type));
+  if (with_body) root.add_body(body);
+  wire::FinishSizePrefixedMessageBuffer(fbb, root.Finish());
+  return Bytes(fbb.GetBufferPointer(), fbb.GetBufferPointer() + fbb.GetSize());
+}
+
+void write_i32(Bytes& bytes, std::size_t at, std::int32_t value) { std::memcpy(&bytes[at], &value, 4); }
+
+}  // namespace
+
+TEST_CASE("truncated input: every shorter prefix of a message is rejected") {
+  const Bytes whole = encode(sample_welcome());
+  expect_rejected(std::span<const std::uint8_t>(), from_server(), Reason::empty);
+  for (std::size_t n = 1; n < whole.size(); ++n) {
+    INFO("first " << n << " bytes");
+    expect_rejected(aligned_copy(std::span(whole).first(n)), from_server(), Reason::truncated);
+  }
+}
+
+TEST_CASE("oversized, trailing bytes, empty prefix, wrong identifier, misaligned") {
+  const Bytes chunk = encode(FrameChunk{FrameHeader{9, 9, true, 1}, 0, 1, Bytes(3000, 7)});
+  VerifyOptions small = from_server();
+  small.max_message_bytes = 2000;
+  expect_rejected(chunk, small, Reason::oversized);
+  expect_rejected(chunk, from(Sender::server, wire::Transport::udp), Reason::oversized);
+
+  Bytes trailing = encode(sample_chunk());
+  trailing.push_back(0);
+  expect_rejected(trailing, from_server(), Reason::trailing_bytes);
+
+  Bytes zero_prefix = encode(sample_chunk());
+  write_i32(zero_prefix, 0, 0);
+  expect_rejected(zero_prefix, from_server(), Reason::empty);
+
+  Bytes wrong_id = encode(sample_chunk());
+  wrong_id[8] = 'X';
+  expect_rejected(wrong_id, from_server(), Reason::bad_identifier);
+
+  const Bytes good = encode(sample_chunk());
+  Bytes shifted(good.size() + 1);
+  std::memcpy(shifted.data() + 1, good.data(), good.size());
+  expect_rejected(std::span(shifted).subspan(1), from_server(), Reason::misaligned_buffer);
+}
+
+TEST_CASE("bad offsets: corrupt vtable offsets and vector lengths fail the Verifier") {
+  const Bytes good = encode(sample_chunk());
+  const auto* message = wire::GetSizePrefixedMessage(good.data());
+  const std::size_t root_table = 4 + flatbuffers::ReadScalar<std::uint32_t>(good.data() + 4);
+  const std::size_t body_table = reinterpret_cast<const std::uint8_t*>(message->body()) - good.data();
+  const std::size_t payload_vector =
+      reinterpret_cast<const std::uint8_t*>(message->body_as_FrameChunk()->payload()) - good.data();
+
+  Bytes root_vtable = good;
+  write_i32(root_vtable, root_table, 0x7ffffff0);
+  expect_rejected(root_vtable, from_server(), Reason::bad_verifier);
+
+  Bytes body_vtable = good;
+  write_i32(body_vtable, body_table, -100000);
+  expect_rejected(body_vtable, from_server(), Reason::bad_verifier);
+
+  Bytes odd_vtable = good;  // vtable offset not 2-byte aligned
+  write_i32(odd_vtable, body_table, flatbuffers::ReadScalar<std::int32_t>(&good[body_table]) + 1);
+  expect_rejected(odd_vtable, from_server(), Reason::bad_verifier);
+
+  Bytes vector_length = good;
+  write_i32(vector_length, payload_vector, 0x00ffffff);
+  expect_rejected(vector_length, from_server(), Reason::bad_verifier);
+
+  Bytes root_offset = good;
+  write_i32(root_offset, 4, static_cast<std::int32_t>(good.size() + 64));
+  expect_rejected(root_offset, from_server(), Reason::bad_verifier);
+}
+
+TEST_CASE("envelope: unknown version, unknown or missing body") {
+  const VerifyOptions udp = from(Sender::server, wire::Transport::udp);  // the body is a UdpReady
+  REQUIRE(verify_message(raw_message(kProtocolVersion, 4, true), udp).ok);
+  expect_rejected(raw_message(kProtocolVersion + 1, 4, true), udp, Reason::unknown_version);
+  expect_rejected(raw_message(0, 4, true), udp, Reason::unknown_version);
+  expect_rejected(raw_message(kProtocolVersion, 0, false), udp, Reason::unknown_message_type);
+  expect_rejected(raw_message(kProtocolVersion, 99, true), udp, Reason::unknown_message_type);
+  expect_rejected(raw_message(kProtocolVersion, 4, false), udp, Reason::missing_field);
+}
+
+TEST_CASE("unexpected message: wrong sender or wrong transport") {
+  expect_rejected(sample_welcome(), from_client(), Reason::unexpected_message);
+  expect_rejected(sample_chunk(), from_client(), Reason::unexpected_message);
+  expect_rejected(Hello{}, from_server(), Reason::unexpected_message);
+  expect_rejected(Hello{}, from(Sender::client, wire::Transport::udp), Reason::unexpected_message);
+  expect_rejected(UdpHello{1, sample_cookie()}, from_client(), Reason::unexpected_message);
+}
+
+TEST_CASE("profiles: unknown ids are rejected") {
+  FrameChunk chunk = sample_chunk();
+  chunk.frame.profile_id = 99;
+  expect_rejected(chunk, from_server(), Reason::unknown_profile);
+  expect_rejected(Hello{200, 0, wire::Transport::tcp, ""}, from_client(), Reason::unknown_profile);
+
+  Welcome welcome = sample_welcome();
+  welcome.offered_profiles = {1, 77};
+  expect_rejected(welcome, from_server(), Reason::unknown_profile);
+  welcome.offered_profiles = {2, 4};  // stream profile 1 not among them
+  expect_rejected(welcome, from_server(), Reason::unknown_profile);
+}
+
+TEST_CASE("dimensions: grid, flags, scene size and vector lengths must agree") {
+  Welcome welcome = sample_welcome();
+  welcome.stream.grid = 128;  // profile 1 is 64
+  expect_rejected(welcome, from_server(), Reason::bad_dimensions);
+
+  welcome = sample_welcome();
+  welcome.stream.choppy = true;  // profile 1 is not choppy
+  expect_rejected(welcome, from_server(), Reason::bad_dimensions);
+
+  welcome = sample_welcome();
+  welcome.scene.size_x = 100;  // not a power of two
+  expect_rejected(welcome, from_server(), Reason::bad_dimensions);
+
+  welcome = sample_welcome();
+  welcome.stream = StreamParams{3, 256, 256, 256, 9.81, 0, 30, 0.01f, 1.0f / 256, 0.01f, true, true};
+  welcome.offered_profiles = {3};
+  welcome.scene.size_z = 128;  // a 256 stream cannot come from a 128-row scene
+  expect_rejected(welcome, from_server(), Reason::bad_dimensions);
+
+  welcome = sample_welcome();
+  welcome.offered_profiles.clear();
+  expect_rejected(welcome, from_server(), Reason::bad_dimensions);
+  welcome.offered_profiles.assign(17, 1);
+  expect_rejected(welcome, from_server(), Reason::bad_dimensions);
+}
+
+TEST_CASE("sequence: baseline and tick must be consistent") {
+  FrameChunk chunk = sample_chunk();
+  chunk.frame = FrameHeader{10, 9, true, 1};  // keyframe must have baseline == tick
+  expect_rejected(chunk, from_server(), Reason::bad_sequence);
+  chunk.frame = FrameHeader{10, 10, false, 1};  // delta against itself
+  expect_rejected(chunk, from_server(), Reason::bad_sequence);
+  chunk.frame = FrameHeader{10, 11, false, 1};  // baseline in the future
+  expect_rejected(chunk, from_server(), Reason::bad_sequence);
+  chunk.frame = FrameHeader{5000, 5000 - kMaxBaselineGap - 1, false, 1};
+  expect_rejected(chunk, from_server(), Reason::bad_sequence);
+  chunk.frame = FrameHeader{5000, 5000 - kMaxBaselineGap, false, 1};
+  CHECK(verify_message(encode(chunk), from_server()).ok);
+}
+
+TEST_CASE("chunk index: count >= 1, index < count, count bounded") {
+  FrameChunk chunk = sample_chunk();
+  chunk.index = 5;
+  chunk.count = 5;
+  expect_rejected(chunk, from_server(), Reason::bad_chunk_index);
+  chunk.index = 0;
+  chunk.count = 0;
+  expect_rejected(chunk, from_server(), Reason::bad_chunk_index);
+  chunk.count = kMaxChunksPerFrame + 1;
+  expect_rejected(chunk, from_server(), Reason::bad_chunk_index);
+}
+
+TEST_CASE("non-finite values: NaN and infinity in any float field") {
+  Welcome welcome = sample_welcome();
+  welcome.scene.wind_speed_mps = kNaN;
+  expect_rejected(welcome, from_server(), Reason::non_finite_value);
+  welcome = sample_welcome();
+  welcome.stream.patch_x_m = kInf;
+  expect_rejected(welcome, from_server(), Reason::non_finite_value);
+  welcome = sample_welcome();
+  welcome.stream.height_step_m = std::numeric_limits<float>::quiet_NaN();
+  expect_rejected(welcome, from_server(), Reason::non_finite_value);
+  welcome = sample_welcome();
+  welcome.tick_period_s = kNaN;
+  expect_rejected(welcome, from_server(), Reason::non_finite_value);
+
+  ParamChange change = sample_param_change();
+  change.amplitude = -kInf;
+  expect_rejected(change, from_client(), Reason::non_finite_value);
+  expect_rejected(SceneUpdate{0, 5, [] { auto s = sample_scene(); s.gravity_mps2 = kNaN; return s; }()},
+                  from_server(), Reason::non_finite_value);
+}
+
+TEST_CASE("out of range: finite numbers outside their documented ranges") {
+  Welcome welcome = sample_welcome();
+  welcome.stream.rate_hz = 0;
+  expect_rejected(welcome, from_server(), Reason::out_of_range);
+  welcome = sample_welcome();
+  welcome.scene.choppiness = -1;
+  expect_rejected(welcome, from_server(), Reason::out_of_range);
+  welcome = sample_welcome();
+  welcome.max_message_bytes = 100;
+  expect_rejected(welcome, from_server(), Reason::out_of_range);
+  welcome = sample_welcome();
+  welcome.stream.slope_step = 0.0f;
+  expect_rejected(welcome, from_server(), Reason::out_of_range);
+
+  ParamChange change = sample_param_change();
+  change.wind_speed_mps = -3.0;
+  expect_rejected(change, from_client(), Reason::out_of_range);
+}
+
+TEST_CASE("enums: values the schema does not define") {
+  expect_rejected(Hello{1, 0, static_cast<wire::Transport>(7), ""}, from_client(), Reason::bad_enum);
+  expect_rejected(Error{static_cast<Reason>(200), "x"}, from_server(), Reason::bad_enum);
+  expect_rejected(Bye{static_cast<wire::ByeReason>(9), ""}, from_client(), Reason::bad_enum);
+  expect_rejected(SetTransport{static_cast<wire::Transport>(2)}, from_client(), Reason::bad_enum);
+  expect_rejected(KeyframeRequest{1, {}, static_cast<wire::KeyframeReason>(50)}, from_client(), Reason::bad_enum);
+  Welcome welcome = sample_welcome();
+  welcome.scene.spectrum = static_cast<wire::Spectrum>(3);
+  expect_rejected(welcome, from_server(), Reason::bad_enum);
+  ParamChange change = sample_param_change();
+  change.spectrum = static_cast<wire::Spectrum>(5);
+  expect_rejected(change, from_client(), Reason::bad_enum);
+}
+
+TEST_CASE("strings: length limits and UTF-8") {
+  expect_rejected(Hello{1, 0, wire::Transport::tcp, std::string(kMaxClientNameBytes + 1, 'a')},
+                  from_client(), Reason::bad_string);
+  CHECK(verify_message(encode(Hello{1, 0, wire::Transport::tcp, std::string(kMaxClientNameBytes, 'a')}),
+                       from_client()).ok);
+  for (const char* bad : {"\xff", "\xc3", "\xc0\xaf", "\xed\xa0\x80", "ok\xf4\x90\x80\x80"}) {
+    INFO("string " << bad);
+    expect_rejected(Bye{wire::ByeReason::kicked, bad}, from_server(), Reason::bad_string);
+  }
+  expect_rejected(Error{Reason::timeout, std::string(kMaxTextBytes + 1, 'e')}, from_server(), Reason::bad_string);
+  ParamChange change = sample_param_change();
+  change.admin_token.clear();
+  expect_rejected(change, from_client(), Reason::missing_field);
+  change = sample_param_change();
+  change.wind_speed_mps.reset();
+  change.choppiness.reset();
+  change.spectrum.reset();
+  expect_rejected(change, from_client(), Reason::missing_field);
+}
+
+TEST_CASE("sessions and cookies") {
+  const auto udp = from(Sender::client, wire::Transport::udp);
+  expect_rejected(Ack{0, sample_cookie(), 1, 0}, udp, Reason::bad_session);
+  expect_rejected(Ack{5, {}, 1, 0}, udp, Reason::bad_cookie);  // required on UDP
+  CHECK(verify_message(encode(Ack{5, {}, 1, 0}), from_client()).ok);  // not on TCP
+  expect_rejected(Ping{5, Bytes(3, 1), 1, 1}, udp, Reason::bad_cookie);
+  expect_rejected(UdpHello{5, Bytes(kMaxCookieBytes + 1, 1)}, udp, Reason::bad_cookie);
+
+  Welcome welcome = sample_welcome();
+  welcome.udp_cookie.clear();  // UDP offered without a cookie
+  expect_rejected(welcome, from_server(), Reason::bad_cookie);
+  welcome.udp_port = 0;  // no UDP: no cookie is right
+  CHECK(verify_message(encode(welcome), from_server()).ok);
+  welcome.udp_cookie = sample_cookie();  // no UDP but a cookie
+  expect_rejected(welcome, from_server(), Reason::bad_cookie);
+  welcome = sample_welcome();
+  welcome.session_id = 0;
+  expect_rejected(welcome, from_server(), Reason::bad_session);
+}
+
+TEST_CASE("check_udp_sender compares session and cookie") {
+  const Bytes bytes = encode(Ack{5, sample_cookie(), 1, 0});
+  const Verified v = verify_message(bytes, from(Sender::client, wire::Transport::udp));
+  REQUIRE(v.ok);
+  CHECK(check_udp_sender(*v.message, 5, sample_cookie()) == Reason::ok);
+  CHECK(check_udp_sender(*v.message, 6, sample_cookie()) == Reason::bad_session);
+  Bytes other = sample_cookie();
+  other.back() ^= 1;
+  CHECK(check_udp_sender(*v.message, 5, other) == Reason::bad_cookie);
+  CHECK(check_udp_sender(*v.message, 5, Bytes(sample_cookie().size() - 1, 1)) == Reason::bad_cookie);
+  const Bytes pong = encode(Pong{});
+  CHECK(check_udp_sender(*verify_message(pong, from_server()).message, 5, other) == Reason::unexpected_message);
+}
+
+TEST_CASE("UdpHello without padding is refused: answering it could amplify") {
+  FlatBufferBuilder fbb;
+  const auto cookie = fbb.CreateVector(sample_cookie());
+  wire::UdpHelloBuilder b(fbb);
+  b.add_session_id(5);
+  b.add_cookie(cookie);
+  const auto body = b.Finish();
+  wire::MessageBuilder root(fbb);
+  root.add_version(kProtocolVersion);
+  root.add_body_type(wire::Body::UdpHello);
+  root.add_body(body.Union());
+  wire::FinishSizePrefixedMessageBuffer(fbb, root.Finish());
+  const Bytes bytes(fbb.GetBufferPointer(), fbb.GetBufferPointer() + fbb.GetSize());
+  REQUIRE(bytes.size() < kUdpHelloMinBytes);
+  expect_rejected(bytes, from(Sender::client, wire::Transport::udp), Reason::unpadded_udp_hello);
+}
+
+TEST_CASE("range edges: the sim's own limits are accepted, one step beyond is not") {
+  auto scene_with = [](auto edit) {
+    SceneParams scene;  // the sim's defaults
+    edit(scene);
+    return encode(SceneUpdate{0, 1, scene});
+  };
+  CHECK(verify_message(scene_with([](SceneParams&) {}), from_server()).ok);
+  CHECK(verify_message(scene_with([](SceneParams& s) { s.choppiness = kMaxChoppiness; }), from_server()).ok);
+  CHECK(verify_message(scene_with([](SceneParams& s) { s.gravity_mps2 = kMinGravityMps2; }), from_server()).ok);
+  CHECK(verify_message(scene_with([](SceneParams& s) { s.size_x = kMaxSceneSize; }), from_server()).ok);
+  CHECK(verify_message(scene_with([](SceneParams& s) { s.wind_dir_deg = -kMaxWindDirDeg; }), from_server()).ok);
+  const auto beyond = [](double x) { return std::nextafter(x, HUGE_VAL); };
+  expect_rejected(scene_with([&](SceneParams& s) { s.choppiness = beyond(kMaxChoppiness); }), from_server(),
+                  Reason::out_of_range);
+  expect_rejected(scene_with([&](SceneParams& s) { s.fetch_m = std::nextafter(kMinFetchM, 0.0); }), from_server(),
+                  Reason::out_of_range);
+  expect_rejected(scene_with([&](SceneParams& s) { s.wind_speed_mps = beyond(kMaxWindSpeedMps); }), from_server(),
+                  Reason::out_of_range);
+  expect_rejected(scene_with([](SceneParams& s) { s.size_z = 4096; }), from_server(), Reason::bad_dimensions);
+  expect_rejected(scene_with([](SceneParams& s) { s.depth_m = -1; }), from_server(), Reason::out_of_range);
+}
