@@ -17,19 +17,19 @@ enum class SpreadingKind : std::uint8_t { cos2s, donelan_banner, hasselmann };
 struct SceneParams {
   int size_x = 256;          // N: samples along x, a power of two in [16, 2048]
   int size_z = 256;          // M: samples along z, a power of two in [16, 2048]
-  double patch_x_m = 256.0;  // patch extent along x in metres, > 0
-  double patch_z_m = 256.0;  // patch extent along z in metres, > 0
+  double patch_x_m = 256.0;  // patch extent along x in metres, [0.01, 1e6]
+  double patch_z_m = 256.0;  // patch extent along z in metres, [0.01, 1e6]
 
   SpectrumKind spectrum = SpectrumKind::phillips;
   SpreadingKind spreading = SpreadingKind::donelan_banner;  // JONSWAP only
-  double wind_speed_mps = 10.0;  // U10 in m/s, >= 0
+  double wind_speed_mps = 10.0;  // U10 in m/s, [0, 100]; 0 = a flat sea
   double wind_dir_deg = 0.0;     // direction the wind blows towards, degrees from +x towards +z
-  double fetch_m = 100000.0;     // JONSWAP fetch in metres, > 0
-  double amplitude = 1.0;        // scale on the spectrum's energy (Phillips A is derived from it), >= 0
+  double fetch_m = 100000.0;     // JONSWAP fetch in metres, [1, 1e8]
+  double amplitude = 1.0;        // scale on the spectrum's energy (Phillips A is derived from it), [0, 1e6]
   double depth_m = std::numeric_limits<double>::infinity();  // water depth, > 0; infinity = deep water
-  double small_wave_m = 0.0;     // Tessendorf's suppression length l; 0 = a default from the grid spacing
-  double choppiness = 0.0;       // lambda for horizontal displacement, >= 0
-  double gravity_mps2 = 9.81;    // > 0
+  double small_wave_m = 0.0;     // Tessendorf's suppression length l; 0 = half the grid spacing
+  double choppiness = 0.0;       // lambda for horizontal displacement, [0, 100]
+  double gravity_mps2 = 9.81;    // [0.01, 1000]
   std::uint64_t seed = 1;
 };
 

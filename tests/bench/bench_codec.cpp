@@ -1,0 +1,334 @@
+// ocean-bench codec: bitrate, error and per-frame cost of the height/normal stream codec against
+// simple baselines (raw floats, quantized + zstd, quantized deltas + zstd), all on the same frames
+// of the real sim (default scene, the profile's grid via evaluate_band at t = tick / rate_hz).
+#include "bench.hpp"
+
+#include "decoder.hpp"
+#include "encoder.hpp"
+#include "ocean.hpp"
+#include "profile.hpp"
+
+#include <CLI/CLI.hpp>
+#include <zstd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace ocean;
+using codec::Chunk;
+using codec::StreamConfig;
+
+// Error and timing accumulated by every method.
+struct Tally {
+  std::string method;
+  int lag = 0;
+  double bytes = 0;          // steady-state bytes counted for kbps (payload + envelope)
+  double frames = 0;
+  double max_err = 0, sum_sq = 0, count = 0, max_slope_err = 0;
+  std::vector<double> enc_us, dec_us;
+  void error(const sim::Frame& truth, const std::vector<float>& h, const std::vector<float>* sx,
+             const std::vector<float>* sz) {
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      const double e = std::fabs(double(truth.height[i]) - double(h[i]));
+      max_err = std::max(max_err, e);
+      sum_sq += e * e;
+      count += 1;
+      if (sx) {
+        max_slope_err = std::max(max_slope_err, std::fabs(double(truth.slope_x[i]) - double((*sx)[i])));
+        max_slope_err = std::max(max_slope_err, std::fabs(double(truth.slope_z[i]) - double((*sz)[i])));
+      }
+    }
+  }
+};
+
+// The minimum is reported next to the median: on a shared machine it is the steadier figure.
+double min_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
+
+std::string common_json(const Tally& t, const Profile& p, int n) {
+  const double seconds = t.frames / p.rate_hz;
+  const double kbps = t.bytes * 8.0 / seconds / 1000.0;
+  std::ostringstream o;
+  o.precision(6);
+  o << "{\"bench\":\"codec\",\"profile\":\"" << p.name << "\",\"method\":\"" << t.method << "\"";
+  if (t.lag) o << ",\"lag\":" << t.lag;
+  o << ",\"grid\":" << n << ",\"rate_hz\":" << p.rate_hz << ",\"frames\":" << t.frames << ",\"kbps\":" << kbps
+    << ",\"bits_per_sample\":" << t.bytes * 8.0 / (t.frames * n * n) << ",\"max_err_m\":" << t.max_err
+    << ",\"rms_err_m\":" << std::sqrt(t.sum_sq / std::max(1.0, t.count)) << ",\"max_slope_err\":" << t.max_slope_err
+    << ",\"height_step_m\":" << p.height_step_m << ",\"slope_step\":" << p.slope_step
+    << ",\"encode_us\":" << bench::median(t.enc_us) << ",\"decode_us\":" << bench::median(t.dec_us)
+    << ",\"encode_us_min\":" << min_of(t.enc_us) << ",\"decode_us_min\":" << min_of(t.dec_us);
+  return o.str();
+}
+
+// ---- baselines --------------------------------------------------------------------------------
+
+std::int16_t q16(double v, double step) {
+  const double q = std::nearbyint(v / step);
+  return static_cast<std::int16_t>(std::max(-32768.0, std::min(32767.0, q)));
+}
+
+struct Zstd {
+  ZSTD_CCtx* c = ZSTD_createCCtx();
+  ZSTD_DCtx* d = ZSTD_createDCtx();
+  ~Zstd() {
+    ZSTD_freeCCtx(c);
+    ZSTD_freeDCtx(d);
+  }
+  std::vector<std::uint8_t> compress(const std::vector<std::int16_t>& v) {
+    std::vector<std::uint8_t> out(ZSTD_compressBound(v.size() * 2));
+    out.resize(ZSTD_compressCCtx(c, out.data(), out.size(), v.data(), v.size() * 2, 3));
+    return out;
+  }
+  void decompress(const std::vector<std::uint8_t>& in, std::vector<std::int16_t>& v) {
+    ZSTD_decompressDCtx(d, v.data(), v.size() * 2, in.data(), in.size());
+  }
+};
+
+// 16-bit planes: height at height_step, slopes at slope_step (when the profile has normals).
+struct Quantized {
+  static std::vector<std::int16_t> of(const sim::Frame& f, const Profile& p) {
+    const std::size_t m = f.height.size();
+    std::vector<std::int16_t> q(m * (p.normals ? 3 : 1));
+    for (std::size_t i = 0; i < m; ++i) q[i] = q16(f.height[i], p.height_step_m);
+    if (p.normals)
+      for (std::size_t i = 0; i < m; ++i) {
+        q[m + i] = q16(f.slope_x[i], p.slope_step);
+        q[2 * m + i] = q16(f.slope_z[i], p.slope_step);
+      }
+    return q;
+  }
+  static void to_float(const std::vector<std::int16_t>& q, const Profile& p, std::size_t m, std::vector<float>& h,
+                       std::vector<float>& sx, std::vector<float>& sz) {
+    h.resize(m);
+    for (std::size_t i = 0; i < m; ++i) h[i] = float(q[i] * double(p.height_step_m));
+    if (!p.normals) return;
+    sx.resize(m);
+    sz.resize(m);
+    for (std::size_t i = 0; i < m; ++i) {
+      sx[i] = float(q[m + i] * double(p.slope_step));
+      sz[i] = float(q[2 * m + i] * double(p.slope_step));
+    }
+  }
+};
+
+// ---- ours ---------------------------------------------------------------------------------------
+
+struct Ours {
+  Tally tally;
+  std::unique_ptr<codec::Encoder> enc;
+  std::unique_ptr<codec::Decoder> dec;
+  std::map<std::uint32_t, codec::StateId> ids;
+  std::size_t key_bytes = 0, key_chunks = 0, chunks = 0, payload = 0, corrections = 0;
+  double height_bits = 0, slope_bits = 0;
+  bool bitwise = true;
+};
+
+int run_codec(int argc, char** argv) {
+  std::string profiles_arg = "mobile,desktop";
+  double seconds = 10.0;
+  bool json = false;
+  int lag = 1;
+  int key_bits = 6;
+  int vel_bits = 3;
+  CLI::App app{"ocean-bench codec: stream codec vs raw / q16+zstd / delta+zstd on real sim frames"};
+  app.add_option("--profile", profiles_arg, "profile names, comma separated (mobile, desktop, lite)")->capture_default_str();
+  app.add_option("--seconds", seconds, "simulated seconds per profile")->capture_default_str();
+  app.add_option("--baseline-lag", lag, "ticks between a frame and its baseline (acks an RTT late); ours is also run at lag 4")
+      ->capture_default_str();
+  app.add_option("--key-bits", key_bits, "key precision: position rms about step * 2^-bits")->capture_default_str();
+  app.add_option("--key-velocity-bits", vel_bits, "key velocity this many bits finer than position")->capture_default_str();
+  app.add_flag("--json", json, "JSON lines (the only output format)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  if (lag < 1 || lag > 60) {
+    std::fprintf(stderr, "ocean-bench codec: --baseline-lag must be in [1, 60]\n");
+    return 2;
+  }
+  std::vector<int> lags{lag};
+  if (lag != 4) lags.push_back(4);
+
+  std::stringstream ss(profiles_arg);
+  std::string name;
+  int failures = 0;
+  while (std::getline(ss, name, ',')) {
+    const Profile* p = find_profile(name);
+    if (!p) {
+      std::fprintf(stderr, "ocean-bench codec: unknown profile '%s'\n", name.c_str());
+      return 2;
+    }
+    if (p->choppy) {
+      std::fprintf(stderr, "ocean-bench codec: profile '%s' is choppy; codec v1 does not code displacement\n", name.c_str());
+      return 2;
+    }
+    sim::SceneParams scene;
+    sim::Ocean ocean(scene);
+    const int n = p->grid;
+    const StreamConfig config = StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m);
+    const int frames = std::max(8, static_cast<int>(seconds * p->rate_hz));
+    const std::size_t m = std::size_t(n) * n;
+
+    Tally raw, q16z, delta;
+    raw.method = "raw_f32";
+    q16z.method = "q16_zstd";
+    delta.method = "delta_zstd";
+    Zstd zstd;
+    std::vector<std::int16_t> prev_q;  // delta_zstd: previous reconstructed frame (quantized)
+    std::vector<Ours> ours(lags.size());
+    for (std::size_t i = 0; i < lags.size(); ++i) {
+      codec::EncoderOptions eo;
+      eo.key_precision_bits = key_bits;
+      eo.key_velocity_extra_bits = vel_bits;
+      eo.history_ticks = 64;
+      ours[i].enc = std::make_unique<codec::Encoder>(config, eo);
+      ours[i].dec = std::make_unique<codec::Decoder>(config);
+      ours[i].tally.method = "ours";
+      ours[i].tally.lag = lags[i];
+    }
+
+    sim::Frame f;
+    std::vector<float> h, sx, sz, normals(m * 4);
+    for (int tick = 0; tick <= frames; ++tick) {
+      ocean.evaluate_band(double(tick) / p->rate_hz, n, n, f, sim::FrameRequest{true, false});
+      const bool steady = tick >= 2;  // tick 1 is the key for ours; the baselines skip it too
+
+      // raw_f32: height + unit normal (-sx, 1, -sz)/len per vertex.
+      double t0 = bench::now_ms();
+      for (std::size_t i = 0; i < m; ++i) {
+        const float nx = -f.slope_x[i], nz = -f.slope_z[i];
+        const float inv = 1.0f / std::sqrt(nx * nx + 1.0f + nz * nz);
+        normals[4 * i] = f.height[i];
+        normals[4 * i + 1] = nx * inv;
+        normals[4 * i + 2] = inv;
+        normals[4 * i + 3] = nz * inv;
+      }
+      std::vector<float> wire(normals);
+      double t1 = bench::now_ms();
+      h.assign(m, 0.0f);
+      for (std::size_t i = 0; i < m; ++i) h[i] = wire[4 * i];
+      double t2 = bench::now_ms();
+      if (steady) {
+        raw.bytes += double(m) * 16;
+        raw.frames += 1;
+        raw.enc_us.push_back((t1 - t0) * 1000);
+        raw.dec_us.push_back((t2 - t1) * 1000);
+        raw.error(f, h, nullptr, nullptr);
+      }
+
+      // q16_zstd
+      t0 = bench::now_ms();
+      const auto q = Quantized::of(f, *p);
+      const auto packed = zstd.compress(q);
+      t1 = bench::now_ms();
+      std::vector<std::int16_t> back(q.size());
+      zstd.decompress(packed, back);
+      Quantized::to_float(back, *p, m, h, sx, sz);
+      t2 = bench::now_ms();
+      if (steady) {
+        q16z.bytes += double(packed.size());
+        q16z.frames += 1;
+        q16z.enc_us.push_back((t1 - t0) * 1000);
+        q16z.dec_us.push_back((t2 - t1) * 1000);
+        q16z.error(f, h, p->normals ? &sx : nullptr, p->normals ? &sz : nullptr);
+      }
+
+      // delta_zstd: difference from the previous reconstructed (quantized) frame.
+      t0 = bench::now_ms();
+      std::vector<std::int16_t> d(q.size());
+      for (std::size_t i = 0; i < q.size(); ++i) d[i] = static_cast<std::int16_t>(q[i] - (prev_q.empty() ? 0 : prev_q[i]));
+      const auto dpacked = zstd.compress(d);
+      t1 = bench::now_ms();
+      std::vector<std::int16_t> dback(d.size());
+      zstd.decompress(dpacked, dback);
+      for (std::size_t i = 0; i < dback.size(); ++i)
+        dback[i] = static_cast<std::int16_t>(dback[i] + (prev_q.empty() ? 0 : prev_q[i]));
+      Quantized::to_float(dback, *p, m, h, sx, sz);
+      t2 = bench::now_ms();
+      prev_q = dback;
+      if (steady) {
+        delta.bytes += double(dpacked.size());
+        delta.frames += 1;
+        delta.enc_us.push_back((t1 - t0) * 1000);
+        delta.dec_us.push_back((t2 - t1) * 1000);
+        delta.error(f, h, p->normals ? &sx : nullptr, p->normals ? &sz : nullptr);
+      }
+
+      // ours: key at tick 1 (its velocity needs tick 0), then deltas from tick - lag (tick 1 at first).
+      for (Ours& o : ours) {
+        const std::uint32_t t = static_cast<std::uint32_t>(tick);
+        t0 = bench::now_ms();
+        o.enc->add_truth(t, {f.height, f.slope_x, f.slope_z});
+        if (tick == 0) continue;
+        std::shared_ptr<const codec::EncodedFrame> e;
+        if (tick == 1)
+          e = o.enc->encode_key(t);
+        else
+          e = o.enc->encode_delta(t, o.ids.at(t > std::uint32_t(o.tally.lag) ? t - o.tally.lag : 1));
+        t1 = bench::now_ms();
+        o.ids[t] = e->id;
+        for (const Chunk& c : e->chunks)
+          if (o.dec->accept(c) != codec::ChunkError::ok) o.bitwise = false;
+        const codec::ReconstructedFrame* r = o.dec->latest();
+        t2 = bench::now_ms();
+        if (!r || r->tick != t || !r->complete || r->height != e->reconstruction.height ||
+            r->slope_x != e->reconstruction.slope_x || r->slope_z != e->reconstruction.slope_z)
+          o.bitwise = false;
+        std::size_t bytes = 0;
+        for (const Chunk& c : e->chunks) bytes += c.payload.size();
+        if (e->key) {
+          o.key_bytes += bytes;
+          o.key_chunks += e->chunks.size();
+          continue;
+        }
+        o.tally.bytes += double(bytes + e->chunks.size() * codec::kEnvelopeOverheadBytes);
+        o.tally.frames += 1;
+        o.payload += bytes;
+        o.chunks += e->chunks.size();
+        o.corrections += e->stats.corrections_height + e->stats.corrections_slope;
+        o.height_bits += e->stats.cost.height_bits;
+        o.slope_bits += e->stats.cost.slope_bits;
+        o.tally.enc_us.push_back((t1 - t0) * 1000);
+        o.tally.dec_us.push_back((t2 - t1) * 1000);
+        o.tally.error(f, r->height, p->normals ? &r->slope_x : nullptr, p->normals ? &r->slope_z : nullptr);
+      }
+    }
+
+    for (const Tally* t : {&raw, &q16z, &delta}) std::printf("%s}\n", common_json(*t, *p, n).c_str());
+    const double delta_kbps = delta.bytes * 8.0 / (delta.frames / p->rate_hz) / 1000.0;
+    for (const Ours& o : ours) {
+      const double secs = o.tally.frames / p->rate_hz;
+      const double kbps = o.tally.bytes * 8.0 / secs / 1000.0;
+      const bool within = o.tally.max_err <= 0.5 * double(p->height_step_m) &&
+                          o.tally.max_slope_err <= 0.5 * double(p->slope_step);
+      const bool pass = within && kbps <= 0.5 * delta_kbps && o.bitwise;
+      failures += pass ? 0 : 1;
+      std::printf("%s,\"kbps_height\":%.4f,\"kbps_slope\":%.4f,\"kbps_overhead\":%.4f,\"envelope_bytes_per_chunk\":%zu,"
+                  "\"chunks_per_frame\":%.3f,\"payload_bytes_per_frame\":%.2f,\"corrections_per_frame\":%.3f,"
+                  "\"key_bytes\":%zu,\"key_chunks\":%zu,\"bitwise_match\":%s,\"within_bound\":%s,"
+                  "\"half_of_delta_zstd\":%s}\n",
+                  common_json(o.tally, *p, n).c_str(), o.height_bits / secs / 1000.0, o.slope_bits / secs / 1000.0,
+                  kbps - (o.height_bits + o.slope_bits) / secs / 1000.0, codec::kEnvelopeOverheadBytes,
+                  double(o.chunks) / o.tally.frames, double(o.payload) / o.tally.frames,
+                  double(o.corrections) / o.tally.frames, o.key_bytes, o.key_chunks, o.bitwise ? "true" : "false",
+                  within ? "true" : "false", kbps <= 0.5 * delta_kbps ? "true" : "false");
+    }
+    std::fflush(stdout);
+  }
+  (void)json;
+  return failures ? 1 : 0;
+}
+
+const ocean::bench::Registrar reg("codec", "stream codec bitrate/error/cost vs raw, q16+zstd, delta+zstd", run_codec);
+
+}  // namespace
