@@ -1,0 +1,87 @@
+// Chunk wire format: the envelope fields the protocol carries (FrameChunk), the payload header
+// this codec writes inside FrameChunk.payload, its CRC, and the reasons a chunk is refused.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace ocean::codec {
+
+inline constexpr std::uint8_t kCodecVersion = 1;
+inline constexpr std::size_t kDefaultMaxPayload = 1100;
+// Bytes a FrameChunk message adds around the payload on the wire (size prefix, Message wrapper,
+// union, vtable, fields, vector length): the protocol measures at most 87 (wire_limits.hpp); the
+// bench charges this per chunk.
+inline constexpr std::size_t kEnvelopeOverheadBytes = 88;
+
+// One datagram's worth of a frame, exactly the protocol's FrameChunk minus profile_id.
+struct Chunk {
+  std::uint32_t tick = 0;
+  std::uint32_t baseline = 0;  // tick of the acknowledged frame this one is predicted from; = tick for keys
+  bool key = false;
+  std::uint16_t index = 0;     // 0 .. count-1
+  std::uint16_t count = 0;     // chunks in this frame
+  std::vector<std::uint8_t> payload;
+};
+
+struct ChunkView {
+  std::uint32_t tick = 0;
+  std::uint32_t baseline = 0;
+  bool key = false;
+  std::uint16_t index = 0;
+  std::uint16_t count = 0;
+  std::span<const std::uint8_t> payload;
+};
+inline ChunkView view(const Chunk& c) { return {c.tick, c.baseline, c.key, c.index, c.count, c.payload}; }
+
+// Why a chunk was refused; the decoder's state is unchanged whenever this is not `ok`.
+enum class ChunkError : std::uint8_t {
+  ok = 0,
+  truncated,           // payload shorter than its header or than the body length it declares
+  oversized,           // payload longer than max_payload, or bytes after the declared body
+  unknown_version,     // payload byte 0 is not kCodecVersion
+  bad_flags,           // reserved flag bits set, or key flag differs from the envelope
+  wrong_dimensions,    // grid or channel set differs from the stream configuration
+  bad_range,           // item range empty or outside the frame
+  checksum_mismatch,   // CRC-16 over envelope + payload does not match
+  bad_index,           // count == 0, count > kMaxChunksPerFrame or index >= count
+  bad_value,           // body does not decode: overlong integer, position or magnitude out of range
+  bad_baseline,        // key chunk with baseline != tick, or delta with baseline >= tick
+  lag_too_large,       // tick - baseline above the decoder's max_lag
+  unknown_baseline,    // baseline is not a complete frame the decoder holds
+  stale_tick,          // tick not newer than the oldest frame the decoder still keeps
+  inconsistent_frame,  // baseline / key / count differ from earlier chunks of the same tick
+  duplicate_chunk,     // this index of this tick was already accepted
+  overlapping_range,   // item range overlaps a chunk already accepted for this tick
+  coverage_mismatch,   // all chunks present but their ranges do not cover the frame exactly
+};
+std::string_view to_string(ChunkError e);
+
+inline constexpr std::uint16_t kMaxChunksPerFrame = 4096;
+
+// Parsed payload header (CODEC.md 5).
+struct ChunkHeader {
+  std::uint8_t version = kCodecVersion;
+  bool key = false;
+  bool normals = false;
+  std::uint8_t grid_log2 = 0;
+  std::uint32_t item_begin = 0;
+  std::uint32_t item_end = 0;
+  std::uint8_t pos_shift = 0;  // key only: X(t) = coefficient << pos_shift
+  std::uint8_t vel_shift = 0;  // key only: X(t) - X(t-1) = coefficient << vel_shift
+};
+
+// header || body with the CRC filled in.
+std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& envelope_fields,
+                                        std::span<const std::uint8_t> body);
+
+// Checks the header, lengths and CRC (not the meaning against a stream); on success `body`
+// views the body inside payload.
+ChunkError parse_payload(const ChunkView& chunk, std::size_t max_payload, ChunkHeader& h,
+                         std::span<const std::uint8_t>& body);
+
+std::uint16_t crc16_ccitt(std::uint16_t crc, std::span<const std::uint8_t> bytes);
+
+}  // namespace ocean::codec

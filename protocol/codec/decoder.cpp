@@ -1,0 +1,162 @@
+// Decoder: validation order, frame assembly, completion (CODEC.md 9).
+#include "decoder.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace ocean::codec {
+
+Decoder::Decoder(const StreamConfig& config, DecoderOptions options)
+    : config_(config), options_(options), model_(config) {
+  if (options.history_ticks < 1 || options.max_lag < 1 || options.max_pending < 1)
+    throw std::invalid_argument("DecoderOptions: history_ticks, max_lag and max_pending must be >= 1");
+}
+
+std::optional<std::uint32_t> Decoder::newest_complete() const {
+  if (states_.empty()) return std::nullopt;
+  return states_.rbegin()->first;
+}
+
+std::vector<std::uint32_t> Decoder::complete_ticks() const {
+  std::vector<std::uint32_t> v;
+  for (const auto& [t, s] : states_) v.push_back(t);
+  return v;
+}
+
+const ModalState* Decoder::state(std::uint32_t tick) const {
+  auto it = states_.find(tick);
+  return it == states_.end() ? nullptr : &it->second;
+}
+
+ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const {
+  if (h.grid_log2 != config_.grid_log2() || h.normals != config_.normals) return ChunkError::wrong_dimensions;
+  if (h.item_begin >= h.item_end || h.item_end > layout.total()) return ChunkError::bad_range;
+  if (h.key && (h.pos_shift > 40 || h.vel_shift > 40)) return ChunkError::bad_value;
+  if (c.count == 0 || c.count > kMaxChunksPerFrame || c.index >= c.count) return ChunkError::bad_index;
+  if (c.key ? c.baseline != c.tick : c.baseline >= c.tick) return ChunkError::bad_baseline;
+  if (!c.key && c.tick - c.baseline > options_.max_lag) return ChunkError::lag_too_large;
+  if (const auto newest = newest_complete(); newest && c.tick <= *newest && *newest - c.tick >= options_.history_ticks)
+    return ChunkError::stale_tick;
+  if (states_.count(c.tick)) return ChunkError::duplicate_chunk;
+  if (!c.key && !states_.count(c.baseline)) return ChunkError::unknown_baseline;
+  if (auto it = pending_.find(c.tick); it != pending_.end()) {
+    const Pending& p = it->second;
+    if (p.key != c.key || p.baseline != c.baseline || p.count != c.count) return ChunkError::inconsistent_frame;
+    if (p.got[c.index]) return ChunkError::duplicate_chunk;
+    std::uint64_t covered = h.item_end - h.item_begin;
+    for (const auto& [b, e] : p.ranges) {
+      if (h.item_begin < e && b < h.item_end) return ChunkError::overlapping_range;
+      covered += e - b;
+    }
+    if (p.received + 1 == p.count && covered != layout.total()) return ChunkError::coverage_mismatch;
+  } else if (c.count == 1 && (h.item_begin != 0 || h.item_end != layout.total())) {
+    return ChunkError::coverage_mismatch;
+  }
+  return ChunkError::ok;
+}
+
+ChunkError Decoder::accept(const ChunkView& c) {
+  ChunkHeader h;
+  std::span<const std::uint8_t> body;
+  if (const ChunkError e = parse_payload(c, options_.max_payload, h, body); e != ChunkError::ok) return e;
+  const int n = model_.n();
+  BodyLayout layout;
+  layout.spectral_items = h.key ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
+  layout.samples = static_cast<std::uint32_t>(n) * n;
+  layout.normals = config_.normals;
+  if (const ChunkError e = check(c, h, layout); e != ChunkError::ok) return e;
+  DecodedBody decoded;
+  if (!decode_body(layout, h.item_begin, h.item_end, body, decoded)) return ChunkError::bad_value;
+
+  // Everything below changes state and cannot fail.
+  auto [it, fresh] = pending_.try_emplace(c.tick);
+  Pending& p = it->second;
+  if (fresh) {
+    p.baseline = c.baseline;
+    p.key = c.key;
+    p.count = c.count;
+    p.got.assign(c.count, false);
+    if (c.key) {
+      p.key_coefficients.resize(layout.spectral_items);
+      p.pos_shift = h.pos_shift;
+      p.vel_shift = h.vel_shift;
+    } else {
+      p.predicted = states_.at(c.baseline);
+      model_.advance(p.predicted, c.tick - c.baseline);
+      model_.synthesize(p.predicted.cur, p.fields);
+    }
+  }
+  p.got[c.index] = true;
+  ++p.received;
+  p.ranges.emplace_back(h.item_begin, h.item_end);
+  for (std::size_t i = 0; i < decoded.key.size(); ++i) p.key_coefficients[h.item_begin + i] = decoded.key[i];
+  if (!c.key) apply_corrections(p.fields, decoded.corrections);
+  auto append = [](std::vector<Correction>& to, const std::vector<Correction>& from) {
+    to.insert(to.end(), from.begin(), from.end());
+  };
+  append(p.corrections.height, decoded.corrections.height);
+  append(p.corrections.slope_x, decoded.corrections.slope_x);
+  append(p.corrections.slope_z, decoded.corrections.slope_z);
+
+  if (!c.key && (!shown_tick_ || c.tick >= *shown_tick_)) {
+    shown_tick_ = c.tick;
+    shown_dirty_ = true;
+  }
+  if (p.received == p.count) {
+    complete(c.tick, p);
+    pending_.erase(c.tick);
+  }
+  while (pending_.size() > options_.max_pending) drop_pending(pending_.begin());
+  evict();
+  return ChunkError::ok;
+}
+
+void Decoder::complete(std::uint32_t tick, Pending& p) {
+  if (p.key) {
+    p.predicted = key_state(model_, p.key_coefficients, p.pos_shift, p.vel_shift);
+    model_.synthesize(p.predicted.cur, p.fields);
+    apply_corrections(p.fields, p.corrections);
+  }
+  if (!p.corrections.height.empty())
+    model_.add_correction(p.predicted, height_correction_field(model_.n(), p.corrections.height));
+  states_[tick] = std::move(p.predicted);
+  if (!shown_tick_ || tick >= *shown_tick_) {
+    shown_tick_ = tick;
+    shown_fields_ = std::move(p.fields);
+    shown_complete_ = true;
+    shown_dirty_ = true;
+  }
+}
+
+void Decoder::evict() {
+  const auto newest = newest_complete();
+  if (!newest || *newest < options_.history_ticks) return;
+  const std::uint32_t oldest = *newest - options_.history_ticks;
+  while (!states_.empty() && states_.begin()->first < oldest) states_.erase(states_.begin());
+  while (!pending_.empty() && pending_.begin()->first < oldest) drop_pending(pending_.begin());
+}
+
+void Decoder::drop_pending(std::map<std::uint32_t, Pending>::iterator it) {
+  // The frame on show keeps showing what it had, still marked incomplete.
+  if (shown_tick_ && it->first == *shown_tick_) {
+    shown_fields_ = std::move(it->second.fields);
+    shown_complete_ = false;
+    shown_dirty_ = true;
+  }
+  pending_.erase(it);
+}
+
+const ReconstructedFrame* Decoder::latest() {
+  if (!shown_tick_) return nullptr;
+  if (shown_dirty_) {
+    auto it = pending_.find(*shown_tick_);
+    const bool held = it == pending_.end();
+    to_float(held ? shown_fields_ : it->second.fields, config_, shown_);
+    shown_.tick = *shown_tick_;
+    shown_.complete = held && shown_complete_;
+    shown_dirty_ = false;
+  }
+  return &shown_;
+}
+
+}  // namespace ocean::codec

@@ -1,0 +1,274 @@
+// Encoder: prediction, correction decisions, chunking (CODEC.md 7, 8).
+#include "encoder.hpp"
+
+#include "det_math.hpp"
+#include "fixed_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace ocean::codec {
+namespace {
+
+// round(x / 2^s), ties away from zero (s may be 0).
+std::int64_t shift_round(std::int64_t x, int s) { return s == 0 ? x : mul_round_sym(x, 1, s); }
+
+// Corrections for one channel: wherever the float output would miss the truth by more than half
+// a step, add the nearest multiple of a quarter step (the result is then within step / 8).
+void correct_channel(std::vector<std::int64_t>& pred, std::span<const float> truth, double unit, double step,
+                     int quantum_shift, std::vector<Correction>& out) {
+  const double quantum = step / 4.0;
+  for (std::size_t i = 0; i < pred.size(); ++i) {
+    const double t = static_cast<double>(truth[i]);
+    const double shown = static_cast<double>(static_cast<float>(static_cast<double>(pred[i]) * unit));
+    if (std::fabs(t - shown) <= 0.5 * step) continue;
+    double q = std::nearbyint((t - static_cast<double>(pred[i]) * unit) / quantum);
+    q = std::clamp(q, -static_cast<double>(kMaxCorrection), static_cast<double>(kMaxCorrection));
+    const auto c = static_cast<std::int32_t>(q);
+    if (c == 0) continue;
+    out.push_back({static_cast<std::uint32_t>(i), c});
+    pred[i] = wadd(pred[i], wshl(c, quantum_shift));
+  }
+}
+
+}  // namespace
+
+Encoder::Encoder(const StreamConfig& config, EncoderOptions options)
+    : config_(config), options_(options), model_(config) {
+  if (options.max_payload < 64 || options.max_payload > 65000)
+    throw std::invalid_argument("EncoderOptions.max_payload = " + std::to_string(options.max_payload) +
+                                ": must be in [64, 65000]");
+  if (options.history_ticks < 1 || options.history_ticks > 100000)
+    throw std::invalid_argument("EncoderOptions.history_ticks must be in [1, 100000]");
+  if (options.key_precision_bits < 0 || options.key_precision_bits > 16)
+    throw std::invalid_argument("EncoderOptions.key_precision_bits = " + std::to_string(options.key_precision_bits) +
+                                ": must be in [0, 16]");
+  if (options.key_velocity_extra_bits < 0 || options.key_velocity_extra_bits > 16)
+    throw std::invalid_argument("EncoderOptions.key_velocity_extra_bits must be in [0, 16]");
+}
+
+void Encoder::add_truth(std::uint32_t tick, const TruthView& truth) {
+  const std::size_t nn = static_cast<std::size_t>(model_.n()) * model_.n();
+  if (truth.height.size() != nn)
+    throw std::invalid_argument("Encoder::add_truth: height has " + std::to_string(truth.height.size()) +
+                                " samples, the stream grid needs " + std::to_string(nn));
+  if (config_.normals && (truth.slope_x.size() != nn || truth.slope_z.size() != nn))
+    throw std::invalid_argument("Encoder::add_truth: slope_x and slope_z need " + std::to_string(nn) +
+                                " samples each when the stream has normals");
+  const double limit = std::ldexp(static_cast<double>(config_.height_step_m), 20);
+  for (float h : truth.height)
+    if (!(std::fabs(h) < limit))
+      throw std::invalid_argument("Encoder::add_truth: height " + std::to_string(h) +
+                                  " m is not finite or beyond 2^20 height steps");
+  if (config_.normals) {
+    const double slope_limit = std::ldexp(static_cast<double>(config_.slope_step), 20);
+    for (std::span<const float> s : {truth.slope_x, truth.slope_z})
+      for (float v : s)
+        if (!(std::fabs(v) < slope_limit))
+          throw std::invalid_argument("Encoder::add_truth: slope " + std::to_string(v) +
+                                      " is not finite or beyond 2^20 slope steps");
+  }
+  TruthFrame& f = truth_[tick];
+  f.height.assign(truth.height.begin(), truth.height.end());
+  if (config_.normals) {
+    f.slope_x.assign(truth.slope_x.begin(), truth.slope_x.end());
+    f.slope_z.assign(truth.slope_z.begin(), truth.slope_z.end());
+  }
+  if (!have_truth_ || tick > newest_) newest_ = tick;
+  have_truth_ = true;
+  evict();
+}
+
+void Encoder::evict() {
+  if (newest_ < options_.history_ticks) return;
+  const std::uint32_t oldest = newest_ - options_.history_ticks;
+  while (!truth_.empty() && truth_.begin()->first < oldest) truth_.erase(truth_.begin());
+  while (!states_.empty() && states_.begin()->first.tick < oldest) states_.erase(states_.begin());
+  while (!keys_.empty() && keys_.begin()->first < oldest) keys_.erase(keys_.begin());
+  while (!deltas_.empty() && deltas_.begin()->first.first < oldest) deltas_.erase(deltas_.begin());
+}
+
+const ModalState* Encoder::state(StateId id) const {
+  auto it = states_.find(id);
+  return it == states_.end() ? nullptr : &it->second;
+}
+
+std::shared_ptr<const EncodedFrame> Encoder::encode_key(std::uint32_t tick) {
+  if (auto it = keys_.find(tick); it != keys_.end()) return it->second;
+  auto t1 = truth_.find(tick);
+  auto t0 = tick > 0 ? truth_.find(tick - 1) : truth_.end();
+  if (t1 == truth_.end() || t0 == truth_.end())
+    throw std::invalid_argument("Encoder::encode_key(" + std::to_string(tick) +
+                                "): needs the truth of this tick and the previous one (add_truth both)");
+  const int n = model_.n();
+  const std::size_t nn = static_cast<std::size_t>(n) * n;
+  const double step = static_cast<double>(config_.height_step_m);
+  std::vector<std::int64_t> f1(nn), f0(nn);
+  for (std::size_t i = 0; i < nn; ++i) {
+    f1[i] = to_fixed(static_cast<double>(t1->second.height[i]) / step, kHeightFracBits);
+    f0[i] = to_fixed(static_cast<double>(t0->second.height[i]) / step, kHeightFracBits);
+  }
+  HalfSpectrum s1, s0;
+  model_.spectrum_of(f1.data(), s1);
+  model_.spectrum_of(f0.data(), s0);
+  // Spectral quantization error 2^p per coefficient gives spatial rms about 2^p / (n sqrt 6):
+  // choose p for an rms of step * 2^-key_precision_bits.
+  const int pos_shift = std::max(0, kHeightFracBits - options_.key_precision_bits + config_.grid_log2() + 1);
+  const int vel_shift = std::max(0, pos_shift - options_.key_velocity_extra_bits);
+  const auto& modes = model_.key_modes();
+  std::vector<KeyCoefficient> coeffs(modes.size());
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    const std::int32_t at = modes[i];
+    KeyCoefficient& k = coeffs[i];
+    k.xr = shift_round(s1.re[at], pos_shift);
+    k.xi = shift_round(s1.im[at], pos_shift);
+    k.vr = shift_round(s1.re[at] - s0.re[at], vel_shift);
+    k.vi = shift_round(s1.im[at] - s0.im[at], vel_shift);
+  }
+  ModalState predicted = key_state(model_, coeffs, pos_shift, vel_shift);
+  auto frame = finish_frame(tick, std::move(predicted), true, coeffs, pos_shift, vel_shift, {});
+  keys_[tick] = frame;
+  return frame;
+}
+
+std::shared_ptr<const EncodedFrame> Encoder::encode_delta(std::uint32_t tick, StateId baseline) {
+  const auto cache_key = std::make_pair(tick, baseline);
+  if (auto it = deltas_.find(cache_key); it != deltas_.end()) return it->second;
+  if (baseline.tick >= tick)
+    throw std::invalid_argument("Encoder::encode_delta: baseline tick " + std::to_string(baseline.tick) +
+                                " must be older than tick " + std::to_string(tick));
+  auto st = states_.find(baseline);
+  if (st == states_.end())
+    throw std::invalid_argument("Encoder::encode_delta: baseline state {" + std::to_string(baseline.tick) + ", " +
+                                std::to_string(baseline.serial) + "} is not held (evicted or never encoded)");
+  if (truth_.find(tick) == truth_.end())
+    throw std::invalid_argument("Encoder::encode_delta: no truth for tick " + std::to_string(tick));
+  ModalState predicted = st->second;
+  model_.advance(predicted, tick - baseline.tick);
+  auto frame = finish_frame(tick, std::move(predicted), false, {}, 0, 0, baseline);
+  deltas_[cache_key] = frame;
+  return frame;
+}
+
+std::shared_ptr<EncodedFrame> Encoder::finish_frame(std::uint32_t tick, ModalState predicted, bool key,
+                                                    const std::vector<KeyCoefficient>& key_coefficients,
+                                                    int pos_shift, int vel_shift, StateId base) {
+  const TruthFrame& truth = truth_.at(tick);
+  model_.synthesize(predicted.cur, fields_);
+  Corrections corr;
+  const double hunit = static_cast<double>(config_.height_step_m) / 65536.0;
+  const double sunit = static_cast<double>(config_.slope_step) / 4096.0;
+  correct_channel(fields_.height, truth.height, hunit, config_.height_step_m, kHeightQuantumShift, corr.height);
+  if (config_.normals) {
+    correct_channel(fields_.slope_x, truth.slope_x, sunit, config_.slope_step, kSlopeQuantumShift, corr.slope_x);
+    correct_channel(fields_.slope_z, truth.slope_z, sunit, config_.slope_step, kSlopeQuantumShift, corr.slope_z);
+  }
+  auto frame = std::make_shared<EncodedFrame>();
+  frame->key = key;
+  frame->id = {tick, next_serial_++};
+  frame->base = key ? frame->id : base;
+  frame->stats.corrections_height = corr.height.size();
+  frame->stats.corrections_slope = corr.slope_x.size() + corr.slope_z.size();
+  frame->reconstruction.tick = tick;
+  frame->reconstruction.complete = true;
+  to_float(fields_, config_, frame->reconstruction);
+
+  const int n = model_.n();
+  BodyLayout layout;
+  layout.spectral_items = key ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
+  layout.samples = static_cast<std::uint32_t>(n) * n;
+  layout.normals = config_.normals;
+  ChunkHeader proto;
+  proto.key = key;
+  proto.normals = config_.normals;
+  proto.grid_log2 = static_cast<std::uint8_t>(config_.grid_log2());
+  proto.pos_shift = static_cast<std::uint8_t>(pos_shift);
+  proto.vel_shift = static_cast<std::uint8_t>(vel_shift);
+  chunk_frame(*frame, layout, proto, key_coefficients, corr);
+
+  if (!corr.height.empty()) model_.add_correction(predicted, height_correction_field(n, corr.height));
+  states_[frame->id] = std::move(predicted);
+  return frame;
+}
+
+void Encoder::chunk_frame(EncodedFrame& frame, const BodyLayout& layout, const ChunkHeader& proto,
+                          const std::vector<KeyCoefficient>& key_coefficients, const Corrections& corr) {
+  const std::uint32_t total = layout.total();
+  struct Piece {
+    std::uint32_t begin, end;
+    std::vector<std::uint8_t> body;
+  };
+  std::vector<Piece> pieces;
+  ChunkView env{frame.id.tick, frame.key ? frame.id.tick : frame.base.tick, frame.key, 0, 1, {}};
+  // Payload size for a range; the header does not depend on the envelope or the CRC value.
+  BodyCost trial_cost, best_cost;
+  auto trial = [&](std::uint32_t b, std::uint32_t e, std::vector<std::uint8_t>& body) {
+    trial_cost = {};
+    body = encode_body(layout, b, e, key_coefficients, corr, &trial_cost);
+    ChunkHeader h = proto;
+    h.item_begin = b;
+    h.item_end = e;
+    return write_payload(h, env, body).size();
+  };
+  std::uint32_t begin = 0;
+  std::uint32_t guess = layout.spectral_items ? 64 : total;
+  while (begin < total) {
+    // Largest end in (begin, total] whose payload fits: grow geometrically, then bisect.
+    // Sizes are (nearly) monotone in the end; whatever is chosen was checked to fit.
+    std::vector<std::uint8_t> body, best_body;
+    std::uint32_t lo = begin, hi = total + 1;
+    std::uint32_t end = std::min(total, begin + std::max<std::uint32_t>(guess, 1));
+    while (true) {
+      if (trial(begin, end, body) <= options_.max_payload) {
+        lo = end;
+        best_body = std::move(body);
+        best_cost = trial_cost;
+        if (end == total) break;
+        end = std::min(total, begin + 2 * (end - begin));
+      } else {
+        hi = end;
+        break;
+      }
+    }
+    while (hi - lo > 1) {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      if (trial(begin, mid, body) <= options_.max_payload) {
+        lo = mid;
+        best_body = std::move(body);
+        best_cost = trial_cost;
+      } else {
+        hi = mid;
+      }
+    }
+    if (lo == begin)
+      throw std::runtime_error("Encoder: one item does not fit max_payload = " + std::to_string(options_.max_payload));
+    pieces.push_back({begin, lo, std::move(best_body)});
+    frame.stats.cost.key_bits += best_cost.key_bits;
+    frame.stats.cost.height_bits += best_cost.height_bits;
+    frame.stats.cost.slope_bits += best_cost.slope_bits;
+    guess = lo - begin;
+    begin = lo;
+  }
+  if (pieces.size() > kMaxChunksPerFrame)
+    throw std::runtime_error("Encoder: frame needs " + std::to_string(pieces.size()) + " chunks, more than " +
+                             std::to_string(kMaxChunksPerFrame) + " (raise max_payload)");
+  const auto count = static_cast<std::uint16_t>(pieces.size());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    Chunk c;
+    c.tick = env.tick;
+    c.baseline = env.baseline;
+    c.key = frame.key;
+    c.index = static_cast<std::uint16_t>(i);
+    c.count = count;
+    ChunkHeader h = proto;
+    h.item_begin = pieces[i].begin;
+    h.item_end = pieces[i].end;
+    c.payload = write_payload(h, view(c), pieces[i].body);
+    frame.stats.payload_bytes += c.payload.size();
+    frame.chunks.push_back(std::move(c));
+  }
+}
+
+}  // namespace ocean::codec

@@ -1,0 +1,96 @@
+// Encoder: the server side of a stream. Holds recent truth frames and the decoder states it has
+// produced (keyed by StateId), and encodes a tick as a key or as a delta from any held state,
+// predicting from exactly the state the decoder will hold (closed loop). Results are cached per
+// (tick, baseline) so one encoding serves every client sharing that baseline.
+#pragma once
+
+#include "chunk_body.hpp"
+#include "chunk_format.hpp"
+#include "frame_reconstruction.hpp"
+#include "modal_model.hpp"
+#include "state_hash.hpp"
+#include "stream_config.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace ocean::codec {
+
+struct EncoderOptions {
+  std::size_t max_payload = kDefaultMaxPayload;  // payload bytes per chunk, 64..65000
+  std::uint32_t history_ticks = 32;  // truth and states older than newest truth - this are dropped
+  int key_precision_bits = 6;        // key position error about step * 2^-bits rms (0..16)
+  int key_velocity_extra_bits = 3;   // key velocity this many bits finer than position (0..16)
+};
+
+// A view of one sim frame (row-major z * n + x); slopes required when the stream has normals.
+struct TruthView {
+  std::span<const float> height;
+  std::span<const float> slope_x, slope_z;
+};
+
+struct FrameStats {
+  std::size_t payload_bytes = 0;
+  std::size_t corrections_height = 0, corrections_slope = 0;
+  BodyCost cost;  // ideal bits per section (statistics)
+};
+
+struct EncodedFrame {
+  StateId id;    // the decoder state this frame leaves behind once complete
+  StateId base;  // the state it was predicted from (== id for keys)
+  bool key = false;
+  std::vector<Chunk> chunks;
+  ReconstructedFrame reconstruction;  // exactly what the decoder shows once all chunks arrive
+  FrameStats stats;
+};
+
+class Encoder {
+ public:
+  explicit Encoder(const StreamConfig& config, EncoderOptions options = {});  // throws invalid_argument
+
+  const StreamConfig& config() const { return config_; }
+  const EncoderOptions& options() const { return options_; }
+
+  // Stores the truth for a tick (copied). Ticks older than newest - history_ticks are evicted
+  // together with their states.
+  void add_truth(std::uint32_t tick, const TruthView& truth);
+
+  // A key needs the truth of tick and tick - 1 (its velocity). Throws std::invalid_argument when
+  // the truth is missing.
+  std::shared_ptr<const EncodedFrame> encode_key(std::uint32_t tick);
+
+  // A delta for `tick` predicted from `baseline` (a state this encoder produced, baseline.tick <
+  // tick). Throws std::invalid_argument when the truth or the baseline state is gone.
+  std::shared_ptr<const EncodedFrame> encode_delta(std::uint32_t tick, StateId baseline);
+
+  bool has_state(StateId id) const { return states_.count(id) != 0; }
+  const ModalState* state(StateId id) const;
+
+ private:
+  struct TruthFrame {
+    std::vector<float> height, slope_x, slope_z;
+  };
+  std::shared_ptr<EncodedFrame> finish_frame(std::uint32_t tick, ModalState predicted, bool key,
+                                             const std::vector<KeyCoefficient>& key_coefficients,
+                                             int pos_shift, int vel_shift, StateId base);
+  void chunk_frame(EncodedFrame& frame, const BodyLayout& layout, const ChunkHeader& proto,
+                   const std::vector<KeyCoefficient>& key_coefficients, const Corrections& corrections);
+  void evict();
+
+  StreamConfig config_;
+  EncoderOptions options_;
+  ModalModel model_;
+  std::map<std::uint32_t, TruthFrame> truth_;
+  std::map<StateId, ModalState> states_;
+  std::map<std::uint32_t, std::shared_ptr<const EncodedFrame>> keys_;
+  std::map<std::pair<std::uint32_t, StateId>, std::shared_ptr<const EncodedFrame>> deltas_;
+  std::uint32_t next_serial_ = 1;
+  std::uint32_t newest_ = 0;
+  bool have_truth_ = false;
+  SampleFields fields_;  // scratch
+};
+
+}  // namespace ocean::codec

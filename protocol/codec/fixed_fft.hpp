@@ -1,0 +1,37 @@
+// FixedFft: radix-2 complex FFT on int64 fixed-point data with Q30 twiddles from det_math, so the
+// decoder's spectral transforms give identical bits on every CPU. Unnormalized in both directions.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace ocean::codec {
+
+class FixedFft {
+ public:
+  static constexpr int kTwiddleBits = 30;
+
+  explicit FixedFft(int n);  // n a power of two, 2..4096
+
+  int size() const { return n_; }
+
+  // In place on an n x n row-major complex array (re, im): rows first, then columns.
+  // forward: X[k] = sum x[m] e^{-2 pi i m.k / n};  inverse: the same with e^{+...} (no 1/n^2).
+  void forward_2d(std::int64_t* re, std::int64_t* im) { transform_2d(re, im, false); }
+  void inverse_2d(std::int64_t* re, std::int64_t* im) { transform_2d(re, im, true); }
+
+  // One length-n transform of contiguous data.
+  void transform_1d(std::int64_t* re, std::int64_t* im, bool inverse) const;
+
+  const std::vector<std::int64_t>& cos_table() const { return cos_; }
+  const std::vector<std::int64_t>& sin_table() const { return sin_; }
+
+ private:
+  void transform_2d(std::int64_t* re, std::int64_t* im, bool inverse);
+
+  int n_;
+  std::vector<std::int64_t> cos_, sin_;  // round(2^30 cos(2 pi j / n)), j < n/2, likewise sin
+  std::vector<int> bitrev_;
+};
+
+}  // namespace ocean::codec

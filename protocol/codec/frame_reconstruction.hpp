@@ -1,0 +1,36 @@
+// The steps encoder and decoder share to turn a predicted state plus a frame's corrections into
+// the reconstruction and the next state, and the integer-to-float output conversion.
+#pragma once
+
+#include "chunk_body.hpp"
+#include "modal_model.hpp"
+#include "stream_config.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace ocean::codec {
+
+// What a client renders: floats in metres (height) and dimensionless slopes, row-major z * n + x.
+struct ReconstructedFrame {
+  std::uint32_t tick = 0;
+  bool complete = false;  // all chunks arrived (only complete frames can be baselines)
+  std::vector<float> height, slope_x, slope_z;
+};
+
+// fields += corrections (height in step/4 quanta, slopes in slope_step/4 quanta).
+void apply_corrections(SampleFields& fields, const Corrections& corrections);
+
+// The n x n spatial field (height units) of a frame's height corrections.
+std::vector<std::int64_t> height_correction_field(int n, const std::vector<Correction>& height);
+
+// State of a key: X(t) = x << pos_shift and X(t-1) = X(t) - (v << vel_shift) on the key modes, 0
+// elsewhere, conjugate partners filled in. `coefficients` is in key_modes() order.
+ModalState key_state(const ModalModel& model, std::span<const KeyCoefficient> coefficients,
+                     int pos_shift, int vel_shift);
+
+// Exact output conversion: float(double(v) * step / 2^16), float(double(s) * slope_step / 2^12).
+void to_float(const SampleFields& fields, const StreamConfig& config, ReconstructedFrame& out);
+
+}  // namespace ocean::codec

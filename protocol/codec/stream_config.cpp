@@ -1,0 +1,64 @@
+// StreamConfig factory and validation.
+#include "stream_config.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace ocean::codec {
+
+StreamConfig StreamConfig::from_profile(const Profile& profile, double patch_x_m, double patch_z_m,
+                                        double gravity_mps2, double depth_m) {
+  StreamConfig c;
+  c.profile_id = profile.id;
+  c.grid = profile.grid;
+  c.patch_x_m = patch_x_m;
+  c.patch_z_m = patch_z_m;
+  c.gravity_mps2 = gravity_mps2;
+  c.depth_m = std::isinf(depth_m) ? 0.0 : depth_m;
+  c.rate_hz = profile.rate_hz;
+  c.height_step_m = profile.height_step_m;
+  c.slope_step = profile.slope_step;
+  c.disp_step_m = profile.disp_step_m;
+  c.normals = profile.normals;
+  c.choppy = profile.choppy;
+  return c;
+}
+
+int StreamConfig::grid_log2() const {
+  int b = 0;
+  while ((1 << b) < grid) ++b;
+  return b;
+}
+
+bool operator==(const StreamConfig& a, const StreamConfig& b) {
+  return a.profile_id == b.profile_id && a.grid == b.grid && a.patch_x_m == b.patch_x_m &&
+         a.patch_z_m == b.patch_z_m && a.gravity_mps2 == b.gravity_mps2 && a.depth_m == b.depth_m &&
+         a.rate_hz == b.rate_hz && a.height_step_m == b.height_step_m && a.slope_step == b.slope_step &&
+         a.disp_step_m == b.disp_step_m && a.normals == b.normals && a.choppy == b.choppy;
+}
+
+std::string validate(const StreamConfig& c) {
+  std::ostringstream m;
+  auto finite_pos = [](double v) { return std::isfinite(v) && v > 0.0; };
+  if (c.grid < 16 || c.grid > 256 || (c.grid & (c.grid - 1)) != 0)
+    m << "grid = " << c.grid << ": must be a power of two in [16, 256]";
+  else if (!finite_pos(c.patch_x_m) || c.patch_x_m > 1e6)
+    m << "patch_x_m = " << c.patch_x_m << ": must be in (0, 1e6] metres";
+  else if (!finite_pos(c.patch_z_m) || c.patch_z_m > 1e6)
+    m << "patch_z_m = " << c.patch_z_m << ": must be in (0, 1e6] metres";
+  else if (!finite_pos(c.gravity_mps2) || c.gravity_mps2 > 1000.0)
+    m << "gravity_mps2 = " << c.gravity_mps2 << ": must be in (0, 1000]";
+  else if (!std::isfinite(c.depth_m) || c.depth_m < 0.0)
+    m << "depth_m = " << c.depth_m << ": must be finite and >= 0 (0 = deep water)";
+  else if (c.rate_hz < 1 || c.rate_hz > 240)
+    m << "rate_hz = " << c.rate_hz << ": must be in [1, 240]";
+  else if (!(c.height_step_m >= 1e-4f && c.height_step_m <= 1.0f))
+    m << "height_step_m = " << c.height_step_m << ": must be in [1e-4, 1]";
+  else if (c.normals && !(c.slope_step >= 1e-5f && c.slope_step <= 0.5f))
+    m << "slope_step = " << c.slope_step << ": must be in [1e-5, 0.5] when normals are streamed";
+  else if (c.choppy)
+    m << "choppy = true: displacement channels are not coded by codec version 1 (use a non-choppy profile)";
+  return m.str();
+}
+
+}  // namespace ocean::codec

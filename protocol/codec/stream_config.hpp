@@ -1,0 +1,40 @@
+// StreamConfig: what a codec stream is (grid, patch, physics, rate, quantization steps, channels),
+// mirroring the server's Welcome.StreamParams. Encoder and decoder must be built from equal values.
+#pragma once
+
+#include "profile.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace ocean::codec {
+
+struct StreamConfig {
+  std::uint8_t profile_id = 1;
+  std::uint16_t grid = 64;       // grid x grid samples, power of two in [16, 256]
+  double patch_x_m = 256.0;      // patch extent along x (columns), > 0
+  double patch_z_m = 256.0;      // along z (rows), > 0
+  double gravity_mps2 = 9.81;    // > 0
+  double depth_m = 0.0;          // water depth; 0 = deep water
+  std::uint16_t rate_hz = 30;    // frames per second (tick = frame), 1..240
+  float height_step_m = 0.01f;   // height error bound is step / 2; in [1e-4, 1] m
+  float slope_step = 1.0f / 256; // slope error bound is step / 2 (normals only); in [1e-5, 0.5]
+  float disp_step_m = 0.01f;     // choppy only (not yet coded by this codec version)
+  bool normals = true;           // stream slopes dh/dx, dh/dz
+  bool choppy = false;           // not supported by codec version 1: validate() refuses it
+
+  // The profile's grid/rate/steps/channels with the scene's patch and physics.
+  // depth_m: pass 0 (or infinity, mapped to 0) for deep water.
+  static StreamConfig from_profile(const Profile& profile, double patch_x_m, double patch_z_m,
+                                   double gravity_mps2, double depth_m);
+
+  int grid_log2() const;
+  double dt_s() const { return 1.0 / rate_hz; }
+};
+
+bool operator==(const StreamConfig& a, const StreamConfig& b);
+
+// Empty if usable, else a message naming the first bad field, its value and the allowed range.
+std::string validate(const StreamConfig& config);
+
+}  // namespace ocean::codec

@@ -1,0 +1,81 @@
+// The fixed-point FFT against a double-precision DFT, and its inverse round trip.
+#include "fixed_fft.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <complex>
+#include <random>
+#include <vector>
+
+using namespace ocean::codec;
+
+namespace {
+
+std::vector<std::complex<double>> reference_dft_2d(const std::vector<std::int64_t>& re, const std::vector<std::int64_t>& im,
+                                                   int n, double sign) {
+  std::vector<std::complex<double>> out(n * n);
+  const double pi2 = 2.0 * M_PI;
+  for (int kz = 0; kz < n; ++kz)
+    for (int kx = 0; kx < n; ++kx) {
+      std::complex<double> acc = 0;
+      for (int z = 0; z < n; ++z)
+        for (int x = 0; x < n; ++x) {
+          const double a = sign * pi2 * double((kx * x + kz * z) % n) / n;
+          acc += std::complex<double>(double(re[z * n + x]), double(im[z * n + x])) * std::polar(1.0, a);
+        }
+      out[kz * n + kx] = acc;
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("forward and inverse 2-D FFT match a double DFT to within a few units") {
+  for (int n : {8, 16}) {
+    FixedFft fft(n);
+    std::mt19937_64 rng(n);
+    std::uniform_int_distribution<std::int64_t> val(-(std::int64_t{1} << 40), std::int64_t{1} << 40);
+    std::vector<std::int64_t> re(n * n), im(n * n);
+    for (auto& v : re) v = val(rng);
+    for (auto& v : im) v = val(rng);
+    for (bool inverse : {false, true}) {
+      auto ref = reference_dft_2d(re, im, n, inverse ? 1.0 : -1.0);
+      auto r = re, i = im;
+      if (inverse)
+        fft.inverse_2d(r.data(), i.data());
+      else
+        fft.forward_2d(r.data(), i.data());
+      double worst = 0.0, scale = 0.0;
+      for (int k = 0; k < n * n; ++k) {
+        worst = std::max(worst, std::abs(std::complex<double>(double(r[k]), double(i[k])) - ref[k]));
+        scale = std::max(scale, std::abs(ref[k]));
+      }
+      INFO("n " << n << " inverse " << inverse << " worst " << worst << " scale " << scale);
+      // Q30 twiddles: relative error ~ log2(n^2) * 2^-30.
+      CHECK(worst <= scale * 1e-8);
+    }
+  }
+}
+
+TEST_CASE("inverse(forward(x)) / n^2 returns x within two units (one rounding per stage)") {
+  const int n = 64;
+  FixedFft fft(n);
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<std::int64_t> val(-(std::int64_t{1} << 30), std::int64_t{1} << 30);
+  std::vector<std::int64_t> re(n * n), im(n * n, 0), orig(n * n);
+  for (int k = 0; k < n * n; ++k) orig[k] = re[k] = val(rng);
+  fft.forward_2d(re.data(), im.data());
+  fft.inverse_2d(re.data(), im.data());
+  std::int64_t worst = 0;
+  for (int k = 0; k < n * n; ++k) {
+    const std::int64_t back = (re[k] + (std::int64_t{1} << 11)) >> 12;
+    worst = std::max<std::int64_t>(worst, std::llabs(back - orig[k]));
+  }
+  CHECK(worst <= 2);
+}
+
+TEST_CASE("FixedFft refuses sizes that are not powers of two") {
+  CHECK_THROWS_AS(FixedFft(12), std::invalid_argument);
+  CHECK_THROWS_AS(FixedFft(1), std::invalid_argument);
+}
