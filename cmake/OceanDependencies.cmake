@@ -39,12 +39,6 @@ add_library(ocean_tomlpp INTERFACE)
 target_include_directories(ocean_tomlpp SYSTEM INTERFACE ${TOMLPP_INCLUDE_DIR})
 add_library(ocean::tomlpp ALIAS ocean_tomlpp)
 
-find_path(HTTPLIB_INCLUDE_DIR httplib.h REQUIRED)
-add_library(ocean_httplib INTERFACE)
-target_include_directories(ocean_httplib SYSTEM INTERFACE ${HTTPLIB_INCLUDE_DIR})
-target_link_libraries(ocean_httplib INTERFACE Threads::Threads)
-add_library(ocean::httplib ALIAS ocean_httplib)
-
 if(OCEAN_BUILD_CLIENT)
   find_package(glfw3 CONFIG REQUIRED)
   find_package(glm CONFIG QUIET)

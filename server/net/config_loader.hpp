@@ -1,0 +1,30 @@
+// Loads ServerConfig from the command line and an optional TOML file (--config FILE): defaults,
+// then the file, then flags (a flag overrides the file). Nothing here exits or prints.
+#pragma once
+
+#include "server_config.hpp"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ocean::server {
+
+struct ConfigLoadResult {
+  enum class Outcome { run, show_help, error };
+  Outcome outcome = Outcome::error;
+  ServerConfig config;  // valid when outcome == run
+  std::string message;  // the help text, or the error naming the option and what is allowed
+};
+
+// args[0] is the program name, as in argv.
+ConfigLoadResult load_config(const std::vector<std::string>& args);
+
+// Applies a TOML document on top of `config` (top-level keys named like the flags, plus
+// [[schedule]] entries). `source` names the document in errors. Returns "" or the error.
+std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, std::string_view source);
+
+// The --help text.
+std::string config_help(std::string_view program);
+
+}  // namespace ocean::server

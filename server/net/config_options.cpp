@@ -1,0 +1,269 @@
+#include "config_options.hpp"
+
+#include "epoch.hpp"
+#include "quoted.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace ocean::server {
+namespace {
+
+template <typename Int>
+std::string parse_integer(std::string_view text, Int& out) {
+  Int value{};
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec == std::errc::result_out_of_range)
+    return quoted(text) + " is out of range for an integer option";
+  if (ec != std::errc() || end != text.data() + text.size()) return quoted(text) + " is not an integer";
+  out = value;
+  return {};
+}
+
+std::string parse_number(std::string_view text, double& out) {
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size()) return quoted(text) + " is not a number";
+  if (!std::isfinite(value)) return quoted(text) + " must be a finite number";
+  out = value;
+  return {};
+}
+
+std::string show_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", value);
+  return buffer;
+}
+
+std::string trim(std::string text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return text.substr(first, last - first + 1);
+}
+
+// Reads a whole small file; false when it cannot be opened.
+bool read_file(const std::string& path, std::string& contents) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  contents = buffer.str();
+  return static_cast<bool>(in) || in.eof();
+}
+
+std::string apply_address(std::optional<ListenAddress>& target, std::string_view value, bool allow_off) {
+  if (allow_off && value == "off") {
+    target.reset();
+    return {};
+  }
+  std::string error;
+  target = parse_listen_address(value, error);
+  return error;
+}
+
+std::string show_optional_address(const std::optional<ListenAddress>& address, const char* absent) {
+  return address ? address->to_string() : absent;
+}
+
+const char* spectrum_name(sim::SpectrumKind kind) {
+  return kind == sim::SpectrumKind::jonswap ? "jonswap" : "phillips";
+}
+
+const char* spreading_name(sim::SpreadingKind kind) {
+  switch (kind) {
+    case sim::SpreadingKind::cos2s: return "cos2s";
+    case sim::SpreadingKind::hasselmann: return "hasselmann";
+    case sim::SpreadingKind::donelan_banner: break;
+  }
+  return "donelan-banner";
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : ",") + item;
+  return out;
+}
+
+std::string hex_digit_error(std::string_view path) {
+  return "file '" + std::string(path) + "' must hold exactly 64 hex digits (a 32-byte key)";
+}
+
+const ConfigOption kOptions[] = {
+    {"listen", "ADDR:PORT", "TCP address to accept clients on; UDP uses it too unless --udp-listen is given (port 0 = any free port)",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) {
+       std::string error;
+       if (auto a = parse_listen_address(v, error)) c.listen = *a;
+       return error;
+     },
+     [](const ServerConfig& c) { return c.listen.to_string(); }},
+    {"udp-listen", "ADDR:PORT", "UDP address for frame datagrams", ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) { return apply_address(c.udp_listen, v, false); },
+     [](const ServerConfig& c) { return show_optional_address(c.udp_listen, "the --listen address"); }},
+    {"metrics-listen", "ADDR:PORT|off", "HTTP address serving /metrics (Prometheus), /healthz and /readyz; 'off' disables it",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) { return apply_address(c.metrics_listen, v, true); },
+     [](const ServerConfig& c) { return show_optional_address(c.metrics_listen, "off"); }},
+    {"size", "N", "simulation grid N x N samples: a power of two in 16..2048", ValueKind::integer, false,
+     [](ServerConfig& c, std::string_view v) {
+       int n = 0;
+       std::string error = parse_integer(v, n);
+       if (error.empty()) c.scene.size_x = c.scene.size_z = n;
+       return error;
+     },
+     [](const ServerConfig& c) { return std::to_string(c.scene.size_x); }},
+    {"patch", "METRES", "side of the square ocean patch the grid covers, in [0.01, 1e6]", ValueKind::number, false,
+     [](ServerConfig& c, std::string_view v) {
+       double m = 0;
+       std::string error = parse_number(v, m);
+       if (error.empty()) c.scene.patch_x_m = c.scene.patch_z_m = m;
+       return error;
+     },
+     [](const ServerConfig& c) { return show_number(c.scene.patch_x_m); }},
+    {"spectrum", "phillips|jonswap", "wave spectrum", ValueKind::text, true,
+     [](ServerConfig& c, std::string_view v) -> std::string {
+       if (v == "phillips") c.scene.spectrum = sim::SpectrumKind::phillips;
+       else if (v == "jonswap") c.scene.spectrum = sim::SpectrumKind::jonswap;
+       else return quoted(v) + " is not one of phillips, jonswap";
+       return {};
+     },
+     [](const ServerConfig& c) { return std::string(spectrum_name(c.scene.spectrum)); }},
+    {"spreading", "cos2s|donelan-banner|hasselmann", "directional spreading (JONSWAP only)", ValueKind::text, true,
+     [](ServerConfig& c, std::string_view v) -> std::string {
+       if (v == "cos2s") c.scene.spreading = sim::SpreadingKind::cos2s;
+       else if (v == "donelan-banner") c.scene.spreading = sim::SpreadingKind::donelan_banner;
+       else if (v == "hasselmann") c.scene.spreading = sim::SpreadingKind::hasselmann;
+       else return quoted(v) + " is not one of cos2s, donelan-banner, hasselmann";
+       return {};
+     },
+     [](const ServerConfig& c) { return std::string(spreading_name(c.scene.spreading)); }},
+    {"wind-speed", "M/S", "wind speed U10 in m/s, in [0, 100]", ValueKind::number, true,
+     [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.wind_speed_mps); },
+     [](const ServerConfig& c) { return show_number(c.scene.wind_speed_mps); }},
+    {"wind-dir", "DEG", "direction the wind blows towards, degrees from +x towards +z", ValueKind::number, true,
+     [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.wind_dir_deg); },
+     [](const ServerConfig& c) { return show_number(c.scene.wind_dir_deg); }},
+    {"fetch", "METRES", "JONSWAP fetch, in [1, 1e8]", ValueKind::number, true,
+     [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.fetch_m); },
+     [](const ServerConfig& c) { return show_number(c.scene.fetch_m); }},
+    {"amplitude", "A", "scale on the spectrum's energy, in [0, 1e6]", ValueKind::number, true,
+     [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.amplitude); },
+     [](const ServerConfig& c) { return show_number(c.scene.amplitude); }},
+    {"depth", "METRES|deep", "water depth, > 0, or 'deep'", ValueKind::number_or_text, true,
+     [](ServerConfig& c, std::string_view v) {
+       if (v == "deep") {
+         c.scene.depth_m = std::numeric_limits<double>::infinity();
+         return std::string();
+       }
+       std::string error = parse_number(v, c.scene.depth_m);
+       return error.empty() ? error : error + " (nor 'deep')";
+     },
+     [](const ServerConfig& c) {
+       return std::isinf(c.scene.depth_m) ? std::string("deep") : show_number(c.scene.depth_m);
+     }},
+    {"choppiness", "LAMBDA", "horizontal displacement scale, in [0, 100] (streamed by choppy profiles)", ValueKind::number, true,
+     [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.choppiness); },
+     [](const ServerConfig& c) { return show_number(c.scene.choppiness); }},
+    {"small-wave", "METRES", "suppression length of tiny waves, in [0, 1e6] (0 = from the grid spacing)", ValueKind::number, true,
+     [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.small_wave_m); },
+     [](const ServerConfig& c) { return show_number(c.scene.small_wave_m); }},
+    {"seed", "N", "random seed of the wave phases (unsigned 64-bit)", ValueKind::integer, false,
+     [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.scene.seed); },
+     [](const ServerConfig& c) { return std::to_string(c.scene.seed); }},
+    {"tick-rate", "HZ", "simulation ticks per second, an integer in 1..240 and a multiple of every offered profile's rate",
+     ValueKind::integer, false,
+     [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.tick_rate_hz); },
+     [](const ServerConfig& c) { return std::to_string(c.tick_rate_hz); }},
+    {"epoch", "MS|RFC3339", "wall-clock time of tick 0: Unix milliseconds or RFC 3339 (e.g. 2026-11-21T17:00:00Z), within 1e9 s (~31 years) of now; servers sharing it and --tick-rate number ticks alike",
+     ValueKind::integer_or_text, false,
+     [](ServerConfig& c, std::string_view v) {
+       std::string error;
+       if (auto ms = parse_epoch_ms(v, error)) c.epoch_unix_ms = *ms;
+       return error;
+     },
+     [](const ServerConfig& c) { return std::to_string(c.epoch_unix_ms); }},
+    {"profiles", "LIST", "comma-separated stream profiles to offer (mobile, desktop, desktop-choppy, lite); each grid <= --size",
+     ValueKind::text_list, false,
+     [](ServerConfig& c, std::string_view v) {
+       c.profiles.clear();
+       std::size_t start = 0;
+       while (start <= v.size()) {
+         const std::size_t comma = std::min(v.find(',', start), v.size());
+         if (std::string name = trim(std::string(v.substr(start, comma - start))); !name.empty())
+           c.profiles.push_back(name);
+         start = comma + 1;
+       }
+       return std::string();
+     },
+     [](const ServerConfig& c) { return join(c.profiles); }},
+    {"max-clients", "N", "most clients connected at once, in 1..100000", ValueKind::integer, false,
+     [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_clients); },
+     [](const ServerConfig& c) { return std::to_string(c.max_clients); }},
+    {"admin-token-file", "PATH", "file holding the admin token (readable, non-empty); unset = no admin interface",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) -> std::string {
+       c.admin_token_file = std::string(v);
+       std::string contents;
+       if (!read_file(c.admin_token_file, contents)) return "file '" + c.admin_token_file + "' cannot be read";
+       c.admin_token = trim(contents);
+       if (c.admin_token.empty()) return "file '" + c.admin_token_file + "' is empty";
+       return {};
+     },
+     [](const ServerConfig& c) { return c.admin_token_file.empty() ? std::string("unset") : c.admin_token_file; }},
+    {"cookie-key-file", "PATH", "file holding the 32-byte UDP cookie key as 64 hex digits, shared by replicas; unset = random per start",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) -> std::string {
+       std::string contents;
+       if (!read_file(std::string(v), contents)) return "file '" + std::string(v) + "' cannot be read";
+       contents = trim(contents);
+       if (contents.size() != 64) return hex_digit_error(v);
+       c.cookie_key.clear();
+       for (std::size_t i = 0; i < 64; i += 2) {
+         unsigned value = 0;
+         const auto [end, ec] = std::from_chars(contents.data() + i, contents.data() + i + 2, value, 16);
+         if (ec != std::errc() || end != contents.data() + i + 2) return hex_digit_error(v);
+         c.cookie_key.push_back(static_cast<std::uint8_t>(value));
+       }
+       return {};
+     },
+     [](const ServerConfig& c) { return std::string(c.cookie_key.empty() ? "unset" : "set"); }},
+    {"idle-timeout", "SECONDS", "drop a client silent for this long, in (0, 3600]", ValueKind::number, false,
+     [](ServerConfig& c, std::string_view v) { return parse_number(v, c.idle_timeout_s); },
+     [](const ServerConfig& c) { return show_number(c.idle_timeout_s); }},
+    {"log-level", "LEVEL", "trace, debug, info, warn, error, critical or off", ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) {
+       c.log_level = std::string(v);
+       return std::string();
+     },
+     [](const ServerConfig& c) { return c.log_level; }},
+};
+
+}  // namespace
+
+std::span<const ConfigOption> config_options() { return kOptions; }
+
+const ConfigOption* find_config_option(std::string_view name) {
+  for (const ConfigOption& option : kOptions)
+    if (option.name == name) return &option;
+  return nullptr;
+}
+
+std::string describe_config(const ServerConfig& config) {
+  std::string out;
+  for (const ConfigOption& option : kOptions) {
+    if (!out.empty()) out += ' ';
+    out.append(option.name);
+    out += '=';
+    out += option.show(config);
+  }
+  out += " schedule-entries=";
+  out += std::to_string(config.schedule.size());
+  return out;
+}
+
+}  // namespace ocean::server

@@ -1,0 +1,63 @@
+#include "frame_producer.hpp"
+
+#include <mutex>
+
+namespace ocean::server {
+namespace {
+
+constexpr std::size_t kMaxPooledBuffers = 8;
+
+}  // namespace
+
+struct FrameProducer::BufferPool {
+  BufferPool() { free.reserve(kMaxPooledBuffers); }  // so giving a buffer back never allocates
+  std::mutex mutex;  // also orders the network thread's last reads before the next tick's writes
+  std::vector<std::unique_ptr<TickFrames>> free;
+};
+
+FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*> profiles)
+    : schedule_(std::move(schedule)),
+      profiles_(std::move(profiles)),
+      active_scene_(&schedule_.base()),
+      ocean_(std::make_unique<sim::Ocean>(*active_scene_)),
+      pool_(std::make_shared<BufferPool>()) {}
+
+std::shared_ptr<TickFrames> FrameProducer::take_buffer() {
+  std::unique_ptr<TickFrames> buffer;
+  {
+    std::lock_guard lock(pool_->mutex);
+    if (!pool_->free.empty()) {
+      buffer = std::move(pool_->free.back());
+      pool_->free.pop_back();
+    }
+  }
+  if (!buffer) buffer = std::make_unique<TickFrames>();
+  return std::shared_ptr<TickFrames>(buffer.release(), [pool = pool_](TickFrames* frames) {
+    std::unique_ptr<TickFrames> owned(frames);
+    std::lock_guard lock(pool->mutex);
+    if (pool->free.size() < kMaxPooledBuffers) pool->free.push_back(std::move(owned));
+  });
+}
+
+std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, double time_s) {
+  const sim::SceneParams& scene = schedule_.scene_at(tick);
+  scene_changed_ = &scene != active_scene_;
+  if (scene_changed_) {
+    ocean_ = std::make_unique<sim::Ocean>(scene);
+    active_scene_ = &scene;
+  }
+
+  std::shared_ptr<TickFrames> result = take_buffer();
+  result->tick = tick;
+  result->time_s = time_s;
+  result->frames.resize(profiles_.size());
+  for (std::size_t i = 0; i < profiles_.size(); ++i) {
+    const Profile& profile = *profiles_[i];
+    result->frames[i].profile = &profile;
+    ocean_->evaluate_band(time_s, profile.grid, profile.grid, result->frames[i].frame,
+                          sim::FrameRequest{profile.normals, profile.choppy});
+  }
+  return result;
+}
+
+}  // namespace ocean::server

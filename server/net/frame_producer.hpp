@@ -1,0 +1,42 @@
+// FrameProducer: the simulation thread's work per tick. Evaluates the ocean for every offered
+// profile at the tick's time, switching scenes when the schedule says so. No clock, no I/O:
+// the tick and its time are arguments, so it is tested like the simulation itself.
+#pragma once
+
+#include "ocean.hpp"
+#include "scene_schedule.hpp"
+#include "tick_frames.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace ocean::server {
+
+class FrameProducer {
+ public:
+  // Profiles must fit the scene (validate_server_config checks it). Throws sim::ParamError.
+  FrameProducer(SceneSchedule schedule, std::vector<const Profile*> profiles);
+  FrameProducer(const FrameProducer&) = delete;  // active_scene_ points into schedule_
+  FrameProducer& operator=(const FrameProducer&) = delete;
+
+  // The frames for `tick` at `time_s`. A result's buffers return to a pool when the last reference
+  // to it is dropped (on any thread), so a steady state allocates nothing.
+  std::shared_ptr<const TickFrames> produce(std::int64_t tick, double time_s);
+
+  // True when the last produce() switched to a scheduled scene.
+  bool scene_changed() const { return scene_changed_; }
+  const sim::SceneParams& scene() const { return ocean_->params(); }
+
+ private:
+  struct BufferPool;  // shared with every result's deleter, which returns the buffer to it
+  std::shared_ptr<TickFrames> take_buffer();
+
+  SceneSchedule schedule_;
+  std::vector<const Profile*> profiles_;
+  const sim::SceneParams* active_scene_;
+  std::unique_ptr<sim::Ocean> ocean_;
+  std::shared_ptr<BufferPool> pool_;
+  bool scene_changed_ = false;
+};
+
+}  // namespace ocean::server

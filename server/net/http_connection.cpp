@@ -1,0 +1,88 @@
+#include "http_connection.hpp"
+
+#include <asio/write.hpp>
+
+#include <chrono>
+
+namespace ocean::server {
+namespace {
+
+constexpr auto kRequestDeadline = std::chrono::seconds(5);
+
+const char* reason_phrase(int status) {
+  switch (status) {
+    case 200: return "OK";
+    case 400: return "Bad Request";
+    case 404: return "Not Found";
+    case 405: return "Method Not Allowed";
+    case 503: return "Service Unavailable";
+    default: return "Unknown";
+  }
+}
+
+}  // namespace
+
+std::string HttpReply::to_wire(bool include_body) const {
+  std::string out = "HTTP/1.1 " + std::to_string(status) + " " + reason_phrase(status) + "\r\n";
+  out += "Content-Type: " + content_type + "\r\n";
+  out += "Content-Length: " + std::to_string(body.size()) + "\r\n";
+  out += "Connection: close\r\n\r\n";
+  if (include_body) out += body;
+  return out;
+}
+
+HttpConnection::HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done)
+    : socket_(std::move(socket)),
+      deadline_(socket_.get_executor()),
+      handler_(std::move(handler)),
+      on_done_(std::move(on_done)) {}
+
+void HttpConnection::start() {
+  deadline_.expires_after(kRequestDeadline);
+  deadline_.async_wait([self = shared_from_this()](std::error_code error) {
+    if (!error) self->finish();  // too slow: give up on it
+  });
+  do_read();
+}
+
+void HttpConnection::stop() {
+  std::error_code ignored;
+  deadline_.cancel();
+  socket_.close(ignored);
+}
+
+void HttpConnection::do_read() {
+  socket_.async_read_some(asio::buffer(read_buffer_), [self = shared_from_this()](std::error_code error, std::size_t n) {
+    if (error) return self->finish();
+    switch (self->parser_.consume(std::string_view(self->read_buffer_.data(), n))) {
+      case HttpRequestParser::Result::need_more: return self->do_read();
+      case HttpRequestParser::Result::bad: return self->do_write({400, "text/plain; charset=utf-8", "bad request\n"}, true);
+      case HttpRequestParser::Result::good: {
+        const HttpRequest& request = self->parser_.request();
+        if (request.method != "GET" && request.method != "HEAD")
+          return self->do_write({405, "text/plain; charset=utf-8", "only GET and HEAD\n"}, true);
+        return self->do_write(self->handler_(request), request.method == "GET");
+      }
+    }
+  });
+}
+
+void HttpConnection::do_write(const HttpReply& reply, bool include_body) {
+  reply_bytes_ = reply.to_wire(include_body);
+  asio::async_write(socket_, asio::buffer(reply_bytes_), [self = shared_from_this()](std::error_code error, std::size_t) {
+    if (!error) {
+      std::error_code ignored;
+      self->socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+    }
+    self->finish();
+  });
+}
+
+void HttpConnection::finish() {
+  if (finished_) return;
+  finished_ = true;
+  stop();
+  if (on_done_) on_done_(shared_from_this());
+}
+
+}  // namespace ocean::server

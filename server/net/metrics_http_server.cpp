@@ -1,0 +1,46 @@
+#include "metrics_http_server.hpp"
+
+#include <system_error>
+
+namespace ocean::server {
+
+asio::ip::tcp::acceptor open_tcp_acceptor(asio::io_context& context, const ListenAddress& address,
+                                          std::string_view purpose) {
+  const asio::ip::tcp::endpoint endpoint(asio::ip::make_address(address.host), address.port);
+  asio::ip::tcp::acceptor acceptor(context);
+  std::error_code error;
+  acceptor.open(endpoint.protocol(), error);
+  if (!error) acceptor.set_option(asio::ip::tcp::acceptor::reuse_address(true), error);
+  if (!error) acceptor.bind(endpoint, error);
+  if (!error) acceptor.listen(asio::socket_base::max_listen_connections, error);
+  if (error) throw std::system_error(error, "cannot listen for " + std::string(purpose) + " on " + address.to_string());
+  return acceptor;
+}
+
+MetricsHttpServer::MetricsHttpServer(asio::io_context& context, const ListenAddress& address,
+                                     HttpConnection::Handler handler)
+    : acceptor_(open_tcp_acceptor(context, address, "metrics")), handler_(std::move(handler)) {}
+
+void MetricsHttpServer::start() { do_accept(); }
+
+void MetricsHttpServer::stop() {
+  std::error_code ignored;
+  acceptor_.close(ignored);
+  for (const auto& connection : connections_) connection->stop();
+  connections_.clear();
+}
+
+void MetricsHttpServer::do_accept() {
+  acceptor_.async_accept([this](std::error_code error, asio::ip::tcp::socket socket) {
+    if (!acceptor_.is_open()) return;  // stopped
+    if (!error) {
+      auto connection = std::make_shared<HttpConnection>(
+          std::move(socket), handler_, [this](const std::shared_ptr<HttpConnection>& done) { connections_.erase(done); });
+      connections_.insert(connection);
+      connection->start();
+    }
+    do_accept();
+  });
+}
+
+}  // namespace ocean::server

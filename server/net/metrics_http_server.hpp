@@ -1,0 +1,37 @@
+// MetricsHttpServer: the HTTP endpoint for Prometheus (/metrics) and probes (/healthz, /readyz),
+// on the network io_context. Owns its acceptor and the open connections so stop() ends them all.
+#pragma once
+
+#include "http_connection.hpp"
+#include "listen_address.hpp"
+
+#include <asio/io_context.hpp>
+#include <asio/ip/tcp.hpp>
+
+#include <memory>
+#include <set>
+
+namespace ocean::server {
+
+class MetricsHttpServer {
+ public:
+  // Binds at once; throws std::system_error naming the address when it cannot.
+  MetricsHttpServer(asio::io_context& context, const ListenAddress& address, HttpConnection::Handler handler);
+
+  void start();
+  void stop();  // closes the acceptor and every open connection
+  asio::ip::tcp::endpoint local_endpoint() const { return acceptor_.local_endpoint(); }
+
+ private:
+  void do_accept();
+
+  asio::ip::tcp::acceptor acceptor_;
+  HttpConnection::Handler handler_;
+  std::set<std::shared_ptr<HttpConnection>> connections_;
+};
+
+// Opens, configures (SO_REUSEADDR) and binds a listening TCP acceptor; used for every TCP listener.
+asio::ip::tcp::acceptor open_tcp_acceptor(asio::io_context& context, const ListenAddress& address,
+                                          std::string_view purpose);
+
+}  // namespace ocean::server

@@ -1,0 +1,213 @@
+#include "server.hpp"
+
+#include "server_log.hpp"
+
+#include <asio/post.hpp>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+
+namespace ocean::server {
+namespace {
+
+std::vector<const Profile*> offered_profiles(const ServerConfig& config) {
+  std::vector<const Profile*> profiles;
+  for (const std::string& name : config.profiles)
+    if (const Profile* profile = find_profile(std::string_view(name))) profiles.push_back(profile);
+  return profiles;
+}
+
+CookieKey cookie_key_from(const ServerConfig& config) {
+  if (config.cookie_key.size() != kCookieKeyBytes) return random_cookie_key();
+  CookieKey key;
+  std::copy(config.cookie_key.begin(), config.cookie_key.end(), key.begin());
+  return key;
+}
+
+asio::ip::udp::socket open_udp_socket(asio::io_context& context, const ListenAddress& address) {
+  const asio::ip::udp::endpoint endpoint(asio::ip::make_address(address.host), address.port);
+  asio::ip::udp::socket socket(context);
+  std::error_code error;
+  socket.open(endpoint.protocol(), error);
+  if (!error) socket.bind(endpoint, error);
+  if (error) throw std::system_error(error, "cannot bind UDP on " + address.to_string());
+  return socket;
+}
+
+std::string peer_text(const auto& endpoint) {
+  const auto address = endpoint.address();
+  std::string text;  // appended piecewise: g++ 12 warns falsely (-Wrestrict) on "[" + std::string
+  if (address.is_v6()) text += '[';
+  text += address.to_string();
+  if (address.is_v6()) text += ']';
+  text += ':';
+  text += std::to_string(endpoint.port());
+  return text;
+}
+
+SceneSchedule checked_schedule(const ServerConfig& config) {
+  std::string error;
+  SceneSchedule schedule = make_schedule(config, error);
+  if (error.empty()) error = schedule.validate();
+  if (!error.empty()) throw std::invalid_argument("schedule: " + error);
+  return schedule;
+}
+
+// The configured UDP address, or the TCP host on the port TCP actually got.
+ListenAddress udp_address(const ServerConfig& config, std::uint16_t tcp_port) {
+  return config.udp_listen ? *config.udp_listen : ListenAddress{config.listen.host, tcp_port};
+}
+
+}  // namespace
+
+Server::Server(ServerConfig config)
+    : config_(std::move(config)),
+      signals_(context_, SIGINT, SIGTERM),
+      metrics_(registry_),
+      cookie_key_(cookie_key_from(config_)),
+      acceptor_(open_tcp_acceptor(context_, config_.listen, "clients")),
+      udp_socket_(open_udp_socket(context_, udp_address(config_, acceptor_.local_endpoint().port()))),
+      producer_(checked_schedule(config_), offered_profiles(config_)),
+      tick_loop_(TickClock(config_.tick_rate_hz, config_.epoch_unix_ms),
+                 [this](const TickDecision& decision) { on_tick(decision); }) {
+  // Fail now, with the option to change, rather than on the simulation thread at the first tick.
+  const TickClock& clock = tick_loop_.clock();
+  const double now_s = clock.sim_time_s(clock.tick_at(system_unix_ns()));
+  if (!(std::fabs(now_s) <= kMaxSimTimeS))
+    throw std::invalid_argument("--epoch " + std::to_string(config_.epoch_unix_ms) + ": the current time is " +
+                                std::to_string(now_s) + " s from it; the simulation accepts at most " +
+                                std::to_string(kMaxSimTimeS) + " s, so choose an epoch within ~31 years of now");
+  // Builds the per-profile band evaluators before the first deadline (and surfaces any ParamError).
+  (void)producer_.produce(clock.tick_at(system_unix_ns()), now_s);
+  tcp_port_ = acceptor_.local_endpoint().port();
+  udp_port_ = udp_socket_.local_endpoint().port();
+  if (config_.metrics_listen) {
+    metrics_http_ = std::make_unique<MetricsHttpServer>(context_, *config_.metrics_listen,
+                                                        [this](const HttpRequest& r) { return handle_http(r); });
+    metrics_port_ = metrics_http_->local_endpoint().port();
+  }
+  for (const Profile* profile : offered_profiles(config_)) {
+    metrics_.frames_computed(profile->name);
+    for (const char* transport : {"tcp", "udp"}) metrics_.clients(profile->name, transport);
+  }
+  do_await_stop();
+}
+
+Server::~Server() { tick_loop_.stop(); }
+
+void Server::run() {
+  spdlog::info("listening tcp={} udp={} metrics={}", config_.listen.host + ":" + std::to_string(tcp_port_),
+               udp_address(config_, tcp_port_).host + ":" + std::to_string(udp_port_),
+               metrics_port_ ? config_.metrics_listen->host + ":" + std::to_string(*metrics_port_) : "off");
+  tick_loop_.start();
+  if (metrics_http_) metrics_http_->start();
+  do_accept();
+  do_receive();
+  context_.run();
+  tick_loop_.stop();
+  spdlog::info("stopped");
+}
+
+void Server::stop() {
+  asio::post(context_, [this] { do_stop(); });
+}
+
+void Server::do_await_stop() {
+  signals_.async_wait([this](std::error_code error, int signal_number) {
+    if (error) return;  // cancelled by do_stop
+    spdlog::info("signal {} received, shutting down", signal_number == SIGINT ? "SIGINT" : "SIGTERM");
+    do_stop();
+  });
+}
+
+void Server::do_stop() {
+  if (stopping_) return;
+  stopping_ = true;
+  std::error_code ignored;
+  signals_.cancel(ignored);
+  acceptor_.close(ignored);
+  udp_socket_.close(ignored);
+  if (metrics_http_) metrics_http_->stop();
+  tick_loop_.stop();  // joins the simulation thread; frames it already queued are drained below
+  // Phase 2: sessions are told the server is going away here, before the context runs dry.
+}
+
+void Server::do_accept() {
+  acceptor_.async_accept([this](std::error_code error, asio::ip::tcp::socket socket) {
+    if (!acceptor_.is_open()) return;
+    if (!error) {
+      if (connection_handler_) {
+        connection_handler_(std::move(socket));
+      } else {
+        std::error_code ignored;
+        const auto peer = socket.remote_endpoint(ignored);
+        log_reject("tcp", peer_text(peer), "sessions_unavailable");
+        metrics_.rejects("sessions_unavailable").inc();
+        socket.close(ignored);
+      }
+    }
+    do_accept();
+  });
+}
+
+void Server::do_receive() {
+  udp_socket_.async_receive_from(asio::buffer(datagram_), datagram_sender_, [this](std::error_code error, std::size_t n) {
+    if (!udp_socket_.is_open()) return;
+    if (!error) {
+      if (datagram_handler_) {
+        datagram_handler_(std::span<const std::uint8_t>(datagram_.data(), n), datagram_sender_);
+      } else {
+        log_reject("udp", peer_text(datagram_sender_), "udp_no_session", true);
+        metrics_.rejects("udp_no_session").inc();
+      }
+    }
+    do_receive();
+  });
+}
+
+void Server::on_tick(const TickDecision& decision) {
+  const auto start = std::chrono::steady_clock::now();
+  const double time_s = tick_loop_.clock().sim_time_s(decision.tick);
+  std::shared_ptr<const TickFrames> frames = producer_.produce(decision.tick, time_s);
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+
+  if (producer_.scene_changed()) {
+    metrics_.scene_changes.inc();
+    spdlog::info("tick {}: scheduled scene change applied (wind {} m/s towards {} deg)", decision.tick,
+                 producer_.scene().wind_speed_mps, producer_.scene().wind_dir_deg);
+  }
+  metrics_.ticks.inc();
+  metrics_.current_tick.set(static_cast<double>(decision.tick));
+  metrics_.tick_seconds.observe(elapsed.count());
+  if (decision.late) metrics_.ticks_late.inc();
+  if (decision.skipped > 0) {
+    metrics_.ticks_skipped.inc(static_cast<double>(decision.skipped));
+    spdlog::warn("tick {}: {} ticks skipped, the simulation fell behind", decision.tick, decision.skipped);
+  }
+  for (const ProfileFrame& frame : frames->frames) metrics_.frames_computed(frame.profile->name).inc();
+
+  const auto pushed = frames_.push(std::move(frames));
+  if (pushed.dropped) metrics_.frames_dropped.inc();
+  if (pushed.was_empty) asio::post(context_, [this] { drain_frames(); });
+}
+
+void Server::drain_frames() {
+  while (std::optional<std::shared_ptr<const TickFrames>> frames = frames_.pop()) {
+    ready_.store(true);
+    if (frame_sink_) frame_sink_(*frames);
+  }
+}
+
+HttpReply Server::handle_http(const HttpRequest& request) {
+  if (request.target == "/metrics")
+    return {200, "text/plain; version=0.0.4; charset=utf-8", registry_.render()};
+  if (request.target == "/healthz") return {200, "text/plain; charset=utf-8", "ok\n"};
+  if (request.target == "/readyz")
+    return ready_.load() ? HttpReply{200, "text/plain; charset=utf-8", "ready\n"}
+                         : HttpReply{503, "text/plain; charset=utf-8", "starting\n"};
+  return {404, "text/plain; charset=utf-8", "not found; try /metrics, /healthz or /readyz\n"};
+}
+
+}  // namespace ocean::server

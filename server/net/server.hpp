@@ -1,0 +1,99 @@
+// Server: owns the network io_context and everything on it (signals, the client TCP acceptor and
+// UDP socket, the metrics endpoint) plus the tick loop on its own simulation thread. Frames reach
+// the network thread through a small queue; sessions (phase 2) plug in through the three handlers.
+#pragma once
+
+#include "bounded_queue.hpp"
+#include "frame_producer.hpp"
+#include "metrics.hpp"
+#include "metrics_http_server.hpp"
+#include "server_config.hpp"
+#include "server_metrics.hpp"
+#include "tick_loop.hpp"
+#include "udp_cookie.hpp"
+
+#include <asio/io_context.hpp>
+#include <asio/ip/tcp.hpp>
+#include <asio/ip/udp.hpp>
+#include <asio/signal_set.hpp>
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+
+namespace ocean::server {
+
+class Server {
+ public:
+  // All run on the network thread.
+  using FrameSink = std::function<void(const std::shared_ptr<const TickFrames>&)>;
+  using ConnectionHandler = std::function<void(asio::ip::tcp::socket)>;
+  using DatagramHandler = std::function<void(std::span<const std::uint8_t>, const asio::ip::udp::endpoint&)>;
+
+  // Binds every socket and builds the simulation; throws std::system_error (address in use...)
+  // or sim::ParamError. The config must have passed validate_server_config.
+  explicit Server(ServerConfig config);
+  ~Server();
+  Server(const Server&) = delete;
+  Server& operator=(const Server&) = delete;
+
+  // Until then, accepted connections and datagrams are refused with a logged reason.
+  void set_frame_sink(FrameSink sink) { frame_sink_ = std::move(sink); }
+  void set_connection_handler(ConnectionHandler handler) { connection_handler_ = std::move(handler); }
+  void set_datagram_handler(DatagramHandler handler) { datagram_handler_ = std::move(handler); }
+
+  // Runs the network side on the calling thread until SIGINT, SIGTERM or stop().
+  void run();
+  // Thread-safe: closes the listeners, stops the tick loop, and lets run() return.
+  void stop();
+
+  asio::io_context& context() { return context_; }
+  const ServerConfig& config() const { return config_; }
+  ServerMetrics& metrics() { return metrics_; }
+  const CookieKey& cookie_key() const { return cookie_key_; }
+  std::uint16_t tcp_port() const { return tcp_port_; }
+  std::uint16_t udp_port() const { return udp_port_; }
+  std::optional<std::uint16_t> metrics_port() const { return metrics_port_; }
+  bool ready() const { return ready_.load(); }  // a first frame reached the network side
+
+ private:
+  void do_await_stop();
+  void do_accept();
+  void do_receive();
+  void do_stop();
+  void on_tick(const TickDecision& decision);  // simulation thread
+  void drain_frames();                          // network thread
+  HttpReply handle_http(const HttpRequest& request);
+
+  ServerConfig config_;
+  asio::io_context context_{1};
+  asio::signal_set signals_;
+  MetricsRegistry registry_;
+  ServerMetrics metrics_;
+  CookieKey cookie_key_;
+  asio::ip::tcp::acceptor acceptor_;
+  asio::ip::udp::socket udp_socket_;
+  std::unique_ptr<MetricsHttpServer> metrics_http_;
+  std::uint16_t tcp_port_ = 0;
+  std::uint16_t udp_port_ = 0;
+  std::optional<std::uint16_t> metrics_port_;
+
+  FrameSink frame_sink_;
+  ConnectionHandler connection_handler_;
+  DatagramHandler datagram_handler_;
+
+  std::array<std::uint8_t, 1500> datagram_{};
+  asio::ip::udp::endpoint datagram_sender_;
+
+  FrameProducer producer_;  // used only on the simulation thread
+  BoundedQueue<std::shared_ptr<const TickFrames>> frames_{4};
+  std::atomic<bool> ready_{false};
+  bool stopping_ = false;
+  TickLoop tick_loop_;      // last: its thread must stop before anything it touches goes away
+};
+
+}  // namespace ocean::server

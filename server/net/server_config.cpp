@@ -1,0 +1,89 @@
+#include "server_config.hpp"
+
+#include "config_options.hpp"
+#include "profile.hpp"
+
+#include <spdlog/common.h>
+
+#include <algorithm>
+
+namespace ocean::server {
+namespace {
+
+// sim::validate names SceneParams fields ("wind_speed_mps = ..."); a user typed a flag.
+std::string name_scene_flag(const std::string& sim_message) {
+  static const std::pair<const char*, const char*> kFlags[] = {
+      {"size_x", "--size"},         {"size_z", "--size"},           {"patch_x_m", "--patch"},
+      {"patch_z_m", "--patch"},     {"spectrum", "--spectrum"},     {"spreading", "--spreading"},
+      {"wind_speed_mps", "--wind-speed"}, {"wind_dir_deg", "--wind-dir"}, {"fetch_m", "--fetch"},
+      {"amplitude", "--amplitude"}, {"depth_m", "--depth"},         {"small_wave_m", "--small-wave"},
+      {"choppiness", "--choppiness"}, {"seed", "--seed"}};
+  const std::string field = sim_message.substr(0, sim_message.find(' '));
+  for (const auto& [name, flag] : kFlags)
+    if (field == name) return std::string(flag) + ": " + sim_message;
+  return "scene: " + sim_message;
+}
+
+std::string validate_profiles(const ServerConfig& config) {
+  if (config.profiles.empty()) return "--profiles: at least one profile must be offered";
+  std::string known;
+  for (const Profile& p : all_profiles()) known += (known.empty() ? "" : ", ") + std::string(p.name);
+  const int sim_grid = std::min(config.scene.size_x, config.scene.size_z);
+  for (std::size_t i = 0; i < config.profiles.size(); ++i) {
+    const std::string& name = config.profiles[i];
+    const Profile* profile = find_profile(std::string_view(name));
+    if (!profile) return "--profiles: unknown profile '" + name + "' (known: " + known + ")";
+    if (std::count(config.profiles.begin(), config.profiles.begin() + i, name) > 0)
+      return "--profiles: profile '" + name + "' is listed twice";
+    if (profile->grid > sim_grid)
+      return "--profiles: profile '" + name + "' streams a " + std::to_string(profile->grid) + "x" +
+             std::to_string(profile->grid) + " grid, larger than the simulation (--size " +
+             std::to_string(sim_grid) + "); raise --size or drop the profile";
+    if (config.tick_rate_hz % profile->rate_hz != 0)
+      return "--tick-rate " + std::to_string(config.tick_rate_hz) + ": profile '" + name + "' streams at " +
+             std::to_string(profile->rate_hz) + " Hz, so the tick rate must be a multiple of it";
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string validate_server_config(const ServerConfig& config) {
+  if (std::string error = sim::validate(config.scene); !error.empty()) return name_scene_flag(error);
+  std::string schedule_error;
+  const SceneSchedule schedule = make_schedule(config, schedule_error);
+  if (schedule_error.empty()) schedule_error = schedule.validate();
+  if (!schedule_error.empty()) return "schedule: " + schedule_error;
+  if (config.tick_rate_hz < kMinTickRateHz || config.tick_rate_hz > kMaxTickRateHz)
+    return "--tick-rate " + std::to_string(config.tick_rate_hz) + ": must be an integer in " +
+           std::to_string(kMinTickRateHz) + ".." + std::to_string(kMaxTickRateHz) + " Hz";
+  if (config.max_clients < 1 || config.max_clients > kMaxClientsLimit)
+    return "--max-clients " + std::to_string(config.max_clients) + ": must be in 1.." +
+           std::to_string(kMaxClientsLimit);
+  if (!(config.idle_timeout_s > 0.0) || config.idle_timeout_s > 3600.0)
+    return "--idle-timeout " + std::to_string(config.idle_timeout_s) + ": must be in (0, 3600] seconds";
+  if (spdlog::level::from_str(config.log_level) == spdlog::level::off && config.log_level != "off")
+    return "--log-level '" + config.log_level + "': must be one of trace, debug, info, warn, error, critical, off";
+  if (!config.admin_token_file.empty() && config.admin_token.empty())
+    return "--admin-token-file '" + config.admin_token_file + "': the token is empty";
+  return validate_profiles(config);
+}
+
+SceneSchedule make_schedule(const ServerConfig& config, std::string& error) {
+  ServerConfig scratch = config;
+  std::vector<ScheduledScene> changes;
+  for (std::size_t i = 0; i < config.schedule.size(); ++i) {
+    const ScheduleEntry& entry = config.schedule[i];
+    for (const auto& [name, value] : entry.settings) {
+      const ConfigOption* option = find_config_option(name);
+      std::string problem = !option || !option->schedulable ? "cannot be scheduled" : option->apply(scratch, value);
+      if (!problem.empty() && error.empty())
+        error = "schedule entry " + std::to_string(i + 1) + " (tick " + std::to_string(entry.tick) + "): " + name +
+                " " + problem;
+    }
+    changes.push_back({entry.tick, scratch.scene});
+  }
+  return SceneSchedule(config.scene, std::move(changes));
+}
+
+}  // namespace ocean::server

@@ -1,0 +1,64 @@
+// ServerConfig: everything ocean-server is told at startup, after flags and the config file are
+// merged. Loading (config_loader) fills it; validate_server_config() is the one gate it passes.
+#pragma once
+
+#include "listen_address.hpp"
+#include "scene_params.hpp"
+#include "scene_schedule.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ocean::server {
+
+// One [[schedule]] entry as written: from `tick` on, these options (schedulable ones, by name,
+// values as text) change. Kept as text so flags that override the base scene also reach later
+// entries; make_schedule() turns the list into whole scenes.
+struct ScheduleEntry {
+  std::int64_t tick = 0;
+  std::vector<std::pair<std::string, std::string>> settings;
+};
+
+inline constexpr std::int64_t kDefaultEpochUnixMs = 1'767'225'600'000;  // 2026-01-01T00:00:00Z
+// The simulation refuses times beyond this (sim::Ocean's limit); the server checks at startup.
+inline constexpr double kMaxSimTimeS = 1e9;
+
+struct ServerConfig {
+  ListenAddress listen{"0.0.0.0", 7700};         // TCP
+  std::optional<ListenAddress> udp_listen;       // empty = the TCP address and (bound) port
+  std::optional<ListenAddress> metrics_listen = ListenAddress{"127.0.0.1", 9464};  // empty = off
+
+  sim::SceneParams scene;                         // the scene at the epoch (tick 0 onward)
+  std::vector<ScheduleEntry> schedule;            // later scene changes, by tick
+
+  int tick_rate_hz = 30;
+  // Wall-clock time of tick 0: 2026-01-01T00:00:00Z. Not the Unix epoch: the simulation accepts
+  // |t| <= 1e9 s (about 31 years), and t = (now - epoch) would already exceed that.
+  std::int64_t epoch_unix_ms = kDefaultEpochUnixMs;
+  std::vector<std::string> profiles{"mobile", "desktop"};  // names from protocol/profile.hpp
+
+  int max_clients = 64;
+  std::string admin_token_file;                   // empty = admin interface disabled
+  std::string admin_token;                        // read from admin_token_file; never logged
+  std::vector<std::uint8_t> cookie_key;           // empty = a random key per process
+  double idle_timeout_s = 10.0;
+  std::string log_level = "info";
+};
+
+// Limits enforced by validate_server_config; the help text quotes them.
+inline constexpr int kMinTickRateHz = 1;
+inline constexpr int kMaxTickRateHz = 240;
+inline constexpr int kMaxClientsLimit = 100000;
+
+// Empty when the configuration is usable; otherwise one message naming the option (as a flag) and
+// what is allowed. Checks the scene (sim::validate), the schedule, and the server-level options.
+std::string validate_server_config(const ServerConfig& config);
+
+// The schedule as the tick loop uses it: the configured scene, then each entry applied on top of
+// the previous one. Sets `error` (naming the entry and option) when a value does not apply.
+SceneSchedule make_schedule(const ServerConfig& config, std::string& error);
+
+}  // namespace ocean::server

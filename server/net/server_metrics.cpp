@@ -1,0 +1,44 @@
+#include "server_metrics.hpp"
+
+namespace ocean::server {
+
+ServerMetrics::ServerMetrics(MetricsRegistry& registry)
+    : ticks(registry.counter("ocean_ticks_total", "Simulation ticks run.")),
+      ticks_late(registry.counter("ocean_ticks_late_total",
+                                  "Ticks run after the following tick was already due (the loop fell behind).")),
+      ticks_skipped(registry.counter("ocean_ticks_skipped_total",
+                                     "Ticks never run because the loop was too far behind (catch-up policy).")),
+      tick_seconds(registry.summary("ocean_tick_seconds", "Simulation time per tick for all offered profiles.")),
+      encode_seconds(registry.summary("ocean_encode_seconds", "Encoder time per frame.")),
+      frames_dropped(registry.counter("ocean_frames_dropped_total",
+                                      "Computed tick frames dropped because the network side was behind.")),
+      current_tick(registry.gauge("ocean_tick", "Index of the last tick run, counted from the epoch.")),
+      scene_changes(registry.counter("ocean_scene_changes_total", "Scheduled scene changes applied.")),
+      registry_(registry) {}
+
+Counter& ServerMetrics::frames_computed(std::string_view profile) {
+  return registry_.counter("ocean_frames_computed_total", "Frames computed by the simulation, by profile.",
+                           {{"profile", std::string(profile)}});
+}
+
+Gauge& ServerMetrics::clients(std::string_view profile, std::string_view transport) {
+  return registry_.gauge("ocean_clients", "Connected clients by profile and transport.",
+                         {{"profile", std::string(profile)}, {"transport", std::string(transport)}});
+}
+
+Counter& ServerMetrics::frames_sent(std::string_view transport) {
+  return registry_.counter("ocean_frames_sent_total", "Frames sent to clients, by transport.",
+                           {{"transport", std::string(transport)}});
+}
+
+Counter& ServerMetrics::bytes_sent(std::string_view transport) {
+  return registry_.counter("ocean_bytes_sent_total", "Payload bytes sent to clients, by transport.",
+                           {{"transport", std::string(transport)}});
+}
+
+Counter& ServerMetrics::rejects(std::string_view reason) {
+  return registry_.counter("ocean_rejects_total", "Connections and packets refused, by reason.",
+                           {{"reason", std::string(reason)}});
+}
+
+}  // namespace ocean::server

@@ -1,0 +1,36 @@
+// ServerMetrics: the metrics ocean-server exports, by name, so call sites record without string
+// lookups on hot paths. Per-label series (profile, transport, reason) are created on first use.
+#pragma once
+
+#include "metrics.hpp"
+
+#include <string_view>
+
+namespace ocean::server {
+
+class ServerMetrics {
+ public:
+  explicit ServerMetrics(MetricsRegistry& registry);
+
+  MetricsRegistry& registry() { return registry_; }
+
+  Counter& ticks;            // ticks run
+  Counter& ticks_late;       // ticks run after the following tick was already due
+  Counter& ticks_skipped;    // ticks never run (catch-up policy jumped over them)
+  Summary& tick_seconds;     // simulation time per tick, all profiles
+  Summary& encode_seconds;   // encoder time per frame (phase 2)
+  Counter& frames_dropped;   // computed frames the network side had no room for
+  Gauge& current_tick;       // the last tick index run
+  Counter& scene_changes;    // scheduled scene changes applied
+
+  Counter& frames_computed(std::string_view profile);
+  Gauge& clients(std::string_view profile, std::string_view transport);
+  Counter& frames_sent(std::string_view transport);
+  Counter& bytes_sent(std::string_view transport);
+  Counter& rejects(std::string_view reason);
+
+ private:
+  MetricsRegistry& registry_;
+};
+
+}  // namespace ocean::server

@@ -1,0 +1,24 @@
+// TickFrames: what one tick hands from the simulation thread to the network side: the frame of
+// every offered profile, band-limited to the profile's grid, all at the same simulation time.
+#pragma once
+
+#include "frame.hpp"
+#include "profile.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace ocean::server {
+
+struct ProfileFrame {
+  const Profile* profile = nullptr;
+  sim::Frame frame;
+};
+
+struct TickFrames {
+  std::int64_t tick = 0;
+  double time_s = 0.0;
+  std::vector<ProfileFrame> frames;  // in the order of ServerConfig::profiles
+};
+
+}  // namespace ocean::server

@@ -1,0 +1,263 @@
+#include "config_loader.hpp"
+#include "config_options.hpp"
+#include "temp_file.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace ocean::server;
+using ocean::server::test::TempFile;
+using Outcome = ConfigLoadResult::Outcome;
+
+namespace {
+
+ConfigLoadResult load(std::vector<std::string> args) {
+  args.insert(args.begin(), "ocean-server");
+  return load_config(args);
+}
+
+}  // namespace
+
+TEST_CASE("no flags gives the documented defaults", "[config]") {
+  const ConfigLoadResult r = load({});
+  REQUIRE(r.outcome == Outcome::run);
+  CHECK(r.config.listen == ListenAddress{"0.0.0.0", 7700});
+  CHECK_FALSE(r.config.udp_listen);
+  REQUIRE(r.config.metrics_listen);
+  CHECK(*r.config.metrics_listen == ListenAddress{"127.0.0.1", 9464});
+  CHECK(r.config.scene.size_x == 256);
+  CHECK(r.config.tick_rate_hz == 30);
+  CHECK(r.config.epoch_unix_ms == 1767225600000);  // 2026-01-01T00:00:00Z, per Python's datetime
+  CHECK(r.config.profiles == std::vector<std::string>{"mobile", "desktop"});
+}
+
+TEST_CASE("flags set every kind of option", "[config]") {
+  TempFile token("  s3cret\n");
+  const ConfigLoadResult r =
+      load({"--listen", "127.0.0.1:9000", "--udp-listen", "[::1]:9001", "--metrics-listen", "off", "--size", "512",
+            "--patch", "300", "--spectrum", "jonswap", "--spreading", "cos2s", "--wind-speed", "12.5", "--wind-dir",
+            "45", "--fetch", "50000", "--amplitude", "2", "--depth", "40", "--choppiness", "1.5", "--small-wave",
+            "0.1", "--seed", "18446744073709551615", "--tick-rate", "60", "--epoch", "2026-11-21T17:00:00Z",
+            "--profiles", "lite, desktop-choppy", "--max-clients", "3", "--admin-token-file", token.path(),
+            "--idle-timeout", "2.5", "--log-level", "debug"});
+  REQUIRE(r.message == "");
+  REQUIRE(r.outcome == Outcome::run);
+  const ServerConfig& c = r.config;
+  CHECK(c.listen == ListenAddress{"127.0.0.1", 9000});
+  CHECK(*c.udp_listen == ListenAddress{"::1", 9001});
+  CHECK_FALSE(c.metrics_listen);
+  CHECK(c.scene.size_x == 512);
+  CHECK(c.scene.size_z == 512);
+  CHECK(c.scene.patch_x_m == 300.0);
+  CHECK(c.scene.patch_z_m == 300.0);
+  CHECK(c.scene.spectrum == ocean::sim::SpectrumKind::jonswap);
+  CHECK(c.scene.spreading == ocean::sim::SpreadingKind::cos2s);
+  CHECK(c.scene.wind_speed_mps == 12.5);
+  CHECK(c.scene.wind_dir_deg == 45.0);
+  CHECK(c.scene.fetch_m == 50000.0);
+  CHECK(c.scene.amplitude == 2.0);
+  CHECK(c.scene.depth_m == 40.0);
+  CHECK(c.scene.choppiness == 1.5);
+  CHECK(c.scene.small_wave_m == 0.1);
+  CHECK(c.scene.seed == 18446744073709551615ull);
+  CHECK(c.tick_rate_hz == 60);
+  CHECK(c.epoch_unix_ms == 1795280400000);  // from Python's datetime
+  CHECK(c.profiles == std::vector<std::string>{"lite", "desktop-choppy"});
+  CHECK(c.max_clients == 3);
+  CHECK(c.admin_token == "s3cret");
+  CHECK(c.idle_timeout_s == 2.5);
+  CHECK(c.log_level == "debug");
+}
+
+TEST_CASE("--help documents every option", "[config]") {
+  const ConfigLoadResult r = load({"--help"});
+  REQUIRE(r.outcome == Outcome::show_help);
+  for (const ConfigOption& option : config_options()) {
+    INFO(option.name);
+    CHECK(r.message.find("--" + std::string(option.name) + " ") != std::string::npos);
+    CHECK(r.message.find(std::string(option.help)) != std::string::npos);
+  }
+  CHECK(r.message.find("--config") != std::string::npos);
+  CHECK(r.message.find("[[schedule]]") != std::string::npos);
+}
+
+TEST_CASE("a TOML file sets options and flags override it", "[config]") {
+  TempFile file(R"(
+listen = "127.0.0.1:7001"
+wind-speed = 5
+spectrum = "jonswap"
+depth = "deep"
+profiles = ["mobile", "lite"]
+epoch = 2026-11-21T18:00:00.250+01:00
+tick-rate = 60
+)");
+  const ConfigLoadResult from_file = load({"--config", file.path()});
+  REQUIRE(from_file.message == "");
+  CHECK(from_file.config.listen.port == 7001);
+  CHECK(from_file.config.scene.wind_speed_mps == 5.0);
+  CHECK(from_file.config.scene.spectrum == ocean::sim::SpectrumKind::jonswap);
+  CHECK(std::isinf(from_file.config.scene.depth_m));
+  CHECK(from_file.config.profiles == std::vector<std::string>{"mobile", "lite"});
+  CHECK(from_file.config.epoch_unix_ms == 1795280400250);  // same instant as 17:00:00.250Z
+  CHECK(from_file.config.tick_rate_hz == 60);
+
+  const ConfigLoadResult overridden = load({"--wind-speed", "7", "--config", file.path(), "--depth", "30"});
+  REQUIRE(overridden.message == "");
+  CHECK(overridden.config.scene.wind_speed_mps == 7.0);
+  CHECK(overridden.config.scene.depth_m == 30.0);
+  CHECK(overridden.config.listen.port == 7001);  // untouched by flags
+}
+
+TEST_CASE("every kind of bad value is refused with a message naming it", "[config]") {
+  TempFile empty_token("\n  \n");
+  TempFile bad_key("not-hex");
+  struct Case {
+    std::vector<std::string> args;
+    std::vector<std::string> mentions;
+  };
+  const Case cases[] = {
+      {{"--size", "100"}, {"--size", "power of two"}},
+      {{"--size", "abc"}, {"--size", "not an integer"}},
+      {{"--patch", "0"}, {"--patch", "patch_x_m"}},
+      {{"--spectrum", "pierson"}, {"--spectrum", "pierson", "phillips, jonswap"}},
+      {{"--spreading", "flat"}, {"--spreading", "cos2s"}},
+      {{"--wind-speed", "-1"}, {"--wind-speed", "[0, 100]"}},
+      {{"--wind-speed", "nan"}, {"--wind-speed", "finite"}},
+      {{"--wind-speed", "12knots"}, {"--wind-speed", "not a number"}},
+      {{"--wind-dir", "east"}, {"--wind-dir", "not a number"}},
+      {{"--fetch", "0"}, {"--fetch", "fetch_m"}},
+      {{"--amplitude", "-2"}, {"--amplitude"}},
+      {{"--depth", "shallow"}, {"--depth", "deep"}},
+      {{"--depth", "-3"}, {"--depth", "depth_m"}},
+      {{"--choppiness", "-1"}, {"--choppiness"}},
+      {{"--small-wave", "-1"}, {"--small-wave"}},
+      {{"--seed", "-1"}, {"--seed", "not an integer"}},
+      {{"--listen", "1.2.3.4:70000"}, {"--listen", "0..65535"}},
+      {{"--listen", "localhost:80"}, {"--listen", "not an IPv4 or IPv6 literal"}},
+      {{"--listen", "1.2.3.4"}, {"--listen", "ADDR:PORT"}},
+      {{"--udp-listen", "1.2.3.4:x"}, {"--udp-listen", "port"}},
+      {{"--metrics-listen", "on"}, {"--metrics-listen", "ADDR:PORT"}},
+      {{"--tick-rate", "0"}, {"--tick-rate", "1..240"}},
+      {{"--tick-rate", "241"}, {"--tick-rate", "1..240"}},
+      {{"--tick-rate", "20"}, {"--tick-rate", "mobile", "multiple"}},
+      {{"--epoch", "yesterday"}, {"--epoch", "RFC 3339"}},
+      {{"--epoch", "2026-02-30T00:00:00Z"}, {"--epoch", "RFC 3339"}},
+      {{"--profiles", "mobile,tablet"}, {"--profiles", "tablet", "known: mobile"}},
+      {{"--profiles", "mobile,mobile"}, {"--profiles", "twice"}},
+      {{"--profiles", ","}, {"--profiles", "at least one"}},
+      {{"--profiles", "desktop", "--size", "128"}, {"--profiles", "desktop", "--size 128"}},
+      {{"--max-clients", "0"}, {"--max-clients", "1.."}},
+      {{"--admin-token-file", "/nonexistent/token"}, {"--admin-token-file", "cannot be read"}},
+      {{"--admin-token-file", empty_token.path()}, {"--admin-token-file", "empty"}},
+      {{"--cookie-key-file", bad_key.path()}, {"--cookie-key-file", "64 hex digits"}},
+      {{"--idle-timeout", "0"}, {"--idle-timeout", "(0, 3600]"}},
+      {{"--log-level", "loud"}, {"--log-level", "trace"}},
+      {{"--config", "/nonexistent/ocean.toml"}, {"--config", "cannot be read"}},
+      {{"--bogus", "1"}, {"--bogus"}},
+  };
+  for (const Case& c : cases) {
+    const ConfigLoadResult r = load(c.args);
+    INFO(c.args.front() << " -> " << r.message);
+    CHECK(r.outcome == Outcome::error);
+    for (const std::string& mention : c.mentions) CHECK(r.message.find(mention) != std::string::npos);
+  }
+}
+
+TEST_CASE("a readable cookie key file sets the key", "[config]") {
+  TempFile key("00112233445566778899aabbccddeeff00112233445566778899AABBCCDDEEFF\n");
+  const ConfigLoadResult r = load({"--cookie-key-file", key.path()});
+  REQUIRE(r.message == "");
+  REQUIRE(r.config.cookie_key.size() == 32);
+  CHECK(r.config.cookie_key[0] == 0x00);
+  CHECK(r.config.cookie_key[15] == 0xff);
+  CHECK(r.config.cookie_key[31] == 0xff);
+}
+
+TEST_CASE("config file errors name the key and line", "[config]") {
+  struct Case {
+    std::string toml;
+    std::vector<std::string> mentions;
+  };
+  const Case cases[] = {
+      {"wind-speed = 5\nwindspeed = 6\n", {"unknown key 'windspeed'", ":2"}},
+      {"wind-speed = \"fast\"\n", {"wind-speed", "must be a number", "a string"}},
+      {"size = 12.5\n", {"size", "must be an integer"}},
+      {"profiles = [\"mobile\", 3]\n", {"profiles", "array of strings"}},
+      {"listen = 7700\n", {"listen", "must be a string"}},
+      {"wind-speed = 5\nwind-speed = 6\n", {":2"}},  // TOML forbids redefinition
+      {"[scene]\nwind-speed = 5\n", {"unknown key 'scene'"}},
+      {"tick-rate = 7\n", {"--tick-rate 7", "mobile"}},
+      {"config = \"other.toml\"\n", {"unknown key 'config'"}},
+  };
+  for (const Case& c : cases) {
+    TempFile file(c.toml);
+    const ConfigLoadResult r = load({"--config", file.path()});
+    INFO(c.toml << " -> " << r.message);
+    CHECK(r.outcome == Outcome::error);
+    for (const std::string& mention : c.mentions) CHECK(r.message.find(mention) != std::string::npos);
+  }
+}
+
+TEST_CASE("scheduled scene changes build on each other and on the flags", "[config][schedule]") {
+  TempFile file(R"(
+wind-speed = 10
+[[schedule]]
+tick = 100
+wind-speed = 20
+[[schedule]]
+tick = 200
+wind-dir = 90
+spectrum = "jonswap"
+)");
+  const ConfigLoadResult r = load({"--config", file.path(), "--amplitude", "2"});
+  REQUIRE(r.message == "");
+  REQUIRE(r.config.schedule.size() == 2);
+  std::string error;
+  const SceneSchedule schedule = make_schedule(r.config, error);
+  REQUIRE(error == "");
+  CHECK(schedule.scene_at(99).wind_speed_mps == 10.0);
+  CHECK(schedule.scene_at(-5).wind_speed_mps == 10.0);
+  CHECK(schedule.scene_at(100).wind_speed_mps == 20.0);
+  CHECK(schedule.scene_at(100).amplitude == 2.0);  // the flag reaches scheduled scenes too
+  CHECK(schedule.scene_at(100).wind_dir_deg == 0.0);
+  CHECK(schedule.scene_at(199).spectrum == ocean::sim::SpectrumKind::phillips);
+  CHECK(schedule.scene_at(200).wind_speed_mps == 20.0);
+  CHECK(schedule.scene_at(200).wind_dir_deg == 90.0);
+  CHECK(schedule.scene_at(200).spectrum == ocean::sim::SpectrumKind::jonswap);
+  CHECK(schedule.scene_at(1'000'000'000'000).amplitude == 2.0);
+}
+
+TEST_CASE("bad schedules are refused naming the entry", "[config][schedule]") {
+  struct Case {
+    std::string toml;
+    std::vector<std::string> mentions;
+  };
+  const Case cases[] = {
+      {"[[schedule]]\ntick = 10\nwind-speed = 5\n[[schedule]]\ntick = 10\nwind-speed = 6\n",
+       {"schedule entry 2", "strictly"}},
+      {"[[schedule]]\ntick = 10\nsize = 512\n", {"schedule entry 1", "'size' cannot be scheduled", "wind-speed"}},
+      {"[[schedule]]\nwind-speed = 5\n", {"schedule entry 1", "tick = T"}},
+      {"[[schedule]]\ntick = \"soon\"\nwind-speed = 5\n", {"schedule entry 1", "tick = T"}},
+      {"[[schedule]]\ntick = 10\nwind-speed = \"gale\"\n", {"schedule entry 1", "wind-speed", "must be a number"}},
+      {"[[schedule]]\ntick = 10\nwind-speed = 500\n", {"schedule entry 1", "tick 10", "wind_speed_mps"}},
+      {"schedule = 3\n", {"'schedule' must be an array of tables"}},
+  };
+  for (const Case& c : cases) {
+    TempFile file(c.toml);
+    const ConfigLoadResult r = load({"--config", file.path()});
+    INFO(c.toml << " -> " << r.message);
+    CHECK(r.outcome == Outcome::error);
+    for (const std::string& mention : c.mentions) CHECK(r.message.find(mention) != std::string::npos);
+  }
+}
+
+TEST_CASE("describe_config shows options but never the admin token", "[config]") {
+  TempFile token("top-secret-token");
+  const ConfigLoadResult r = load({"--admin-token-file", token.path(), "--wind-speed", "11"});
+  REQUIRE(r.outcome == Outcome::run);
+  const std::string text = describe_config(r.config);
+  CHECK(text.find("wind-speed=11") != std::string::npos);
+  CHECK(text.find("profiles=mobile,desktop") != std::string::npos);
+  CHECK(text.find("top-secret-token") == std::string::npos);
+}

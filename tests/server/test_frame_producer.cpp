@@ -1,0 +1,88 @@
+#include "frame_producer.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace ocean::server;
+
+namespace {
+
+ocean::sim::SceneParams small_scene() {
+  ocean::sim::SceneParams scene;
+  scene.size_x = scene.size_z = 64;
+  scene.patch_x_m = scene.patch_z_m = 64.0;
+  return scene;
+}
+
+std::vector<const ocean::Profile*> profiles(std::initializer_list<const char*> names) {
+  std::vector<const ocean::Profile*> out;
+  for (const char* name : names) out.push_back(ocean::find_profile(std::string_view(name)));
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every offered profile gets its own band-limited frame", "[frame_producer]") {
+  FrameProducer producer(SceneSchedule(small_scene(), {}), profiles({"lite", "mobile"}));
+  const auto frames = producer.produce(42, 1.4);
+  CHECK(frames->tick == 42);
+  CHECK(frames->time_s == 1.4);
+  REQUIRE(frames->frames.size() == 2);
+  CHECK(frames->frames[0].profile->name == "lite");
+  CHECK(frames->frames[0].frame.n_x == 32);
+  CHECK(frames->frames[0].frame.height.size() == 32u * 32u);
+  CHECK(frames->frames[0].frame.slope_x.size() == 32u * 32u);  // lite streams normals
+  CHECK(frames->frames[1].frame.n_x == 64);
+  CHECK(frames->frames[1].frame.time_s == 1.4);
+}
+
+TEST_CASE("two producers with one config give identical frames for a tick", "[frame_producer]") {
+  FrameProducer a(SceneSchedule(small_scene(), {}), profiles({"mobile"}));
+  FrameProducer b(SceneSchedule(small_scene(), {}), profiles({"mobile"}));
+  (void)b.produce(7, 7.0 / 30);  // b has history a lacks: it must not matter
+  const auto fa = a.produce(1000, 1000.0 / 30);
+  const auto fb = b.produce(1000, 1000.0 / 30);
+  CHECK(fa->frames[0].frame.height == fb->frames[0].frame.height);
+  CHECK(fa->frames[0].frame.slope_z == fb->frames[0].frame.slope_z);
+  const auto later = a.produce(1001, 1001.0 / 30);
+  CHECK(later->frames[0].frame.height != fb->frames[0].frame.height);
+}
+
+TEST_CASE("results held by the network side are never overwritten", "[frame_producer]") {
+  FrameProducer producer(SceneSchedule(small_scene(), {}), profiles({"mobile"}));
+  const auto held = producer.produce(1, 1.0 / 30);
+  const std::vector<float> copy = held->frames[0].frame.height;
+  for (int tick = 2; tick < 20; ++tick) (void)producer.produce(tick, tick / 30.0);
+  CHECK(held->tick == 1);
+  CHECK(held->frames[0].frame.height == copy);
+}
+
+TEST_CASE("released results are reused without reallocating", "[frame_producer]") {
+  FrameProducer producer(SceneSchedule(small_scene(), {}), profiles({"mobile"}));
+  auto first = producer.produce(1, 1.0 / 30);
+  const TickFrames* address = first.get();
+  const float* heights = first->frames[0].frame.height.data();
+  first.reset();  // the network side is done with it
+  const auto second = producer.produce(2, 2.0 / 30);
+  CHECK(second.get() == address);
+  CHECK(second->frames[0].frame.height.data() == heights);
+  CHECK(second->tick == 2);
+}
+
+TEST_CASE("a scheduled scene takes over from its tick", "[frame_producer][schedule]") {
+  ocean::sim::SceneParams calm = small_scene();
+  ocean::sim::SceneParams windy = calm;
+  windy.wind_speed_mps = 20.0;
+  FrameProducer scheduled(SceneSchedule(calm, {{100, windy}}), profiles({"mobile"}));
+  FrameProducer calm_only(SceneSchedule(calm, {}), profiles({"mobile"}));
+  FrameProducer windy_only(SceneSchedule(windy, {}), profiles({"mobile"}));
+
+  const double t99 = 99 / 30.0, t100 = 100 / 30.0;
+  CHECK(scheduled.produce(99, t99)->frames[0].frame.height == calm_only.produce(99, t99)->frames[0].frame.height);
+  CHECK_FALSE(scheduled.scene_changed());
+  CHECK(scheduled.produce(100, t100)->frames[0].frame.height ==
+        windy_only.produce(100, t100)->frames[0].frame.height);
+  CHECK(scheduled.scene_changed());
+  CHECK(scheduled.scene().wind_speed_mps == 20.0);
+  (void)scheduled.produce(101, 101 / 30.0);
+  CHECK_FALSE(scheduled.scene_changed());
+}
