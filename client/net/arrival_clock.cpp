@@ -1,0 +1,27 @@
+// ArrivalClock: sliding-window minimum of arrival offsets.
+#include "arrival_clock.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace ocean::client {
+
+ArrivalClock::ArrivalClock(double tick_period_s, std::size_t window) : period_(tick_period_s), offsets_(window) {
+  if (!(tick_period_s > 0.0)) throw std::invalid_argument("ArrivalClock: tick_period_s must be > 0");
+  if (window == 0) throw std::invalid_argument("ArrivalClock: window must be >= 1 arrival");
+}
+
+void ArrivalClock::observe(std::uint32_t tick, double arrival_s) {
+  offsets_[next_] = arrival_s - static_cast<double>(tick) * period_;
+  next_ = (next_ + 1) % offsets_.size();
+  filled_ = std::min(filled_ + 1, offsets_.size());
+  offset_ = *std::min_element(offsets_.begin(), offsets_.begin() + static_cast<std::ptrdiff_t>(filled_));
+}
+
+void ArrivalClock::reset() {
+  next_ = 0;
+  filled_ = 0;
+  offset_.reset();
+}
+
+}  // namespace ocean::client

@@ -1,0 +1,33 @@
+// ArrivalClock: estimates where the server's tick clock is on the client's clock from frame
+// arrivals. Each arrival gives offset = arrival - tick * period; the minimum over a sliding window
+// is the least-delayed frame, which rides out jitter (queueing only ever adds delay). Pure.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace ocean::client {
+
+class ArrivalClock {
+ public:
+  // window: how many recent arrivals the minimum is taken over (>= 1).
+  ArrivalClock(double tick_period_s, std::size_t window);
+
+  void observe(std::uint32_t tick, double arrival_s);
+  // Client time of tick 0 (the server clock offset plus the fastest one-way delay); nullopt
+  // before the first arrival.
+  std::optional<double> offset_s() const { return offset_; }
+  double tick_period_s() const { return period_; }
+  void reset();
+
+ private:
+  double period_;
+  std::vector<double> offsets_;  // ring of the last `window` samples
+  std::size_t next_ = 0;
+  std::size_t filled_ = 0;
+  std::optional<double> offset_;
+};
+
+}  // namespace ocean::client

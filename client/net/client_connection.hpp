@@ -1,0 +1,118 @@
+// ClientConnection: the Asio edge of one client - TCP connect and framed reads, the UDP socket
+// from the Welcome, one steady_timer driving its ClientSession, optional PacketLinks on every
+// direction, and reconnection with backoff. Many share one io_context and one thread.
+#pragma once
+
+#include <asio/io_context.hpp>
+#include <asio/ip/tcp.hpp>
+#include <asio/ip/udp.hpp>
+#include <asio/steady_timer.hpp>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "client_session.hpp"
+#include "packet_link.hpp"
+#include "tcp_framer.hpp"
+
+namespace ocean::client {
+
+struct ClientConnectionConfig {
+  std::string host = "127.0.0.1";
+  std::string port = "7100";  // the server's TCP port
+  ClientSessionConfig session;
+  bool reconnect = true;
+  double reconnect_min_s = 0.25;  // first retry delay; doubles per failure up to reconnect_max_s
+  double reconnect_max_s = 5.0;
+  std::size_t read_buffer_bytes = 16 * 1024;
+};
+
+struct ConnectionCounters {
+  std::uint64_t connect_attempts = 0;
+  std::uint64_t connects = 0;     // TCP connections established (each starts a new session)
+  std::uint64_t disconnects = 0;
+  std::uint64_t udp_receive_errors = 0;
+  std::string last_close_reason;
+};
+
+class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
+ public:
+  using FrameCallback = std::function<void(const codec::ReconstructedFrame&, std::uint32_t tick, double arrival_s)>;
+  // Called when a session ends, before it is replaced, so its stats can be read.
+  using SessionEndCallback = std::function<void(const ClientSession&, const std::string& why)>;
+
+  static std::shared_ptr<ClientConnection> create(asio::io_context& io, ClientConnectionConfig config,
+                                                  FrameCallback on_frame, ConnectionLinks links = {});
+
+  void start();
+  // Sends Bye{client_quit} (when no TCP link sits in between), closes, and stops reconnecting.
+  void stop();
+
+  void set_on_session_end(SessionEndCallback callback) { on_session_end_ = std::move(callback); }
+  void set_on_welcome(std::function<void(const protocol::Welcome&)> callback) { on_welcome_ = std::move(callback); }
+
+  // The current (or, between connections, the last) session; null before the first connect.
+  const ClientSession* session() const { return session_.get(); }
+  const ConnectionCounters& counters() const { return counters_; }
+  const ConnectionLinks& links() const { return links_; }
+  bool connected() const { return connected_; }
+
+  // The clock every session and link of this library runs on: steady_clock in seconds.
+  static double now_s();
+
+  ClientConnection(asio::io_context& io, ClientConnectionConfig config, FrameCallback on_frame,
+                   ConnectionLinks links);  // use create()
+
+ private:
+  void do_resolve();
+  void on_connected();
+  void do_read();
+  void on_tcp_bytes(std::size_t n, double now);
+  void do_write();
+  void open_udp(const protocol::Welcome& welcome);
+  void do_udp_read();
+  void send_tcp(std::span<const std::uint8_t> bytes);
+  void send_udp(std::span<const std::uint8_t> bytes);
+  void write_tcp(std::vector<std::uint8_t> bytes);
+  void write_udp(std::span<const std::uint8_t> bytes);
+  void pump_links(double now);
+  bool links_idle() const;
+  void arm_timer();
+  void on_timer();
+  void teardown(const std::string& why);
+  ClientSessionEvents session_events();
+
+  asio::io_context& io_;
+  ClientConnectionConfig config_;
+  FrameCallback on_frame_;
+  ConnectionLinks links_;
+  SessionEndCallback on_session_end_;
+  std::function<void(const protocol::Welcome&)> on_welcome_;
+
+  asio::ip::tcp::resolver resolver_;
+  asio::ip::tcp::socket tcp_;
+  asio::ip::udp::socket udp_;
+  asio::steady_timer timer_;
+  protocol::TcpFramer framer_;
+  std::vector<std::uint8_t> read_buffer_;
+  std::vector<std::uint8_t> udp_buffer_;
+  std::deque<std::vector<std::uint8_t>> write_queue_;
+  bool writing_ = false;
+
+  std::unique_ptr<ClientSession> session_;
+  ConnectionCounters counters_;
+  std::uint64_t generation_ = 0;  // bumped per connection; completions of an older one are ignored
+  bool connected_ = false;
+  bool down_ = false;  // torn down since the last connect attempt
+  bool stopped_ = false;
+  bool waiting_reconnect_ = false;
+  double reconnect_at_ = 0.0;
+  double backoff_s_ = 0.0;
+  bool timer_armed_ = false;
+  double timer_due_ = 0.0;
+};
+
+}  // namespace ocean::client

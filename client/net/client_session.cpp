@@ -1,0 +1,390 @@
+// ClientSession: message handling and timers (PROTOCOL.md sections 5-7).
+#include "client_session.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "ack_window.hpp"
+#include "message_builders.hpp"
+#include "message_readers.hpp"
+#include "stream_config.hpp"
+#include "wire_limits.hpp"
+
+namespace ocean::client {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+codec::StreamConfig stream_config_of(const protocol::StreamParams& s) {
+  codec::StreamConfig c;
+  c.profile_id = s.profile_id;
+  c.grid = s.grid;
+  c.patch_x_m = s.patch_x_m;
+  c.patch_z_m = s.patch_z_m;
+  c.gravity_mps2 = s.gravity_mps2;
+  c.depth_m = s.depth_m;
+  c.rate_hz = s.rate_hz;
+  c.height_step_m = s.height_step_m;
+  c.slope_step = s.slope_step;
+  c.disp_step_m = s.disp_step_m;
+  c.normals = s.normals;
+  c.choppy = s.choppy;
+  return c;
+}
+
+// Refusals that mean the payload itself is broken (not merely late, duplicated or baseline-less).
+bool is_decode_error(codec::ChunkError e) {
+  switch (e) {
+    case codec::ChunkError::truncated:
+    case codec::ChunkError::oversized:
+    case codec::ChunkError::unknown_version:
+    case codec::ChunkError::bad_flags:
+    case codec::ChunkError::wrong_dimensions:
+    case codec::ChunkError::bad_range:
+    case codec::ChunkError::checksum_mismatch:
+    case codec::ChunkError::bad_value:
+    case codec::ChunkError::coverage_mismatch:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+ClientSession::ClientSession(ClientSessionConfig config, ClientSessionEvents events)
+    : config_(std::move(config)), events_(std::move(events)), max_message_bytes_(protocol::kDefaultMaxMessageBytes) {}
+
+void ClientSession::start(double now) {
+  if (state_ != State::idle) return;
+  state_ = State::awaiting_welcome;
+  last_rx_ = now;
+  protocol::Hello hello;
+  hello.profile_id = config_.profile_id;
+  hello.bandwidth_bps = config_.bandwidth_bps;
+  hello.transport = config_.transport;
+  hello.client_name = config_.client_name.substr(0, protocol::kMaxClientNameBytes);
+  send(protocol::encode(hello), wire::Transport::tcp);
+}
+
+std::span<const std::uint8_t> ClientSession::aligned(std::span<const std::uint8_t> bytes) {
+  if (reinterpret_cast<std::uintptr_t>(bytes.data()) % 8 == 0) return bytes;
+  scratch_.assign(bytes.begin(), bytes.end());
+  return scratch_;
+}
+
+void ClientSession::on_tcp_message(std::span<const std::uint8_t> bytes, double now) {
+  if (state_ == State::idle || state_ == State::closed) return;
+  stats_.tcp.bytes_in += bytes.size();
+  const protocol::Verified result =
+      protocol::verify_message(aligned(bytes), {protocol::Sender::server, wire::Transport::tcp, max_message_bytes_});
+  if (!result) return reject(result, wire::Transport::tcp, now);
+  ++stats_.tcp.messages_in;
+  last_rx_ = now;
+  handle(*result.message, wire::Transport::tcp, now);
+}
+
+void ClientSession::on_udp_datagram(std::span<const std::uint8_t> bytes, double now) {
+  if (state_ != State::streaming) return;
+  stats_.udp.bytes_in += bytes.size();
+  const protocol::Verified result =
+      protocol::verify_message(aligned(bytes), {protocol::Sender::server, wire::Transport::udp, protocol::kMaxDatagram});
+  if (!result) return reject(result, wire::Transport::udp, now);
+  ++stats_.udp.messages_in;
+  last_rx_ = now;
+  last_udp_rx_ = now;
+  handle(*result.message, wire::Transport::udp, now);
+}
+
+void ClientSession::reject(const protocol::Verified& result, wire::Transport transport, double /*now*/) {
+  count_rejection(result.reason);
+  if (transport == wire::Transport::tcp) {
+    ++stats_.tcp.rejected;
+    if (config_.close_on_bad_tcp_message) close("bad TCP message from the server: " + protocol::describe(result));
+  } else {
+    ++stats_.udp.rejected;  // UDP: dropped, counted, nothing else (PROTOCOL.md 4)
+  }
+}
+
+// A verified message that is well-formed but out of place here (or a chunk of another profile):
+// counted with its reason, changes nothing.
+void ClientSession::count_rejection(protocol::Reason reason) {
+  ++stats_.rejected_by_reason[static_cast<std::size_t>(reason)];
+}
+
+void ClientSession::handle(const wire::Message& message, wire::Transport transport, double now) {
+  switch (message.body_type()) {
+    case wire::Body::Welcome:
+      if (state_ != State::awaiting_welcome) return count_rejection(protocol::Reason::unexpected_message);
+      return handle_welcome(protocol::read(*message.body_as_Welcome()), now);
+    case wire::Body::UdpReady: {
+      if (state_ != State::streaming || transport != wire::Transport::udp || path_ == Path::tcp) return count_rejection(protocol::Reason::unexpected_message);
+      if (message.body_as_UdpReady()->session_id() != welcome_->session_id) {
+        return count_rejection(protocol::Reason::bad_session);
+      }
+      path_ = Path::udp;  // a repeated UdpReady changes nothing
+      return;
+    }
+    case wire::Body::FrameChunk:
+      if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
+      return handle_chunk(*message.body_as_FrameChunk(), now);
+    case wire::Body::SceneUpdate: {
+      if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
+      const protocol::SceneUpdate update = protocol::read(*message.body_as_SceneUpdate());
+      scene_ = update.scene;
+      scene_effective_tick_ = update.effective_tick;
+      if (events_.on_scene_update) events_.on_scene_update(update);
+      return;
+    }
+    case wire::Body::Pong:
+      if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
+      return handle_pong(protocol::read(*message.body_as_Pong()), now);
+    case wire::Body::Error: {
+      ++stats_.errors_received;
+      const protocol::Error error = protocol::read(*message.body_as_Error());
+      const std::string what = std::string(protocol::to_string(error.code)) + ": " + error.text;
+      last_error_ = what;
+      // Before the Welcome an Error is a refusal and the server closes; after it, a refused request.
+      if (state_ == State::awaiting_welcome) close("server refused the Hello: " + what);
+      return;
+    }
+    case wire::Body::Bye: {
+      const protocol::Bye bye = protocol::read(*message.body_as_Bye());
+      return close(std::string("server said Bye (") + wire::EnumNameByeReason(bye.reason) + "): " + bye.text);
+    }
+    default:
+      return count_rejection(protocol::Reason::unexpected_message);  // the verifier already refuses client-only types; kept for safety
+  }
+}
+
+void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now) {
+  const codec::StreamConfig config = stream_config_of(welcome.stream);
+  if (const std::string problem = codec::validate(config); !problem.empty()) {
+    ++stats_.rejected_by_reason[static_cast<std::size_t>(protocol::Reason::out_of_range)];
+    return close("Welcome.stream is not decodable by this client's codec: " + problem);
+  }
+  codec::DecoderOptions options;
+  // Keyframes on TCP may use chunks up to the session's message limit.
+  options.max_payload = std::max(codec::kDefaultMaxPayload, protocol::max_chunk_payload(welcome.max_message_bytes));
+  options.history_ticks = protocol::kAckWindowTicks;
+  try {
+    decoder_ = std::make_unique<codec::Decoder>(config, options);
+  } catch (const std::invalid_argument& e) {
+    return close(std::string("cannot build the decoder for Welcome.stream: ") + e.what());
+  }
+  welcome_ = welcome;
+  scene_ = welcome.scene;
+  scene_effective_tick_ = welcome.current_tick;
+  max_message_bytes_ = welcome.max_message_bytes;
+  state_ = State::streaming;
+  welcome_at_ = now;
+  last_progress_ = now;
+  last_udp_rx_ = now;
+  next_ack_ = now + config_.ack_interval_s;
+  if (events_.on_welcome) events_.on_welcome(welcome);
+  if (state_ != State::streaming) return;  // the owner closed us from the callback
+  if (config_.transport == wire::Transport::udp && welcome.udp_port != 0) {
+    path_ = Path::udp_proving;
+    udp_proof_started_ = now;
+    send_udp_hello(now);
+  } else {
+    path_ = Path::tcp;
+  }
+  send_ping(now);
+}
+
+void ClientSession::handle_chunk(const wire::FrameChunk& chunk, double now) {
+  ++stats_.chunks_received;
+  if (chunk.profile_id() != welcome_->stream.profile_id) {
+    return count_rejection(protocol::Reason::unknown_profile);
+  }
+  codec::ChunkView view;
+  view.tick = chunk.tick();
+  view.baseline = chunk.baseline();
+  view.key = chunk.key();
+  view.index = chunk.index();
+  view.count = chunk.count();
+  if (const auto* payload = chunk.payload()) view.payload = {payload->data(), payload->size()};
+  const bool was_complete = decoder_->is_complete(view.tick);
+  const codec::ChunkError error = decoder_->accept(view);
+  if (error != codec::ChunkError::ok) {
+    ++stats_.chunks_rejected_by_codec[static_cast<std::size_t>(error)];
+    last_chunk_error_ = error;
+    if (is_decode_error(error)) request_keyframe(wire::KeyframeReason::decode_error, now);
+    return;
+  }
+  ++stats_.chunks_accepted;
+  if (was_complete || !decoder_->is_complete(view.tick)) return;
+  ++stats_.frames_complete;
+  if (view.key) ++stats_.keyframes_complete;
+  if (!stats_.latest_tick || view.tick > *stats_.latest_tick) stats_.latest_tick = view.tick;
+  last_progress_ = now;
+  ack_pending_ = true;
+  const codec::ReconstructedFrame* frame = decoder_->latest();
+  if (frame && frame->tick == view.tick && frame->complete) {
+    ++stats_.frames_delivered;
+    if (events_.on_frame) events_.on_frame(*frame, view.tick);
+  }
+  if (state_ == State::streaming) send_ack(now);
+}
+
+void ClientSession::handle_pong(const protocol::Pong& pong, double now) {
+  ++stats_.pongs_received;
+  stats_.last_pong_server_tick = pong.server_tick;
+  const double rtt = now - static_cast<double>(pong.client_time_us) * 1e-6;
+  if (!(rtt >= 0.0 && rtt < 60.0)) return;  // not a Ping of ours
+  stats_.rtt_s = rtt;
+  stats_.rtt_smoothed_s = stats_.rtt_smoothed_s == 0.0 ? rtt : stats_.rtt_smoothed_s + (rtt - stats_.rtt_smoothed_s) / 8.0;
+}
+
+wire::Transport ClientSession::control_path() const {
+  return path_ == Path::udp ? wire::Transport::udp : wire::Transport::tcp;
+}
+
+void ClientSession::send(const protocol::Bytes& bytes, wire::Transport transport) {
+  if (transport == wire::Transport::tcp) {
+    ++stats_.tcp.messages_out;
+    stats_.tcp.bytes_out += bytes.size();
+    if (events_.send_tcp) events_.send_tcp(bytes);
+  } else {
+    if (!protocol::fits_datagram(bytes)) return;  // never happens for the messages a client sends
+    ++stats_.udp.messages_out;
+    stats_.udp.bytes_out += bytes.size();
+    if (events_.send_udp) events_.send_udp(bytes);
+  }
+}
+
+void ClientSession::send_ack(double now) {
+  const std::vector<std::uint32_t> ticks = decoder_->complete_ticks();
+  const auto window = protocol::ack_window(ticks);
+  next_ack_ = now + config_.ack_interval_s;
+  if (!window) return;
+  protocol::Ack ack;
+  ack.session_id = welcome_->session_id;
+  if (control_path() == wire::Transport::udp) ack.cookie = welcome_->udp_cookie;
+  ack.latest_tick = window->latest_tick;
+  ack.ack_bits = window->bits;
+  send(protocol::encode(ack), control_path());
+  ++stats_.acks_sent;
+  ack_pending_ = false;
+}
+
+void ClientSession::send_udp_hello(double now) {
+  protocol::UdpHello hello;
+  hello.session_id = welcome_->session_id;
+  hello.cookie = welcome_->udp_cookie;
+  send(protocol::encode(hello), wire::Transport::udp);
+  ++stats_.udp_hellos_sent;
+  next_udp_hello_ = now + config_.udp_hello_interval_s;
+}
+
+void ClientSession::send_ping(double now) {
+  protocol::Ping ping;
+  ping.session_id = welcome_->session_id;
+  if (control_path() == wire::Transport::udp) ping.cookie = welcome_->udp_cookie;
+  ping.seq = ++ping_seq_;
+  ping.client_time_us = static_cast<std::uint64_t>(std::max(0.0, now) * 1e6);
+  send(protocol::encode(ping), control_path());
+  ++stats_.pings_sent;
+  next_ping_ = now + config_.ping_interval_s;
+}
+
+void ClientSession::request_keyframe(wire::KeyframeReason reason, double now) {
+  if (now - last_keyframe_request_ < config_.keyframe_retry_s) return;
+  last_keyframe_request_ = now;
+  protocol::KeyframeRequest request;
+  request.session_id = welcome_->session_id;
+  request.reason = reason;
+  send(protocol::encode(request), wire::Transport::tcp);  // keyframes come on TCP; ask there reliably
+  ++stats_.keyframe_requests_sent;
+}
+
+void ClientSession::fall_back_to_tcp(double now) {
+  send(protocol::encode(protocol::SetTransport{wire::Transport::tcp}), wire::Transport::tcp);
+  ++stats_.transport_fallbacks;
+  path_ = Path::tcp;
+  last_progress_ = std::max(last_progress_, now);  // the server answers with a keyframe on TCP
+}
+
+void ClientSession::update(double now) {
+  if (state_ == State::awaiting_welcome && now - last_rx_ >= config_.idle_timeout_s)
+    return close("no Welcome within idle_timeout_s");
+  if (state_ != State::streaming) return;
+  if (now - last_rx_ >= config_.idle_timeout_s) return close("the server was silent for idle_timeout_s");
+
+  if (path_ == Path::udp_proving) {
+    if (now - udp_proof_started_ >= config_.udp_proof_timeout_s)
+      fall_back_to_tcp(now);
+    else if (now >= next_udp_hello_)
+      send_udp_hello(now);
+  } else if (path_ == Path::udp && now - last_udp_rx_ >= config_.udp_silence_timeout_s) {
+    fall_back_to_tcp(now);
+  }
+
+  if (now >= next_ack_) {
+    const bool live = now - last_progress_ < 1.0;  // frames still completing: keep acking
+    if (decoder_->newest_complete() && (ack_pending_ || live))
+      send_ack(now);
+    else
+      next_ack_ = now + config_.ack_interval_s;
+  }
+  if (now >= next_ping_) send_ping(now);
+
+  if (!decoder_->newest_complete()) {
+    if (now - welcome_at_ >= config_.startup_keyframe_after_s) request_keyframe(wire::KeyframeReason::startup, now);
+  } else if (now - last_progress_ >= config_.stuck_ticks * welcome_->tick_period_s) {
+    request_keyframe(last_chunk_error_ == codec::ChunkError::unknown_baseline ? wire::KeyframeReason::lost_baseline
+                                                                              : wire::KeyframeReason::incomplete_frame,
+                     now);
+  }
+}
+
+double ClientSession::next_due() const {
+  if (state_ == State::awaiting_welcome) return last_rx_ + config_.idle_timeout_s;
+  if (state_ != State::streaming) return kInfinity;
+  double due = std::min({last_rx_ + config_.idle_timeout_s, next_ack_, next_ping_});
+  if (path_ == Path::udp_proving)
+    due = std::min({due, next_udp_hello_, udp_proof_started_ + config_.udp_proof_timeout_s});
+  else if (path_ == Path::udp)
+    due = std::min(due, last_udp_rx_ + config_.udp_silence_timeout_s);
+  const double keyframe_at = decoder_->newest_complete()
+                                 ? last_progress_ + config_.stuck_ticks * welcome_->tick_period_s
+                                 : welcome_at_ + config_.startup_keyframe_after_s;
+  return std::min(due, std::max(keyframe_at, last_keyframe_request_ + config_.keyframe_retry_s));
+}
+
+void ClientSession::quit(double /*now*/) {
+  if (state_ == State::closed) return;
+  if (state_ != State::idle) send(protocol::encode(protocol::Bye{wire::ByeReason::client_quit, "client quit"}), wire::Transport::tcp);
+  close("client quit");
+}
+
+void ClientSession::close(const std::string& why) {
+  if (state_ == State::closed) return;
+  state_ = State::closed;
+  close_reason_ = why;
+  if (events_.on_closed) events_.on_closed(why);
+}
+
+std::string_view to_string(ClientSession::State state) {
+  switch (state) {
+    case ClientSession::State::idle: return "idle";
+    case ClientSession::State::awaiting_welcome: return "awaiting_welcome";
+    case ClientSession::State::streaming: return "streaming";
+    case ClientSession::State::closed: return "closed";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(ClientSession::Path path) {
+  switch (path) {
+    case ClientSession::Path::tcp: return "tcp";
+    case ClientSession::Path::udp_proving: return "udp_proving";
+    case ClientSession::Path::udp: return "udp";
+  }
+  return "unknown";
+}
+
+}  // namespace ocean::client

@@ -1,0 +1,115 @@
+// ClientSession: the client's side of PROTOCOL.md as a pure state machine (netcode/yojimbo style):
+// bytes and the time come in as arguments, bytes go out through callbacks; no sockets, no clocks.
+// It owns the handshake, UDP proof and TCP fallback, the codec Decoder, acks, keyframe requests, pings.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "client_session_config.hpp"
+#include "client_stats.hpp"
+#include "decoder.hpp"
+#include "message_types.hpp"
+#include "verify_message.hpp"
+
+namespace ocean::client {
+
+// What the session asks of its owner. Every member may be empty (the output is then dropped).
+struct ClientSessionEvents {
+  std::function<void(std::span<const std::uint8_t>)> send_tcp;
+  std::function<void(std::span<const std::uint8_t>)> send_udp;
+  // The Welcome was accepted: open the UDP socket to welcome.udp_port when it is not 0.
+  std::function<void(const protocol::Welcome&)> on_welcome;
+  // A frame completed and is the newest on show. Valid during the call only.
+  std::function<void(const codec::ReconstructedFrame&, std::uint32_t tick)> on_frame;
+  std::function<void(const protocol::SceneUpdate&)> on_scene_update;
+  // The session ended (Bye, Error before the Welcome, a bad TCP message, idle timeout).
+  std::function<void(const std::string& why)> on_closed;
+};
+
+class ClientSession {
+ public:
+  enum class State : std::uint8_t { idle, awaiting_welcome, streaming, closed };
+  enum class Path : std::uint8_t { tcp, udp_proving, udp };  // where delta frames come from
+
+  ClientSession(ClientSessionConfig config, ClientSessionEvents events);
+
+  // Sends the Hello (the TCP connection is up).
+  void start(double now);
+  // bytes: one whole message (a TcpFramer message) / one datagram. Verified before anything reads it.
+  void on_tcp_message(std::span<const std::uint8_t> bytes, double now);
+  void on_udp_datagram(std::span<const std::uint8_t> bytes, double now);
+  // Runs the timers: acks, UdpHello retries and fallback, pings, keyframe requests, idle timeout.
+  void update(double now);
+  // The earliest time update() has something to do; +infinity when nothing is scheduled.
+  double next_due() const;
+  // Sends Bye{client_quit} and closes.
+  void quit(double now);
+
+  State state() const { return state_; }
+  Path path() const { return path_; }
+  const ClientStats& stats() const { return stats_; }
+  const std::string& close_reason() const { return close_reason_; }
+  const std::string& last_error() const { return last_error_; }  // the last Error the server sent
+  // Valid once streaming: the Welcome, the current scene (after SceneUpdates) and the decoder.
+  const std::optional<protocol::Welcome>& welcome() const { return welcome_; }
+  const protocol::SceneParams& scene() const { return scene_; }
+  std::uint32_t scene_effective_tick() const { return scene_effective_tick_; }
+  const codec::Decoder* decoder() const { return decoder_.get(); }
+  const ClientSessionConfig& config() const { return config_; }
+
+ private:
+  void handle(const wire::Message& message, wire::Transport transport, double now);
+  void handle_welcome(const protocol::Welcome& welcome, double now);
+  void handle_chunk(const wire::FrameChunk& chunk, double now);
+  void handle_pong(const protocol::Pong& pong, double now);
+  void reject(const protocol::Verified& result, wire::Transport transport, double now);
+  void count_rejection(protocol::Reason reason);
+  void send(const protocol::Bytes& bytes, wire::Transport transport);
+  void send_ack(double now);
+  void send_udp_hello(double now);
+  void send_ping(double now);
+  void request_keyframe(wire::KeyframeReason reason, double now);
+  void fall_back_to_tcp(double now);
+  void close(const std::string& why);
+  wire::Transport control_path() const;  // UDP once proven, else TCP
+  std::span<const std::uint8_t> aligned(std::span<const std::uint8_t> bytes);
+
+  ClientSessionConfig config_;
+  ClientSessionEvents events_;
+  State state_ = State::idle;
+  Path path_ = Path::tcp;
+  ClientStats stats_;
+  std::string close_reason_;
+  std::string last_error_;
+  std::optional<protocol::Welcome> welcome_;
+  protocol::SceneParams scene_;
+  std::uint32_t scene_effective_tick_ = 0;
+  std::unique_ptr<codec::Decoder> decoder_;
+  std::size_t max_message_bytes_;
+  std::vector<std::uint8_t> scratch_;  // aligned copy of a misaligned input
+
+  // Timers (absolute times in the caller's clock, seconds).
+  double last_rx_ = 0.0;              // any verified message
+  double last_udp_rx_ = 0.0;          // any verified datagram
+  double welcome_at_ = 0.0;
+  double udp_proof_started_ = 0.0;
+  double next_udp_hello_ = 0.0;
+  double next_ack_ = 0.0;
+  double next_ping_ = 0.0;
+  double last_progress_ = 0.0;        // last completed frame (or the Welcome)
+  double last_keyframe_request_ = -1e300;
+  bool ack_pending_ = false;          // a frame completed since the last Ack
+  std::uint32_t ping_seq_ = 0;
+  codec::ChunkError last_chunk_error_ = codec::ChunkError::ok;
+};
+
+std::string_view to_string(ClientSession::State state);
+std::string_view to_string(ClientSession::Path path);
+
+}  // namespace ocean::client

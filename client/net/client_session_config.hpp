@@ -1,0 +1,34 @@
+// ClientSessionConfig: what a client asks for in its Hello and the timings of its protocol timers.
+// A zero-initialised field keeps its default; the defaults are PROTOCOL.md's recommendations.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "ocean_generated.h"
+
+namespace ocean::client {
+
+struct ClientSessionConfig {
+  // Hello (PROTOCOL.md 8).
+  std::uint8_t profile_id = 0;  // 0 = the server's choice
+  std::uint64_t bandwidth_bps = 0;
+  wire::Transport transport = wire::Transport::udp;
+  std::string client_name = "ocean-client";
+
+  // Timers, seconds (PROTOCOL.md 5 and 7).
+  double ack_interval_s = 0.1;          // at least one Ack this often while frames complete
+  double udp_hello_interval_s = 0.25;   // UdpHello retry
+  double udp_proof_timeout_s = 2.0;     // no UdpReady by then: SetTransport{tcp}
+  double udp_silence_timeout_s = 2.0;   // no datagram for this long on UDP: SetTransport{tcp}
+  double ping_interval_s = 1.0;         // RTT probe, also the keepalive when no frames arrive
+  double keyframe_retry_s = 1.0;        // at most one KeyframeRequest this often (servers rate-limit too)
+  double startup_keyframe_after_s = 1.0;  // no frame this long after the Welcome: KeyframeRequest{startup}
+  std::uint32_t stuck_ticks = 32;       // no frame completed for this many ticks: KeyframeRequest
+  double idle_timeout_s = 10.0;         // nothing valid received for this long: close
+  // PROTOCOL.md 5: a client that receives a bad TCP message closes. Tests turn this off to check
+  // that a rejected message changes nothing.
+  bool close_on_bad_tcp_message = true;
+};
+
+}  // namespace ocean::client

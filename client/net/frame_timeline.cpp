@@ -1,0 +1,167 @@
+// FrameTimeline: buffering, render clock and frame choice.
+#include "frame_timeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace ocean::client {
+
+FrameTimeline::FrameTimeline(FrameTimelineConfig config)
+    : config_(config), clock_(config.tick_period_s, config.clock_window) {
+  if (config.capacity < 2) throw std::invalid_argument("FrameTimelineConfig.capacity must be >= 2 frames");
+  if (!(config.max_clock_slew > 0.0 && config.max_clock_slew < 1.0))
+    throw std::invalid_argument("FrameTimelineConfig.max_clock_slew must be in (0, 1)");
+  const double interval = config.send_interval_s > 0.0 ? config.send_interval_s : config.tick_period_s;
+  delay_s_ = config.interpolation_delay_s > 0.0 ? config.interpolation_delay_s : config.delay_intervals * interval;
+  frames_.resize(config.capacity);
+  used_.assign(config.capacity, false);
+}
+
+std::size_t FrameTimeline::frames_held() const {
+  return static_cast<std::size_t>(std::count(used_.begin(), used_.end(), true));
+}
+
+void FrameTimeline::clear() {
+  used_.assign(used_.size(), false);
+  clock_.reset();
+  rendering_ = false;
+  starved_ = false;
+}
+
+TimelineFrame* FrameTimeline::slot_for(std::uint32_t tick) {
+  std::size_t oldest = frames_.size();
+  for (std::size_t i = 0; i < frames_.size(); ++i) {
+    if (!used_[i]) return &frames_[i];
+    if (frames_[i].tick == tick) return frames_[i].predicted ? &frames_[i] : nullptr;  // duplicate
+    if (oldest == frames_.size() || frames_[i].tick < frames_[oldest].tick) oldest = i;
+  }
+  if (frames_[oldest].tick > tick) return nullptr;  // older than everything held, and no room
+  return &frames_[oldest];
+}
+
+void FrameTimeline::push(const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
+  // A tick far behind what is held means the server restarted its clock: start over.
+  for (std::size_t i = 0; i < frames_.size(); ++i)
+    if (used_[i] && frames_[i].tick > tick &&
+        (frames_[i].tick - tick) * config_.tick_period_s > config_.clock_snap_s) {
+      clear();
+      break;
+    }
+  TimelineFrame* slot = slot_for(tick);
+  if (!slot) {
+    ++counters_.frames_discarded;
+    return;
+  }
+  ++counters_.frames_pushed;
+  if (rendering_ && static_cast<double>(tick) < last_render_tick_) ++counters_.frames_late;
+  clock_.observe(tick, arrival_s);
+  fill(*slot, frame, tick, arrival_s, false);
+}
+
+void FrameTimeline::fill(TimelineFrame& slot, const codec::ReconstructedFrame& frame, std::uint32_t tick,
+                         double arrival_s, bool predicted) {
+  slot.tick = tick;
+  slot.arrival_s = arrival_s;
+  slot.predicted = predicted;
+  slot.height.assign(frame.height.begin(), frame.height.end());
+  slot.slope_x.assign(frame.slope_x.begin(), frame.slope_x.end());
+  slot.slope_z.assign(frame.slope_z.begin(), frame.slope_z.end());
+  used_[static_cast<std::size_t>(&slot - frames_.data())] = true;
+}
+
+TimelineSample FrameTimeline::sample(double now) {
+  TimelineSample out;
+  const auto target = clock_.offset_s();
+  if (!target) return out;
+  const double period = config_.tick_period_s;
+  if (!rendering_) {
+    rendering_ = true;
+    render_offset_s_ = *target;
+    last_render_tick_ = (now - render_offset_s_ - delay_s_) / period;
+  } else {
+    // Follow the estimate by running the render clock slightly fast or slow, so the picture never
+    // jumps and never runs backwards; only a gross error (a new server clock) is jumped over.
+    const double diff = *target - render_offset_s_;
+    const double dt = std::max(0.0, now - last_now_);
+    if (std::fabs(diff) > config_.clock_snap_s) {
+      render_offset_s_ = *target;
+      ++counters_.clock_snaps;
+      last_render_tick_ = (now - render_offset_s_ - delay_s_) / period;
+    } else {
+      const double step = config_.max_clock_slew * dt;
+      render_offset_s_ += std::clamp(diff, -step, step);
+    }
+  }
+  const double render_tick = std::max(last_render_tick_, (now - render_offset_s_ - delay_s_) / period);
+  if (starved_) counters_.stalled_s += std::max(0.0, now - last_now_);
+  last_now_ = now;
+  last_render_tick_ = render_tick;
+  out.render_tick = render_tick;
+
+  const TimelineFrame* a = nullptr;  // newest at or before render_tick
+  const TimelineFrame* b = nullptr;  // oldest after it
+  for (std::size_t i = 0; i < frames_.size(); ++i) {
+    if (!used_[i]) continue;
+    const TimelineFrame& f = frames_[i];
+    if (static_cast<double>(f.tick) <= render_tick) {
+      if (!a || f.tick > a->tick) a = &f;
+    } else if (!b || f.tick < b->tick) {
+      b = &f;
+    }
+  }
+  // Frames older than a are never shown again: free their slots for reuse.
+  if (a)
+    for (std::size_t i = 0; i < frames_.size(); ++i)
+      if (used_[i] && frames_[i].tick < a->tick) used_[i] = false;
+
+  if (a && b) {
+    out.status = TimelineSample::Status::interpolating;
+    out.a = a;
+    out.b = b;
+    out.weight = static_cast<float>((render_tick - a->tick) / static_cast<double>(b->tick - a->tick));
+    if (b->predicted)
+      out.status = TimelineSample::Status::extrapolating;  // still starved
+    else
+      starved_ = false;
+  } else if (a) {
+    if (!starved_) ++counters_.stalls;
+    starved_ = true;
+    out.status = TimelineSample::Status::holding;
+    out.a = out.b = a;
+    // Starved: ask for the next tick's predicted frame and keep interpolating towards it.
+    const auto want = static_cast<std::uint32_t>(std::floor(render_tick)) + 1;
+    if (extrapolator_ && extrapolator_(want, predicted_)) {
+      if (TimelineFrame* slot = slot_for(want); slot && slot != a) {
+        fill(*slot, predicted_, want, now, true);
+        ++counters_.frames_extrapolated;
+        out.status = TimelineSample::Status::extrapolating;
+        out.b = slot;
+        out.weight = static_cast<float>((render_tick - a->tick) / static_cast<double>(want - a->tick));
+      }
+    }
+  } else if (b) {
+    out.status = TimelineSample::Status::waiting;
+    out.a = out.b = b;
+  }
+  return out;
+}
+
+void FrameTimeline::blend(const TimelineSample& sample, std::vector<float>& height, std::vector<float>& slope_x,
+                          std::vector<float>& slope_z) {
+  if (!sample.a) return;
+  const float w = sample.weight;
+  auto mix = [w](const std::vector<float>& a, const std::vector<float>& b, std::vector<float>& out) {
+    out.resize(a.size());
+    if (b.size() != a.size()) {
+      std::copy(a.begin(), a.end(), out.begin());
+      return;
+    }
+    for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] + w * (b[i] - a[i]);
+  };
+  mix(sample.a->height, sample.b->height, height);
+  mix(sample.a->slope_x, sample.b->slope_x, slope_x);
+  mix(sample.a->slope_z, sample.b->slope_z, slope_z);
+}
+
+}  // namespace ocean::client

@@ -1,0 +1,106 @@
+// FrameTimeline: the client's jitter buffer and snapshot interpolation (Fiedler). Holds recent
+// reconstructed frames by tick in reused buffers, estimates the server tick clock from arrivals,
+// and for a render time names the two frames to blend, a fixed delay behind. Pure: time is an argument.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "arrival_clock.hpp"
+#include "frame_reconstruction.hpp"
+
+namespace ocean::client {
+
+struct FrameTimelineConfig {
+  double tick_period_s = 1.0 / 30.0;
+  double send_interval_s = 0.0;          // time between frames the server sends; 0 = tick_period_s
+  double delay_intervals = 3.0;          // render this many send intervals behind the newest frame
+  double interpolation_delay_s = 0.0;    // if > 0, used instead of delay_intervals * send interval
+  std::size_t capacity = 16;             // frames held; the oldest goes first
+  std::size_t clock_window = 64;         // arrivals the clock minimum is taken over
+  double max_clock_slew = 0.02;          // the render clock runs at most 2% fast or slow to follow the estimate
+  double clock_snap_s = 1.0;             // an estimate this far off is jumped to (reconnect, server restart)
+};
+
+struct TimelineFrame {
+  std::uint32_t tick = 0;
+  double arrival_s = 0.0;
+  bool predicted = false;  // made by the extrapolator; a real frame of its tick replaces it
+  std::vector<float> height, slope_x, slope_z;
+};
+
+struct TimelineSample {
+  enum class Status : std::uint8_t {
+    empty,          // no frame yet
+    waiting,        // render time is before the oldest frame: showing it
+    interpolating,  // between a and b
+    holding,        // starved: render time is past the newest frame, showing it (a stall)
+    extrapolating,  // starved, but b is a predicted frame: the sea keeps moving (a stall too)
+  };
+  Status status = Status::empty;
+  const TimelineFrame* a = nullptr;  // blend a * (1 - weight) + b * weight; b == a when not interpolating
+  const TimelineFrame* b = nullptr;
+  float weight = 0.0f;
+  double render_tick = 0.0;  // where on the server's tick axis this render time falls
+};
+
+struct TimelineCounters {
+  std::uint64_t frames_pushed = 0;
+  std::uint64_t frames_late = 0;       // arrived after the render time had passed their tick
+  std::uint64_t frames_discarded = 0;  // duplicates, or older than everything held with no room
+  std::uint64_t stalls = 0;            // times the render time overtook the newest frame
+  std::uint64_t frames_extrapolated = 0;
+  double stalled_s = 0.0;              // render time spent holding
+  std::uint64_t clock_snaps = 0;
+};
+
+class FrameTimeline {
+ public:
+  // Fills out with the frame of a tick no frame has arrived for yet (e.g. FramePredictor); false
+  // when it cannot.
+  using Extrapolator = std::function<bool(std::uint32_t tick, codec::ReconstructedFrame& out)>;
+
+  explicit FrameTimeline(FrameTimelineConfig config = {});
+
+  // Without one, a starved timeline holds its newest frame.
+  void set_extrapolator(Extrapolator extrapolator) { extrapolator_ = std::move(extrapolator); }
+
+  // Copies the frame into a reused buffer (no allocation once the buffers have grown).
+  void push(const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s);
+  // What to show at client time now; now must not decrease between calls. The pointers stay
+  // valid until the next push() or sample().
+  TimelineSample sample(double now);
+  // out = a * (1 - weight) + b * weight for every channel the frames hold (resized to fit).
+  static void blend(const TimelineSample& sample, std::vector<float>& height, std::vector<float>& slope_x,
+                    std::vector<float>& slope_z);
+
+  double interpolation_delay_s() const { return delay_s_; }
+  const TimelineCounters& counters() const { return counters_; }
+  const ArrivalClock& clock() const { return clock_; }
+  std::size_t frames_held() const;
+  void clear();
+
+ private:
+  TimelineFrame* slot_for(std::uint32_t tick);
+  void fill(TimelineFrame& slot, const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s,
+            bool predicted);
+
+  FrameTimelineConfig config_;
+  Extrapolator extrapolator_;
+  codec::ReconstructedFrame predicted_;  // the extrapolator's scratch
+  double delay_s_;
+  ArrivalClock clock_;
+  std::vector<TimelineFrame> frames_;
+  std::vector<bool> used_;
+  TimelineCounters counters_;
+  bool rendering_ = false;
+  double render_offset_s_ = 0.0;  // the clock offset the render time follows, slewed towards clock_
+  double last_now_ = 0.0;
+  double last_render_tick_ = 0.0;
+  bool starved_ = false;
+};
+
+}  // namespace ocean::client
