@@ -9,7 +9,7 @@ packages=(
   libzstd-dev libsodium-dev libspdlog-dev libfmt-dev libcli11-dev libtomlplusplus-dev
   libstb-dev catch2
   libglfw3-dev libglm-dev libgles-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
-  xvfb xauth gnuplot-nox python3-numpy procps
+  xvfb xauth gnuplot-nox python3-numpy python3-yaml python3-jsonschema procps
 )
 if [[ "${OCEAN_SANITIZE:-}" == 1 || "${OCEAN_FUZZ:-}" == 1 ]]; then
   packages+=(clang libclang-rt-14-dev)

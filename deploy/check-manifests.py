@@ -1,0 +1,80 @@
+#!/usr/bin/python3
+"""Checks the deployment files in deploy/ against each other and against what ocean-server accepts.
+
+  check-manifests.py DEPLOY_DIR              every problem on stderr, one line each; exit 1 if any
+  check-manifests.py --self-test DEPLOY_DIR  breaks copies of DEPLOY_DIR on purpose and exits 1
+                                             unless the checker catches every breakage
+
+What it checks: every YAML document under k8s/ has apiVersion, kind and metadata.name; the
+Services' targetPorts resolve to container ports of the same protocol (TCP and UDP alike); probes
+point at declared TCP ports; mounted ConfigMap/Secret keys exist; the container runs locked down;
+the server config (ConfigMap and ocean-server.toml) parses as TOML, uses only options the server
+knows (read from ../server/net/config_options.cpp when present) and listens on the ports the
+Deployment and Dockerfile declare; the systemd unit carries the hardening keys. With
+python3-jsonschema installed it also validates each document against a SUBSET schema
+(checks/schemas.py).
+"""
+import pathlib
+import sys
+
+sys.dont_write_bytecode = True  # importing checks/ must not litter the source tree
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from checks.dockerfile import check_dockerfile  # noqa: E402  (beside this script)
+from checks.k8s_documents import by_kind, check_schemas, load_documents  # noqa: E402
+from checks.k8s_workloads import check_kustomization, check_workloads  # noqa: E402
+from checks.report import Report  # noqa: E402
+from checks.self_test import self_test  # noqa: E402
+from checks.server_config import check_server_config, server_options  # noqa: E402
+from checks.systemd_unit import check_unit  # noqa: E402
+
+
+def check(deploy_dir):
+    deploy_dir = pathlib.Path(deploy_dir)
+    report = Report()
+    options = server_options(deploy_dir)
+    if options is None:
+        report.notes.append("options: server/net/config_options.cpp not found; config keys not checked")
+    k8s_dir = deploy_dir / "k8s"
+    documents = load_documents(report, k8s_dir)
+    check_schemas(report, documents)
+    configs = {}
+    for where, configmap in by_kind(documents, "ConfigMap"):
+        name = (configmap.get("metadata") or {}).get("name")
+        for key, text in (configmap.get("data") or {}).items():
+            if key.endswith(".toml"):
+                configs.setdefault(name, {})[key] = check_server_config(report, f"{where} data.{key}", str(text), options)
+    if not any(configs.values()):
+        report.problem("k8s", "no ConfigMap holds an ocean-server .toml config")
+    check_workloads(report, documents, configs)
+    check_kustomization(report, documents, k8s_dir)
+    example = deploy_dir / "ocean-server.toml"
+    example_config = None
+    if example.is_file():
+        example_config = check_server_config(report, example.name, example.read_text(), options)
+    else:
+        report.problem(example.name, "missing")
+    check_unit(report, deploy_dir / "ocean-server.service")
+    run_as_users = {((d.get("spec") or {}).get("template") or {}).get("spec", {}).get("securityContext", {}).get("runAsUser")
+                    for _, d in by_kind(documents, "Deployment")} - {None}
+    check_dockerfile(report, deploy_dir / "Dockerfile", example_config, run_as_users)
+    report.notes.append(f"{len(documents)} YAML documents")
+    return report
+
+
+def main(argv):
+    args = argv[1:]
+    if len(args) == 2 and args[0] == "--self-test":
+        return self_test(args[1], check)
+    if len(args) != 1 or args[0].startswith("-"):
+        print(__doc__, file=sys.stderr)
+        return 2
+    report = check(args[0])
+    for problem in report.problems:
+        print(f"check-manifests: {problem}", file=sys.stderr)
+    status = "FAILED" if report.problems else "OK"
+    print(f"check-manifests: {status}; " + "; ".join(report.notes))
+    return 1 if report.problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,1 @@
+"""The checks behind deploy/check-manifests.py, one file per thing checked."""
