@@ -1,0 +1,320 @@
+#include "client/render/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <GLES2/gl2ext.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "client/render/gl_program.hpp"
+#include "client/render/grid_mesh.hpp"
+#include "client/render/lod.hpp"
+#include "client/render/periodic_field.hpp"
+#include "client/render/shader_sources.hpp"
+#include "client/render/sky_faces.hpp"
+#include "client/render/sky_texture.hpp"
+#include "client/render/tile_selection.hpp"
+
+namespace ocean::render {
+
+namespace {
+
+bool has_extension(const char* name) {
+  const char* all = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  return all && std::strstr(all, name) != nullptr;
+}
+
+template <typename T>
+T or_default(T value, T fallback) {
+  return value == T{} ? fallback : value;
+}
+
+}  // namespace
+
+bool Renderer::fail(std::string reason) {
+  error_ = std::move(reason);
+  return false;
+}
+
+bool Renderer::init(const RendererDesc& in) {
+  shutdown();
+  if (!glGetString(GL_VERSION)) return fail("Renderer::init needs a current GLES 2 context (glGetString returned null)");
+  desc_ = in;
+  desc_.view_distance_m = or_default(in.view_distance_m, 2500.0f);
+  desc_.max_lod_level = or_default(in.max_lod_level, 5);
+  desc_.chunks_per_side = or_default(in.chunks_per_side, 2);
+  desc_.far_block_tiles = std::max(0, in.far_block_tiles);  // resolved per patch size in set_grid
+  desc_.choppiness = or_default(in.choppiness, 1.0f);
+  desc_.foam_threshold = or_default(in.foam_threshold, 0.45f);
+  desc_.sun_colour = or_default(in.sun_colour, glm::vec3(2.6f, 2.35f, 1.9f));
+  desc_.deep_colour = or_default(in.deep_colour, glm::vec3(0.01f, 0.06f, 0.10f));
+  desc_.scatter_colour = or_default(in.scatter_colour, glm::vec3(0.02f, 0.12f, 0.11f));
+  desc_.shininess = or_default(in.shininess, 600.0f);
+  desc_.fog_density = or_default(in.fog_density, 3.2f / desc_.view_distance_m);
+  if (desc_.view_distance_m < 0.0f || desc_.lod0_distance_m < 0.0f || desc_.max_lod_level < 0)
+    return fail("RendererDesc: view_distance_m, lod0_distance_m and max_lod_level must be >= 0");
+  if (desc_.chunks_per_side < 1 || desc_.chunks_per_side > 8)
+    return fail("RendererDesc: chunks_per_side must be 1..8, got " + std::to_string(desc_.chunks_per_side));
+
+  namespace src = shader_source;
+  ocean_program_ = build_program("ocean", src::ocean_vert, src::ocean_frag,
+                                 {{kGrid, "a_grid"}, {kHeight, "a_height"}, {kSlope, "a_slope"},
+                                  {kDisp, "a_disp"}, {kJacobian, "a_jacobian"}},
+                                 error_);
+  if (!ocean_program_) return false;
+  sky_program_ = build_program("sky", src::sky_vert, src::sky_frag, {{0, "a_ndc"}}, error_);
+  if (!sky_program_) return false;
+
+  const auto loc = [&](const char* name) { return glGetUniformLocation(ocean_program_, name); };
+  ocean_u_ = {loc("u_clip_from_rel"), loc("u_tile_offset"), loc("u_eye_height"), loc("u_choppiness"),
+              loc("u_detail_fade"), loc("u_far_roughness"), loc("u_foam"), loc("u_sky"),
+              loc("u_sun_dir"), loc("u_sun_colour"), loc("u_deep_colour"), loc("u_scatter_colour"),
+              loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]")};
+  sky_u_rel_from_clip_ = glGetUniformLocation(sky_program_, "u_rel_from_clip");
+  sky_u_sky_ = glGetUniformLocation(sky_program_, "u_sky");
+
+  SkyFaces faces;
+  if (!load_sky(in.sky_dir, faces, error_)) return false;
+  if (desc_.sun_direction == glm::vec3(0.0f)) desc_.sun_direction = estimate_sun_direction(faces);
+  desc_.sun_direction = glm::normalize(desc_.sun_direction);
+  const auto ring = horizon_ring(faces, 0.01f);  // matches the sky shader's below-horizon colour
+  horizon_ring_.assign(ring.begin(), ring.end());
+  sky_texture_ = create_sky_texture(faces);
+
+  const float triangle[] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
+  glGenBuffers(1, &sky_triangle_);
+  glBindBuffer(GL_ARRAY_BUFFER, sky_triangle_);
+  glBufferData(GL_ARRAY_BUFFER, sizeof triangle, triangle, GL_STATIC_DRAW);
+  if (const GLenum e = glGetError(); e != GL_NO_ERROR) return fail("GL error " + std::to_string(e) + " while creating renderer resources");
+  ready_ = true;
+  return true;
+}
+
+void Renderer::release_grid() {
+  tile_.destroy();
+  far_.destroy();
+  index_ranges_.clear();
+  n_ = 0;
+  has_frame_ = false;
+}
+
+bool Renderer::set_grid(int n, float patch_x_m, float patch_z_m) {
+  if (!ready_) return fail("Renderer::set_grid called before a successful init");
+  if (n < 2 || n > 1024) return fail("set_grid: n = " + std::to_string(n) + " samples per side, allowed 2..1024");
+  if (!(patch_x_m > 0.0f) || !(patch_z_m > 0.0f))
+    return fail("set_grid: patch size must be > 0 metres, got " + std::to_string(patch_x_m) + " x " + std::to_string(patch_z_m));
+  const std::size_t vertices = static_cast<std::size_t>(n + 1) * (n + 1);
+  const bool wide = vertices > 65535;
+  if (wide && !has_extension("GL_OES_element_index_uint"))
+    return fail("set_grid: n = " + std::to_string(n) + " needs 32-bit indices ((n+1)^2 > 65535) but the GL lacks "
+                "GL_OES_element_index_uint; use a grid of at most 254 samples per side");
+  release_grid();
+  n_ = n;
+  patch_x_ = patch_x_m;
+  patch_z_ = patch_z_m;
+  // Chunks must hold whole cells at every level; fall back to whole tiles when they cannot.
+  chunks_per_side_ = (n % desc_.chunks_per_side == 0 && n / desc_.chunks_per_side >= 8) ? desc_.chunks_per_side : 1;
+  const int chunk_cells = n / chunks_per_side_;
+  lod_levels_ = supported_lod_levels(chunk_cells, desc_.max_lod_level);
+  index_type_ = wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT;
+
+  tile_.create();
+  upload_static(tile_.positions, make_grid_positions(n, patch_x_m, patch_z_m));
+
+  std::vector<std::uint32_t> all;
+  const int regions = 1 + (chunks_per_side_ > 1 ? chunks_per_side_ * chunks_per_side_ : 0);
+  index_ranges_.assign(static_cast<std::size_t>(regions) * (lod_levels_ + 1) * kEdgeMaskCount, {});
+  const std::size_t element = wide ? 4 : 2;
+  for (int region = 0; region < regions; ++region) {
+    GridRegion r;  // region 0: the whole tile
+    if (region > 0) r = {((region - 1) % chunks_per_side_) * chunk_cells, ((region - 1) / chunks_per_side_) * chunk_cells, chunk_cells};
+    for (int level = 0; level <= lod_levels_; ++level) {
+      for (unsigned mask = 0; mask < kEdgeMaskCount; ++mask) {
+        // The coarsest level never has a coarser neighbour.
+        const std::vector<std::uint32_t> part = make_grid_indices(n, level, level < lod_levels_ ? mask : 0u, r);
+        index_ranges_[(region * (lod_levels_ + 1) + level) * kEdgeMaskCount + mask] = {all.size() * element,
+                                                                                      static_cast<GLsizei>(part.size())};
+        all.insert(all.end(), part.begin(), part.end());
+      }
+    }
+  }
+  upload_indices(tile_.indices, all, wide);
+
+  // Far blocks: a plain grid over far_span_^2 patches at the coarsest stride (never stitched).
+  const float patch = std::max(patch_x_m, patch_z_m);
+  far_span_ = desc_.far_block_tiles > 0 ? desc_.far_block_tiles
+                                        : std::clamp(static_cast<int>(std::lround(desc_.view_distance_m / (5.0f * patch))), 1, 16);
+  if (far_span_ > 1) {
+    const int far_cells = far_span_ * (n >> lod_levels_);
+    const bool far_wide = static_cast<std::size_t>(far_cells + 1) * (far_cells + 1) > 65535;
+    if (far_wide && !wide) {
+      far_span_ = 1;  // keep 16-bit indices; the far field is then drawn tile by tile
+    } else {
+      far_.create();
+      upload_static(far_.positions, make_grid_positions(far_cells, far_span_ * patch_x_m, far_span_ * patch_z_m));
+      const std::vector<std::uint32_t> far_indices = make_grid_indices(far_cells, 0, 0u);
+      upload_indices(far_.indices, far_indices, far_wide);
+      far_index_count_ = static_cast<GLsizei>(far_indices.size());
+      far_index_type_ = far_wide ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT;
+    }
+  }
+  if (const GLenum e = glGetError(); e != GL_NO_ERROR) return fail("GL error " + std::to_string(e) + " while uploading the grid");
+  return true;
+}
+
+bool Renderer::upload_frame(const float* height, const float* slope_x, const float* slope_z,
+                            const float* disp_x, const float* disp_z, const float* jacobian) {
+  return upload_frame(FrameStreams{height, slope_x, slope_z, disp_x, disp_z, jacobian});
+}
+
+bool Renderer::upload_frame(const FrameStreams& f) {
+  if (n_ == 0) return fail("Renderer::upload_frame called before set_grid");
+  if (!f.height) return fail("upload_frame: FrameStreams::height is required");
+  if ((f.disp_x == nullptr) != (f.disp_z == nullptr))
+    return fail("upload_frame: give both disp_x and disp_z, or neither");
+  const int n = n_;
+  const std::size_t count = static_cast<std::size_t>(n) * n;
+
+  float max_h = 0.0f;
+  for (std::size_t i = 0; i < count; ++i) max_h = std::max(max_h, std::abs(f.height[i]));
+  max_height_ = max_h;
+  const float* sx = f.slope_x;
+  const float* sz = f.slope_z;
+  if (!sx || !sz) {
+    central_difference_slopes(n, patch_x_, patch_z_, f.height, scratch_slope_x_, scratch_slope_z_);
+    sx = sx ? sx : scratch_slope_x_.data();
+    sz = sz ? sz : scratch_slope_z_.data();
+  }
+  has_disp_ = f.disp_x != nullptr;
+  max_disp_ = 0.0f;
+  if (has_disp_) {
+    float max_d2 = 0.0f;
+    for (std::size_t i = 0; i < count; ++i) max_d2 = std::max(max_d2, f.disp_x[i] * f.disp_x[i] + f.disp_z[i] * f.disp_z[i]);
+    max_disp_ = std::sqrt(max_d2) * desc_.choppiness;
+  }
+  has_jacobian_ = f.jacobian != nullptr;
+
+  // The tile mesh takes every sample; the far block every coarsest-stride sample, repeated.
+  const auto stream = [&](GLuint tile_buffer, GLuint far_buffer, std::initializer_list<const float*> fields) {
+    expand_periodic(n, fields, scratch_);
+    upload_stream(tile_buffer, scratch_);
+    if (far_span_ > 1) {
+      expand_periodic_strided(n, 1 << lod_levels_, far_span_, fields, scratch_);
+      upload_stream(far_buffer, scratch_);
+    }
+  };
+  stream(tile_.height, far_.height, {f.height});
+  stream(tile_.slope, far_.slope, {sx, sz});
+  if (has_disp_) stream(tile_.displacement, far_.displacement, {f.disp_x, f.disp_z});
+  if (has_jacobian_) stream(tile_.jacobian, far_.jacobian, {f.jacobian});
+  has_frame_ = true;
+  return true;
+}
+
+void Renderer::draw(const Camera& camera, int width, int height, double /*time_s: the streams carry time*/) {
+  stats_ = {};
+  glViewport(0, 0, width, height);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (!ready_ || width <= 0 || height <= 0) return;
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+
+  const glm::mat4 clip_from_rel = camera.clip_from_relative(static_cast<float>(width) / static_cast<float>(height));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_CUBE_MAP, sky_texture_);
+
+  if (has_frame_) {
+    TileSelectionInput sel;
+    sel.camera_position = camera.position;
+    sel.clip_from_relative = clip_from_rel;
+    sel.patch_x_m = patch_x_;
+    sel.patch_z_m = patch_z_;
+    sel.view_distance_m = desc_.view_distance_m;
+    sel.max_height_m = max_height_;
+    sel.max_displacement_m = max_disp_;
+    sel.lod.lod0_distance_m = desc_.lod0_distance_m > 0.0f ? desc_.lod0_distance_m : 0.5f * std::max(patch_x_, patch_z_);
+    sel.lod.max_level = lod_levels_;
+    sel.chunks_per_side = chunks_per_side_;
+    sel.far_block_tiles = far_span_;
+    const TileSelection tiles = select_tiles(sel);
+
+    glUseProgram(ocean_program_);
+    glUniformMatrix4fv(ocean_u_.clip_from_rel, 1, GL_FALSE, glm::value_ptr(clip_from_rel));
+    glUniform1f(ocean_u_.eye_height, static_cast<float>(camera.position.y));
+    glUniform1f(ocean_u_.choppiness, desc_.choppiness);
+    glUniform1f(ocean_u_.detail_fade, 2.0f / desc_.view_distance_m);
+    glUniform1f(ocean_u_.far_roughness, 0.35f);
+    glUniform2f(ocean_u_.foam, desc_.foam_threshold, 1.0f / 0.15f);
+    glUniform1i(ocean_u_.sky, 0);
+    glUniform3fv(ocean_u_.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
+    glUniform3fv(ocean_u_.sun_colour, 1, glm::value_ptr(desc_.sun_colour));
+    glUniform3fv(ocean_u_.deep_colour, 1, glm::value_ptr(desc_.deep_colour));
+    glUniform3fv(ocean_u_.scatter_colour, 1, glm::value_ptr(desc_.scatter_colour));
+    glUniform1f(ocean_u_.shininess, desc_.shininess);
+    glUniform2f(ocean_u_.fog, desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m)));
+    glUniform3f(ocean_u_.foam_colour, 0.92f, 0.95f, 0.97f);
+    glUniform3fv(ocean_u_.horizon, static_cast<GLsizei>(horizon_ring_.size()), glm::value_ptr(horizon_ring_[0]));
+
+    // Tiles and chunks first (nearest first), then the far blocks with their own buffers.
+    tile_.bind(has_disp_, has_jacobian_);
+    for (const TileDraw& t : tiles.draws) {
+      if (t.span > 1) continue;
+      const IndexRange& range = index_ranges_[((t.chunk + 1) * (lod_levels_ + 1) + t.level) * kEdgeMaskCount + t.coarser_edges];
+      glUniform2f(ocean_u_.tile_offset, t.offset_relative.x, t.offset_relative.y);
+      glDrawElements(GL_TRIANGLES, range.count, index_type_, reinterpret_cast<const void*>(range.byte_offset));
+      stats_.triangles += range.count / 3;
+      ++stats_.tiles_per_level[std::min(t.level, 5)];
+      ++stats_.tiles_drawn;
+      ++stats_.draw_calls;
+    }
+    bool far_bound = false;
+    for (const TileDraw& t : tiles.draws) {
+      if (t.span == 1) continue;
+      if (!far_bound) far_.bind(has_disp_, has_jacobian_);
+      far_bound = true;
+      glUniform2f(ocean_u_.tile_offset, t.offset_relative.x, t.offset_relative.y);
+      glDrawElements(GL_TRIANGLES, far_index_count_, far_index_type_, nullptr);
+      stats_.triangles += far_index_count_ / 3;
+      stats_.tiles_per_level[std::min(t.level, 5)] += t.span * t.span;
+      stats_.tiles_drawn += t.span * t.span;
+      ++stats_.far_blocks;
+      ++stats_.draw_calls;
+    }
+    stats_.tiles_culled = tiles.culled;
+    PatchBuffers::unbind();
+  }
+
+  // The sky last, on the far plane, so it only shades pixels no water covered.
+  glUseProgram(sky_program_);
+  // Rays scaled from far-plane length (thousands of metres) to about 1: squaring them in a
+  // mediump (fp16) fragment stage would overflow.
+  const glm::mat4 rel_from_clip = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / camera.far_m)) * glm::inverse(clip_from_rel);
+  glUniformMatrix4fv(sky_u_rel_from_clip_, 1, GL_FALSE, glm::value_ptr(rel_from_clip));
+  glUniform1i(sky_u_sky_, 0);
+  glBindBuffer(GL_ARRAY_BUFFER, sky_triangle_);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(0);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisableVertexAttribArray(0);
+  ++stats_.draw_calls;
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::shutdown() {
+  if (!ready_ && !ocean_program_ && !sky_program_) return;
+  release_grid();
+  if (ocean_program_) glDeleteProgram(ocean_program_);
+  if (sky_program_) glDeleteProgram(sky_program_);
+  if (sky_texture_) glDeleteTextures(1, &sky_texture_);
+  if (sky_triangle_) glDeleteBuffers(1, &sky_triangle_);
+  ocean_program_ = sky_program_ = sky_texture_ = sky_triangle_ = 0;
+  ready_ = false;
+}
+
+}  // namespace ocean::render

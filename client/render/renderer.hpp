@@ -1,0 +1,124 @@
+// The GLES 2 ocean renderer: one static patch grid (uploaded once) tiled to the horizon, per-frame
+// attribute streams (height, slopes, optional choppy displacement and Jacobian), a sky cube map.
+// No windowing and no networking: the caller owns the context and the frame data.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <GLES2/gl2.h>
+#include <glm/glm.hpp>
+
+#include "client/render/camera.hpp"
+#include "client/render/patch_buffers.hpp"
+
+namespace ocean::render {
+
+// Zero (or null) in any field means "the default" written beside it.
+struct RendererDesc {
+  const char* sky_dir = nullptr;      // folder with px.png .. nz.png; null: default_sky_dirs()
+  float view_distance_m = 0.0f;       // 2500: tiles are drawn out to here
+  float lod0_distance_m = 0.0f;       // half a patch width: full-detail radius; +1 level per doubling
+  int max_lod_level = 0;              // 5 (stride 32), reduced to what the grid size allows
+  int chunks_per_side = 0;            // 2 (1 for grids under 16): LOD granularity within a tile
+  int far_block_tiles = 0;            // about view distance / 5 patches (1 = off): tiles per far draw
+  float choppiness = 0.0f;            // 1: scale applied to the streamed displacement
+  float foam_threshold = 0.0f;        // 0.45: foam where the Jacobian is below this
+  glm::vec3 sun_direction{0.0f};      // estimated from the sky's brightest spot
+  glm::vec3 sun_colour{0.0f};         // (2.6, 2.35, 1.9): > 1 so the glitter saturates
+  glm::vec3 deep_colour{0.0f};        // (0.01, 0.06, 0.10)
+  glm::vec3 scatter_colour{0.0f};     // (0.02, 0.12, 0.11)
+  float shininess = 0.0f;             // 600: Phong exponent of the sun highlight
+  float fog_density = 0.0f;           // 3.2 / view distance, per metre; the fog is full at the view distance
+};
+
+// One frame of samples, each n x n floats, row-major with rows along +z (index row * n + col).
+// height is required; null slopes are derived from the heights by central differences;
+// null displacement means none and a null Jacobian means 1 (no foam).
+struct FrameStreams {
+  const float* height = nullptr;
+  const float* slope_x = nullptr;
+  const float* slope_z = nullptr;
+  const float* disp_x = nullptr;
+  const float* disp_z = nullptr;
+  const float* jacobian = nullptr;
+};
+
+struct DrawStats {
+  int tiles_drawn = 0;    // tiles and chunks drawn (a far block counts all its tiles)
+  int far_blocks = 0;     // of which drawn as far blocks
+  int tiles_culled = 0;   // chunks in range but outside the view
+  int draw_calls = 0;
+  std::int64_t triangles = 0;
+  std::array<int, 6> tiles_per_level{};  // levels above 5 are counted as 5
+};
+
+class Renderer {
+ public:
+  Renderer() = default;
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+  ~Renderer() { shutdown(); }
+
+  // Needs a current GLES 2 context. Compiles the shaders and loads the sky.
+  bool init(const RendererDesc& desc);
+  // The patch is n x n samples spanning patch_x_m x patch_z_m metres; builds the static grid VBO
+  // and the LOD index buffers. Call again when the stream's grid changes.
+  bool set_grid(int n, float patch_x_m, float patch_z_m);
+  // Uploads only the attribute streams of one frame (sizes from set_grid).
+  bool upload_frame(const FrameStreams& frame);
+  bool upload_frame(const float* height, const float* slope_x, const float* slope_z,
+                    const float* disp_x = nullptr, const float* disp_z = nullptr, const float* jacobian = nullptr);
+  // Draws into the bound framebuffer's (0, 0, width, height) viewport; clears colour and depth.
+  void draw(const Camera& camera, int width, int height, double time_s);
+  void shutdown();
+
+  const std::string& error() const { return error_; }
+  const DrawStats& last_stats() const { return stats_; }
+  const RendererDesc& desc() const { return desc_; }  // with defaults filled in
+  int grid_n() const { return n_; }
+
+ private:
+  bool fail(std::string reason);
+  void release_grid();
+
+  RendererDesc desc_;
+  std::string error_;
+  bool ready_ = false;
+
+  GLuint ocean_program_ = 0, sky_program_ = 0;
+  GLuint sky_texture_ = 0, sky_triangle_ = 0;
+  PatchBuffers tile_;  // one patch: every LOD level and stitch variant
+  PatchBuffers far_;   // far_span_^2 patches at the coarsest level, one draw per far block
+
+  struct IndexRange {
+    std::size_t byte_offset = 0;
+    GLsizei count = 0;
+  };
+  // [((chunk + 1) * (lod_levels_ + 1) + level) * kEdgeMaskCount + coarser_edges]; chunk -1 = whole tile
+  std::vector<IndexRange> index_ranges_;
+  int chunks_per_side_ = 1;
+  int far_span_ = 1;
+  GLsizei far_index_count_ = 0;
+  GLenum far_index_type_ = GL_UNSIGNED_SHORT;
+  GLenum index_type_ = GL_UNSIGNED_SHORT;
+  int n_ = 0, lod_levels_ = 0;
+  float patch_x_ = 0.0f, patch_z_ = 0.0f;
+
+  bool has_frame_ = false, has_disp_ = false, has_jacobian_ = false;
+  float max_height_ = 0.0f, max_disp_ = 0.0f;
+  std::vector<glm::vec3> horizon_ring_;
+  std::vector<float> scratch_, scratch_slope_x_, scratch_slope_z_;
+
+  struct OceanUniforms {
+    GLint clip_from_rel, tile_offset, eye_height, choppiness, detail_fade, far_roughness, foam;
+    GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon;
+  } ocean_u_{};
+  GLint sky_u_rel_from_clip_ = -1, sky_u_sky_ = -1;
+
+  DrawStats stats_;
+};
+
+}  // namespace ocean::render

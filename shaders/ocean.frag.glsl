@@ -1,0 +1,44 @@
+#version 100
+// Ocean surface fragment stage: per-fragment Phong from the streamed slopes, a Schlick-weighted
+// sky reflection, a sun highlight, deep-water colour with a little scatter, foam and distance fog.
+#ifdef GL_FRAGMENT_PRECISION_HIGH
+precision highp float;
+#else
+precision mediump float;
+#endif
+
+uniform samplerCube u_sky;
+uniform vec3 u_sun_dir;        // unit, toward the sun
+uniform vec3 u_sun_colour;
+uniform vec3 u_deep_colour;
+uniform vec3 u_scatter_colour;
+uniform float u_shininess;
+uniform vec3 u_foam_colour;
+
+varying vec3 v_rel;
+varying vec2 v_slope;
+varying float v_foam;
+varying float v_height;
+varying vec4 v_haze;
+
+void main() {
+  vec3 n = normalize(vec3(-v_slope.x, 1.0, -v_slope.y));
+  vec3 view = normalize(v_rel);             // eye toward the surface
+  vec3 r = reflect(view, n);
+  r.y = abs(r.y);                            // a reflection never shows the sky below the horizon
+  float facing = max(dot(n, -view), 0.0);
+  float m = 1.0 - facing;                    // Schlick, (1 - cos)^5 without pow
+  float m2 = m * m;
+  float fresnel = 0.02 + 0.98 * m2 * m2 * m;
+
+  vec3 sky = textureCube(u_sky, r).rgb;
+  float lit = max(dot(n, u_sun_dir), 0.0);
+  float crest = clamp(0.35 + 0.25 * v_height, 0.0, 1.0);
+  vec3 water = u_deep_colour * (0.4 + 0.6 * lit) + u_scatter_colour * crest * (1.0 - facing);
+  vec3 colour = mix(water, sky, fresnel);
+  colour += u_sun_colour * pow(max(dot(r, u_sun_dir), 0.0), u_shininess) * (0.3 + fresnel);
+  colour = mix(colour, u_foam_colour * (0.8 + 0.2 * lit), v_foam);
+
+  // Toward the horizon the water turns into the sky colour just above it, hiding the tiling.
+  gl_FragColor = vec4(mix(colour, v_haze.rgb, v_haze.a), 1.0);
+}
