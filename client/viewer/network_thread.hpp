@@ -1,0 +1,104 @@
+// NetworkThread: the viewer's network side on its own thread - an io_context running one
+// ClientConnection (reconnecting with backoff), pushing every received frame into a SharedTimeline
+// for the render thread, optionally recording heights to .npy, and publishing stats and the
+// current stream's shape (per Welcome) under a mutex.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "client_connection.hpp"
+#include "shared_timeline.hpp"
+
+namespace ocean::viewer {
+
+struct NetworkThreadConfig {
+  client::ClientConnectionConfig connection;
+  double interpolation_delay_s = 0.0;  // 0: FrameTimeline's default (three send intervals)
+  std::string record_path;             // empty: no recording
+};
+
+// The stream the server welcomed us to; generation grows with every Welcome.
+struct StreamShape {
+  std::uint64_t generation = 0;
+  int grid = 0;
+  float patch_x_m = 0.0f, patch_z_m = 0.0f;
+  std::string profile;
+  double tick_period_s = 0.0;
+  double send_interval_s = 0.0;
+};
+
+struct NetworkStats {
+  std::uint64_t frames_received = 0;
+  std::uint64_t bytes_in = 0;         // TCP + UDP, every session
+  double kbps = 0.0;                  // over the last second or so
+  double rtt_ms = 0.0;                // smoothed, 0 until the first Pong
+  double loss_pct = 0.0;              // frames never received among those the ticks say were sent
+  std::uint64_t connects = 0;
+  bool connected = false;
+  std::string path;                   // "tcp", "udp", "udp-proving"
+  double cpu_ms = 0.0;                // network thread CPU (receive, verify, decode), recording excluded
+  double record_ms = 0.0;             // network thread CPU spent writing the recording
+  std::uint64_t frames_recorded = 0;
+  std::uint64_t frames_not_recorded = 0;  // a later session's grid differed from the recording's
+  std::string record_error;
+  std::string last_close_reason;
+  // The current session's protocol counters, for telling a quiet server from a refused stream.
+  std::uint64_t chunks_received = 0, chunks_rejected = 0, messages_rejected = 0, keyframe_requests = 0;
+};
+
+class NetworkThread {
+ public:
+  explicit NetworkThread(NetworkThreadConfig config);
+  ~NetworkThread();  // stops
+  NetworkThread(const NetworkThread&) = delete;
+  NetworkThread& operator=(const NetworkThread&) = delete;
+
+  void start();
+  // Says Bye, stops reconnecting, joins the thread, and closes the recording.
+  void stop();
+
+  client::SharedTimeline& timeline() { return timeline_; }
+  StreamShape stream() const;
+  NetworkStats stats() const;
+  std::uint64_t frames_received() const { return frames_received_.load(); }
+  // True once a frame has arrived; false after timeout_s without one.
+  bool wait_for_first_frame(double timeout_s) const;
+
+ private:
+  void run();
+  void on_welcome(const protocol::Welcome& welcome);
+  void on_frame(const codec::ReconstructedFrame& frame, std::uint32_t tick);
+  void publish(const client::ClientConnection& connection, double now);
+
+  NetworkThreadConfig config_;
+  client::SharedTimeline timeline_;
+  std::thread thread_;
+  std::atomic<bool> stop_requested_{false};
+  std::atomic<std::uint64_t> frames_received_{0};
+
+  // Network-thread state.
+  struct SessionTicks {
+    bool any = false;
+    std::uint32_t first = 0, last = 0;
+    std::uint64_t received = 0;
+  } session_ticks_;
+  double expected_done_ = 0.0, received_done_ = 0.0;  // frames of ended sessions (for loss)
+  std::uint64_t bytes_done_ = 0;                      // bytes of ended sessions
+  std::uint64_t last_bytes_ = 0;
+  double last_publish_s_ = 0.0, kbps_ = 0.0;
+  double cpu_start_ms_ = 0.0, record_ms_ = 0.0;
+  double ticks_per_frame_ = 1.0;
+  struct Recording;
+  std::unique_ptr<Recording> recording_;
+
+  mutable std::mutex mutex_;  // guards stream_ and stats_
+  StreamShape stream_;
+  NetworkStats stats_;
+};
+
+}  // namespace ocean::viewer

@@ -1,0 +1,54 @@
+// StreamView: grid changes, blending and upload on the render thread.
+#include "client/viewer/stream_view.hpp"
+
+#include <algorithm>
+
+#include "client/viewer/thread_cpu_clock.hpp"
+
+namespace ocean::viewer {
+
+bool StreamView::init(const render::RendererDesc& desc, const CameraPose& pose, std::string& error) {
+  if (!renderer_.init(desc)) {
+    error = renderer_.error();
+    return false;
+  }
+  if (!hud_.init(error)) return false;
+  constexpr float kRadPerDeg = 3.14159265f / 180.0f;
+  camera_.position = {0.0, pose.eye_height_m, 0.0};
+  camera_.pitch_rad = pose.pitch_deg * kRadPerDeg;
+  camera_.yaw_rad = pose.yaw_deg * kRadPerDeg;
+  camera_.far_m = std::max(camera_.far_m, renderer_.desc().view_distance_m * 1.6f);
+  return true;
+}
+
+bool StreamView::update(NetworkThread& net, double now) {
+  const StreamShape shape = net.stream();
+  if (shape.generation != shape_.generation) {
+    const bool same_grid = shape.grid == shape_.grid && shape.patch_x_m == shape_.patch_x_m &&
+                           shape.patch_z_m == shape_.patch_z_m;
+    if (!same_grid && shape.grid > 0) {
+      if (!renderer_.set_grid(shape.grid, shape.patch_x_m, shape.patch_z_m)) {
+        error_ = "stream grid " + std::to_string(shape.grid) + ": " + renderer_.error();
+        return false;
+      }
+      // The old frame's samples do not fit the new grid: nothing is shown until a frame of it arrives.
+      height_.clear(), slope_x_.clear(), slope_z_.clear();
+      ++grid_changes_;
+    }
+    shape_ = shape;
+  }
+  const double t0 = thread_cpu_ms();
+  last_ = net.timeline().render(now, height_, slope_x_, slope_z_);
+  const std::size_t samples = static_cast<std::size_t>(shape_.grid) * shape_.grid;
+  if (last_.status == client::TimelineSample::Status::empty || samples == 0 || height_.size() != samples) {
+    ++held_;  // the renderer keeps the last upload: the picture holds
+    return true;
+  }
+  const bool slopes = slope_x_.size() == samples && slope_z_.size() == samples;
+  renderer_.upload_frame(height_.data(), slopes ? slope_x_.data() : nullptr, slopes ? slope_z_.data() : nullptr);
+  upload_cpu_ms_ += thread_cpu_ms() - t0;
+  ++uploads_;
+  return true;
+}
+
+}  // namespace ocean::viewer

@@ -1,0 +1,51 @@
+// StreamView: the render thread's side of the networked viewer - the renderer sized to the current
+// stream (set_grid once per Welcome whose grid differs), and per rendered frame the timeline's
+// blend of heights and slopes at the render time, uploaded; the picture holds while nothing arrives.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "client/render/hud_overlay.hpp"
+#include "client/render/renderer.hpp"
+#include "client/viewer/network_thread.hpp"
+
+namespace ocean::viewer {
+
+struct CameraPose {
+  float eye_height_m = 10.0f, pitch_deg = -6.0f, yaw_deg = 0.0f;
+};
+
+class StreamView {
+ public:
+  bool init(const render::RendererDesc& desc, const CameraPose& pose, std::string& error);
+  // Follows a new Welcome, blends the frame of time now and uploads it. False (with error()) only
+  // when the renderer refuses the stream's grid.
+  bool update(NetworkThread& net, double now);
+
+  render::Renderer& renderer() { return renderer_; }
+  render::HudOverlay& hud() { return hud_; }
+  render::Camera& camera() { return camera_; }
+  const std::string& error() const { return error_; }
+  const StreamShape& shape() const { return shape_; }
+  const client::RenderedFrame& last_frame() const { return last_; }
+
+  std::uint64_t uploads() const { return uploads_; }
+  double upload_cpu_ms() const { return upload_cpu_ms_; }  // blend + upload, render thread CPU
+  std::uint64_t grid_changes() const { return grid_changes_; }
+  std::uint64_t held_frames() const { return held_; }        // rendered with no new blend (empty timeline)
+
+ private:
+  render::Renderer renderer_;
+  render::HudOverlay hud_;
+  render::Camera camera_;
+  StreamShape shape_;
+  client::RenderedFrame last_;
+  std::vector<float> height_, slope_x_, slope_z_;
+  std::string error_;
+  std::uint64_t uploads_ = 0, grid_changes_ = 0, held_ = 0;
+  double upload_cpu_ms_ = 0.0;
+};
+
+}  // namespace ocean::viewer
