@@ -7,6 +7,11 @@ function(ocean_target_defaults target)
     target_compile_options(${target} PRIVATE -fsanitize=${OCEAN_SANITIZE} -fno-omit-frame-pointer -fno-sanitize-recover=all)
     target_link_options(${target} PRIVATE -fsanitize=${OCEAN_SANITIZE})
   endif()
+  # OCEAN_FUZZ (clang only): libraries get libFuzzer's coverage instrumentation without its main();
+  # tests/fuzz links the harnesses with -fsanitize=fuzzer.
+  if(OCEAN_FUZZ AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+  endif()
 endfunction()
 
 # ocean_add_test(NAME SOURCES a.cpp b.cpp LIBS lib1 lib2)

@@ -1,9 +1,38 @@
 #!/usr/bin/env bash
 # Installs what is needed from Debian, builds a Release tree with tests, runs every test
 # through CTest. Exits non-zero on any failure. .ci/run calls exactly this.
+# OCEAN_SANITIZE=1 adds the sanitizer runs (SECURITY.md): every test under ASan + UBSan
+# (build-asan), and the threaded server / client / loadtest tests under TSan (build-tsan).
+# OCEAN_SANITIZE=1 OCEAN_SANITIZE_ONLY=asan (or tsan) runs just that sanitizer run, without the
+# Release one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./deploy/install-deps.sh
-./deploy/build.sh
-build_dir=${OCEAN_BUILD_DIR:-build}
-ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" --timeout 600
+only=${OCEAN_SANITIZE_ONLY:-}
+if [[ -z "$only" || "${OCEAN_SANITIZE:-}" != 1 ]]; then
+  ./deploy/build.sh
+  build_dir=${OCEAN_BUILD_DIR:-build}
+  ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" --timeout 600
+fi
+
+if [[ "${OCEAN_SANITIZE:-}" != 1 ]]; then
+  exit 0
+fi
+# Findings stop the test: UBSan halts (the build also passes -fno-sanitize-recover=all); LSan may
+# ignore only Mesa/LLVM-internal leaks of the GL tests (tests/sanitizers/lsan.supp, never ours).
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:detect_stack_use_after_return=1:strict_init_order=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}
+
+if [[ -z "$only" || "$only" == asan ]]; then
+  OCEAN_BUILD_DIR=build-asan ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=address,undefined
+  ctest --test-dir build-asan --output-on-failure -j"$(nproc)" --timeout 1800
+fi
+if [[ -z "$only" || "$only" == tsan ]]; then
+  # Only the threaded parts: the server (tick loop, sessions), the client connection, the loadtest.
+  OCEAN_BUILD_DIR=build-tsan ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=thread \
+    -DOCEAN_BUILD_CLIENT=OFF \
+    -DOCEAN_DIRS="server/sim;protocol;protocol/codec;server/net;server;client/net;client/loadtest;tests;tests/server;tests/client_net;tests/loadtest"
+  ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" --timeout 1800 -R 'server|client_net|loadtest'
+fi

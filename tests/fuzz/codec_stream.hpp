@@ -1,0 +1,78 @@
+// CodecStream: a small real codec stream (16 x 16 grid with normals, a synthetic ocean) shared by
+// the codec harness and make_corpus: a key at tick 1, then deltas, each cut into several chunks,
+// plus the chunk <-> fuzz record encoding (13-byte envelope, then the payload).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "byte_reader.hpp"
+#include "decoder.hpp"
+#include "encoder.hpp"
+#include "synthetic_ocean.hpp"
+
+namespace ocean::fuzz {
+
+inline codec::StreamConfig codec_stream_config() {
+  codec::StreamConfig c;
+  c.grid = 16;
+  c.rate_hz = 30;
+  c.normals = true;
+  return c;
+}
+
+inline constexpr std::size_t kCodecStreamPayload = 120;  // small, so frames span several chunks
+
+inline codec::DecoderOptions codec_stream_decoder_options() {
+  codec::DecoderOptions o;
+  o.max_payload = kCodecStreamPayload;
+  return o;
+}
+
+// frames[i] is tick i + 1: frames[0] the key, frames[i] a delta from tick i.
+inline std::vector<std::shared_ptr<const codec::EncodedFrame>> make_codec_stream(int frame_count) {
+  const codec::StreamConfig config = codec_stream_config();
+  codec::EncoderOptions options;
+  options.max_payload = kCodecStreamPayload;
+  codec::Encoder encoder(config, options);
+  const codec::test::SyntheticOcean ocean(config.grid, config.patch_x_m, 40, 11, 0.5);
+  std::vector<std::shared_ptr<const codec::EncodedFrame>> frames;
+  for (std::uint32_t tick = 0; tick <= static_cast<std::uint32_t>(frame_count); ++tick) {
+    const codec::test::SyntheticFrame f = ocean.at(tick * config.dt_s());
+    encoder.add_truth(tick, codec::TruthView{f.height, f.slope_x, f.slope_z});
+    if (tick == 1) frames.push_back(encoder.encode_key(1));
+    if (tick > 1) frames.push_back(encoder.encode_delta(tick, frames.back()->id));
+  }
+  return frames;
+}
+
+inline constexpr std::size_t kEnvelopeRecordBytes = 13;
+
+inline std::vector<std::uint8_t> chunk_record(const codec::Chunk& c) {
+  std::vector<std::uint8_t> out;
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(c.tick >> (8 * i)));
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(c.baseline >> (8 * i)));
+  out.push_back(c.key ? 1 : 0);
+  out.push_back(static_cast<std::uint8_t>(c.index));
+  out.push_back(static_cast<std::uint8_t>(c.index >> 8));
+  out.push_back(static_cast<std::uint8_t>(c.count));
+  out.push_back(static_cast<std::uint8_t>(c.count >> 8));
+  out.insert(out.end(), c.payload.begin(), c.payload.end());
+  return out;
+}
+
+inline codec::ChunkView chunk_view_of(std::span<const std::uint8_t> record) {
+  ByteReader in(record);
+  codec::ChunkView v;
+  v.tick = in.take<std::uint32_t>();
+  v.baseline = in.take<std::uint32_t>();
+  v.key = (in.take<std::uint8_t>() & 1) != 0;
+  v.index = in.take<std::uint16_t>();
+  v.count = in.take<std::uint16_t>();
+  v.payload = in.take_bytes(record.size());
+  return v;
+}
+
+}  // namespace ocean::fuzz
