@@ -17,8 +17,11 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-codec::StreamConfig stream_config_of(const protocol::StreamParams& s) {
+// The codec advances its state one server tick per step, so it needs the tick rate too: a stream
+// slower than its server (lite at 15 Hz under 30 Hz ticks) carries every n-th tick.
+codec::StreamConfig stream_config_of(const protocol::StreamParams& s, double tick_period_s) {
   codec::StreamConfig c;
+  c.tick_rate_hz = static_cast<std::uint16_t>(std::lround(1.0 / tick_period_s));
   c.profile_id = s.profile_id;
   c.grid = s.grid;
   c.patch_x_m = s.patch_x_m;
@@ -160,7 +163,7 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
 }
 
 void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now) {
-  const codec::StreamConfig config = stream_config_of(welcome.stream);
+  const codec::StreamConfig config = stream_config_of(welcome.stream, welcome.tick_period_s);
   if (const std::string problem = codec::validate(config); !problem.empty()) {
     ++stats_.rejected_by_reason[static_cast<std::size_t>(protocol::Reason::out_of_range)];
     return close("Welcome.stream is not decodable by this client's codec: " + problem);

@@ -25,7 +25,7 @@ const StreamConfig& require_valid(const StreamConfig& config) {
 ModalModel::ModalModel(const StreamConfig& config)
     : n_(require_valid(config).grid), log2n_(config.grid_log2()), normals_(config.normals), fft_(config.grid) {
   const int n = n_, hc = n / 2 + 1;
-  const double dt = 1.0 / static_cast<double>(config.rate_hz);
+  const double dt = config.dt_s();  // one tick step: deltas advance (tick - baseline) steps
   a_.resize(static_cast<std::size_t>(n) * hc);
   for (int r = 0; r < n; ++r) {
     const double kz = kTwoPi * signed_index(r, n) / config.patch_z_m;

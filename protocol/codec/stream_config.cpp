@@ -33,7 +33,7 @@ int StreamConfig::grid_log2() const {
 bool operator==(const StreamConfig& a, const StreamConfig& b) {
   return a.profile_id == b.profile_id && a.grid == b.grid && a.patch_x_m == b.patch_x_m &&
          a.patch_z_m == b.patch_z_m && a.gravity_mps2 == b.gravity_mps2 && a.depth_m == b.depth_m &&
-         a.rate_hz == b.rate_hz && a.height_step_m == b.height_step_m && a.slope_step == b.slope_step &&
+         a.rate_hz == b.rate_hz && a.effective_tick_rate_hz() == b.effective_tick_rate_hz() && a.height_step_m == b.height_step_m && a.slope_step == b.slope_step &&
          a.disp_step_m == b.disp_step_m && a.normals == b.normals && a.choppy == b.choppy;
 }
 
@@ -52,6 +52,8 @@ std::string validate(const StreamConfig& c) {
     m << "depth_m = " << c.depth_m << ": must be finite and >= 0 (0 = deep water)";
   else if (c.rate_hz < 1 || c.rate_hz > 240)
     m << "rate_hz = " << c.rate_hz << ": must be in [1, 240]";
+  else if (c.tick_rate_hz != 0 && (c.tick_rate_hz > 240 || c.tick_rate_hz < c.rate_hz))
+    m << "tick_rate_hz = " << c.tick_rate_hz << ": must be 0 (= rate_hz) or in [rate_hz, 240]";
   else if (!(c.height_step_m >= 1e-4f && c.height_step_m <= 1.0f))
     m << "height_step_m = " << c.height_step_m << ": must be in [1e-4, 1]";
   else if (c.normals && !(c.slope_step >= 1e-5f && c.slope_step <= 0.5f))

@@ -16,7 +16,11 @@ struct StreamConfig {
   double patch_z_m = 256.0;      // along z (rows), > 0
   double gravity_mps2 = 9.81;    // > 0
   double depth_m = 0.0;          // water depth; 0 = deep water
-  std::uint16_t rate_hz = 30;    // frames per second (tick = frame), 1..240
+  std::uint16_t rate_hz = 30;    // frames per second, 1..240
+  // Server ticks per second, the unit of StateId / chunk tick numbers; 0 = rate_hz (every tick is
+  // a frame). A stream at a lower rate than its server carries every (tick_rate_hz / rate_hz)-th
+  // tick, and a delta still advances the state by (tick - baseline) steps of 1 / tick_rate_hz.
+  std::uint16_t tick_rate_hz = 0;
   float height_step_m = 0.01f;   // height error bound is step / 2; in [1e-4, 1] m
   float slope_step = 1.0f / 256; // slope error bound is step / 2 (normals only); in [1e-5, 0.5]
   float disp_step_m = 0.01f;     // choppy only (not yet coded by this codec version)
@@ -29,7 +33,8 @@ struct StreamConfig {
                                    double gravity_mps2, double depth_m);
 
   int grid_log2() const;
-  double dt_s() const { return 1.0 / rate_hz; }
+  std::uint16_t effective_tick_rate_hz() const { return tick_rate_hz != 0 ? tick_rate_hz : rate_hz; }
+  double dt_s() const { return 1.0 / effective_tick_rate_hz(); }  // one tick step
 };
 
 bool operator==(const StreamConfig& a, const StreamConfig& b);

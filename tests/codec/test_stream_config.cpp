@@ -54,3 +54,17 @@ TEST_CASE("encoder options are checked") {
   o.max_payload = 10;
   CHECK_THROWS_WITH(Encoder(StreamConfig{}, o), Catch::Contains("max_payload"));
 }
+
+TEST_CASE("tick_rate_hz sets the step a delta advances by; 0 means rate_hz") {
+  StreamConfig c;
+  c.rate_hz = 15;
+  CHECK(c.dt_s() == 1.0 / 15);
+  c.tick_rate_hz = 30;
+  CHECK(c.dt_s() == 1.0 / 30);
+  CHECK(validate(c).empty());
+  c.tick_rate_hz = 10;  // below the stream's own rate
+  CHECK(validate(c).find("tick_rate_hz") != std::string::npos);
+  StreamConfig same_as_rate;
+  same_as_rate.tick_rate_hz = same_as_rate.rate_hz;
+  CHECK(same_as_rate == StreamConfig{});  // explicit equal rate is the default
+}
