@@ -4,6 +4,7 @@
 #include "config_options.hpp"
 #include "server.hpp"
 #include "server_log.hpp"
+#include "session_hub.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
     ocean::server::set_log_level(loaded.config.log_level);
     spdlog::info("ocean-server starting: {}", ocean::server::describe_config(loaded.config));
     ocean::server::Server server(std::move(loaded.config));
+    ocean::server::SessionHub sessions(server);
     server.run();
     return 0;
   } catch (const std::exception& e) {

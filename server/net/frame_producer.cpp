@@ -18,8 +18,8 @@ struct FrameProducer::BufferPool {
 FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*> profiles)
     : schedule_(std::move(schedule)),
       profiles_(std::move(profiles)),
-      active_scene_(&schedule_.base()),
-      ocean_(std::make_unique<sim::Ocean>(*active_scene_)),
+      scheduled_scene_(&schedule_.base()),
+      ocean_(std::make_unique<sim::Ocean>(*scheduled_scene_)),
       pool_(std::make_shared<BufferPool>()) {}
 
 std::shared_ptr<TickFrames> FrameProducer::take_buffer() {
@@ -40,16 +40,24 @@ std::shared_ptr<TickFrames> FrameProducer::take_buffer() {
 }
 
 std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, double time_s) {
-  const sim::SceneParams& scene = schedule_.scene_at(tick);
-  scene_changed_ = &scene != active_scene_;
-  if (scene_changed_) {
-    ocean_ = std::make_unique<sim::Ocean>(scene);
-    active_scene_ = &scene;
+  const sim::SceneParams& scheduled = schedule_.scene_at(tick);
+  scene_changed_ = false;
+  if (&scheduled != scheduled_scene_) {
+    scheduled_scene_ = &scheduled;
+    ocean_ = std::make_unique<sim::Ocean>(scheduled);
+    scene_changed_ = true;
+  }
+  if (override_) {
+    ocean_ = std::make_unique<sim::Ocean>(*override_);
+    override_.reset();
+    scene_changed_ = true;
   }
 
   std::shared_ptr<TickFrames> result = take_buffer();
   result->tick = tick;
   result->time_s = time_s;
+  result->scene = ocean_->params();
+  result->scene_changed = scene_changed_;
   result->frames.resize(profiles_.size());
   for (std::size_t i = 0; i < profiles_.size(); ++i) {
     const Profile& profile = *profiles_[i];

@@ -83,6 +83,7 @@ Server::Server(ServerConfig config)
   (void)producer_.produce(clock.tick_at(system_unix_ns()), now_s);
   tcp_port_ = acceptor_.local_endpoint().port();
   udp_port_ = udp_socket_.local_endpoint().port();
+  udp_socket_.non_blocking(true);  // a full socket buffer drops a datagram rather than stall the network thread
   if (config_.metrics_listen) {
     metrics_http_ = std::make_unique<MetricsHttpServer>(context_, *config_.metrics_listen,
                                                         [this](const HttpRequest& r) { return handle_http(r); });
@@ -131,7 +132,7 @@ void Server::do_stop() {
   udp_socket_.close(ignored);
   if (metrics_http_) metrics_http_->stop();
   tick_loop_.stop();  // joins the simulation thread; frames it already queued are drained below
-  // Phase 2: sessions are told the server is going away here, before the context runs dry.
+  if (stop_handler_) stop_handler_();  // sessions say Bye while the context still runs
 }
 
 void Server::do_accept() {
@@ -167,15 +168,32 @@ void Server::do_receive() {
   });
 }
 
+void Server::request_scene(const sim::SceneParams& scene) {
+  std::lock_guard lock(scene_request_mutex_);
+  scene_request_ = scene;
+}
+
+bool Server::send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to) {
+  if (!udp_socket_.is_open()) return false;
+  std::error_code error;
+  udp_socket_.send_to(asio::buffer(bytes.data(), bytes.size()), to, 0, error);
+  return !error;
+}
+
 void Server::on_tick(const TickDecision& decision) {
   const auto start = std::chrono::steady_clock::now();
+  {
+    std::lock_guard lock(scene_request_mutex_);
+    if (scene_request_) producer_.override_scene(*scene_request_);
+    scene_request_.reset();
+  }
   const double time_s = tick_loop_.clock().sim_time_s(decision.tick);
   std::shared_ptr<const TickFrames> frames = producer_.produce(decision.tick, time_s);
   const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
 
   if (producer_.scene_changed()) {
     metrics_.scene_changes.inc();
-    spdlog::info("tick {}: scheduled scene change applied (wind {} m/s towards {} deg)", decision.tick,
+    spdlog::info("tick {}: scene change applied (wind {} m/s towards {} deg)", decision.tick,
                  producer_.scene().wind_speed_mps, producer_.scene().wind_dir_deg);
   }
   metrics_.ticks.inc();

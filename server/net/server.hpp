@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 
@@ -33,6 +34,7 @@ class Server {
   using FrameSink = std::function<void(const std::shared_ptr<const TickFrames>&)>;
   using ConnectionHandler = std::function<void(asio::ip::tcp::socket)>;
   using DatagramHandler = std::function<void(std::span<const std::uint8_t>, const asio::ip::udp::endpoint&)>;
+  using StopHandler = std::function<void()>;
 
   // Binds every socket and builds the simulation; throws std::system_error (address in use...)
   // or sim::ParamError. The config must have passed validate_server_config.
@@ -45,6 +47,12 @@ class Server {
   void set_frame_sink(FrameSink sink) { frame_sink_ = std::move(sink); }
   void set_connection_handler(ConnectionHandler handler) { connection_handler_ = std::move(handler); }
   void set_datagram_handler(DatagramHandler handler) { datagram_handler_ = std::move(handler); }
+  // Runs on the network thread when shutdown begins, before the context runs dry (Bye to all).
+  void set_stop_handler(StopHandler handler) { stop_handler_ = std::move(handler); }
+  // Thread-safe: the simulation switches to this scene at the next tick (admin ParamChange).
+  void request_scene(const sim::SceneParams& scene);
+  // Sends one datagram without blocking; false when the socket refused it (the frame is lost).
+  bool send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to);
 
   // Runs the network side on the calling thread until SIGINT, SIGTERM or stop().
   void run();
@@ -85,6 +93,9 @@ class Server {
   FrameSink frame_sink_;
   ConnectionHandler connection_handler_;
   DatagramHandler datagram_handler_;
+  StopHandler stop_handler_;
+  std::mutex scene_request_mutex_;
+  std::optional<sim::SceneParams> scene_request_;  // guarded by scene_request_mutex_
 
   std::array<std::uint8_t, 1500> datagram_{};
   asio::ip::udp::endpoint datagram_sender_;

@@ -13,7 +13,16 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       frames_dropped(registry.counter("ocean_frames_dropped_total",
                                       "Computed tick frames dropped because the network side was behind.")),
       current_tick(registry.gauge("ocean_tick", "Index of the last tick run, counted from the epoch.")),
-      scene_changes(registry.counter("ocean_scene_changes_total", "Scheduled scene changes applied.")),
+      scene_changes(registry.counter("ocean_scene_changes_total", "Scene changes applied (schedule or admin ParamChange).")),
+      keyframes_sent(registry.counter("ocean_keyframes_sent_total", "Keyframes queued to clients.")),
+      encodes(registry.counter("ocean_encodes_total", "Encoder runs (one per profile, tick and baseline).")),
+      encodes_last_tick(registry.gauge("ocean_encodes_last_tick",
+                                       "Encoder runs for the last tick over all profiles; clients sharing a baseline share one.")),
+      send_queue_drops(registry.counter("ocean_send_queue_drops_total",
+                                        "Frames not queued because a client's bounded send queue was full.")),
+      frames_skipped_bandwidth(registry.counter("ocean_frames_skipped_bandwidth_total",
+                                                "Frames skipped to stay within a client's announced bandwidth.")),
+      param_changes(registry.counter("ocean_param_changes_total", "Admin parameter changes accepted.")),
       registry_(registry) {}
 
 Counter& ServerMetrics::frames_computed(std::string_view profile) {

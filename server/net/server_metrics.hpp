@@ -22,6 +22,12 @@ class ServerMetrics {
   Counter& frames_dropped;   // computed frames the network side had no room for
   Gauge& current_tick;       // the last tick index run
   Counter& scene_changes;    // scheduled scene changes applied
+  Counter& keyframes_sent;   // keyframes queued to clients
+  Counter& encodes;          // encoder runs (each a distinct profile, tick and baseline)
+  Gauge& encodes_last_tick;  // encoder runs for the last tick, all profiles: the sharing proof
+  Counter& send_queue_drops; // frames not queued because a client's send queue was full
+  Counter& frames_skipped_bandwidth;  // frames skipped to stay within a client's bandwidth_bps
+  Counter& param_changes;    // admin ParamChanges accepted
 
   Counter& frames_computed(std::string_view profile);
   Gauge& clients(std::string_view profile, std::string_view transport);

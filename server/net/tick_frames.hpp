@@ -4,6 +4,7 @@
 
 #include "frame.hpp"
 #include "profile.hpp"
+#include "scene_params.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -19,6 +20,8 @@ struct TickFrames {
   std::int64_t tick = 0;
   double time_s = 0.0;
   std::vector<ProfileFrame> frames;  // in the order of ServerConfig::profiles
+  sim::SceneParams scene;            // the scene these frames show
+  bool scene_changed = false;        // this tick is the first of a new scene (schedule or admin)
 };
 
 }  // namespace ocean::server

@@ -1,0 +1,44 @@
+// Session: one connected client as the SessionHub keeps it: its TCP link, the profile stream it
+// watches, its proven UDP address, its baselines, and the timers of keys, bandwidth and silence.
+#pragma once
+
+#include "baseline_tracker.hpp"
+#include "profile_stream.hpp"
+#include "tcp_link.hpp"
+#include "token_bucket.hpp"
+#include "udp_cookie.hpp"
+
+#include <asio/ip/udp.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace ocean::server {
+
+struct Session {
+  std::uint64_t id = 0;
+  std::shared_ptr<TcpLink> link;
+  std::string peer;                         // for logs
+  bool welcomed = false;
+  ProfileStream* stream = nullptr;          // set by the Welcome
+  Cookie cookie{};
+  bool wants_udp = false;                   // Hello / SetTransport
+  std::optional<asio::ip::udp::endpoint> udp;  // proven by a UdpHello
+  BaselineTracker baselines;
+  bool need_key = true;                     // the next frame must be a key
+  bool key_requested = false;               // a KeyframeRequest waits for its rate limit
+  double last_key_s = -std::numeric_limits<double>::infinity();
+  TokenBucket udp_bucket{0.0, 0.0, 0.0};
+  double bytes_per_s = 0.0;                 // the client's budget; 0 = unlimited
+  double opened_s = 0.0;
+  double last_heard_s = 0.0;
+  std::optional<std::uint32_t> scene_request_id;  // this session's accepted ParamChange
+
+  bool on_udp() const { return wants_udp && udp.has_value(); }
+  const char* transport_name() const { return on_udp() ? "udp" : "tcp"; }
+};
+
+}  // namespace ocean::server

@@ -1,0 +1,488 @@
+#include "session_hub.hpp"
+
+#include "message_builders.hpp"
+#include "message_readers.hpp"
+#include "admin_token.hpp"
+#include "server_log.hpp"
+#include "wire_params.hpp"
+#include "verify_message.hpp"
+
+#include <sodium.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <set>
+
+namespace ocean::server {
+namespace {
+
+std::int64_t unix_ms_now() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+std::string endpoint_text(const auto& endpoint) {
+  std::string text = endpoint.address().to_string();
+  text += ':';
+  text += std::to_string(endpoint.port());
+  return text;
+}
+
+SharedBytes share(protocol::Bytes bytes) { return std::make_shared<const protocol::Bytes>(std::move(bytes)); }
+
+// The cookie binds the client's IP only: its UDP port is not known when the Welcome is sent.
+asio::ip::udp::endpoint cookie_endpoint(const asio::ip::address& address) { return {address, 0}; }
+
+}  // namespace
+
+SessionHub::SessionHub(Server& server, SessionHubOptions options)
+    : server_(server), options_(options), scene_(server.config().scene) {
+  for (const std::string& name : server_.config().profiles) {
+    const Profile* profile = find_profile(std::string_view(name));
+    if (!profile) continue;
+    const codec::StreamConfig config = stream_config(*profile, scene_);
+    if (const std::string error = codec::validate(config); !error.empty()) {
+      spdlog::warn("profile {} is not offered to clients: {}", profile->name, error);
+      continue;
+    }
+    streams_.push_back(std::make_unique<ProfileStream>(*profile, config));
+  }
+  if (streams_.empty()) throw std::invalid_argument("--profiles: no offered profile can be streamed by the codec");
+  for (std::size_t r = 0; r < datagram_rejects_.size(); ++r)
+    datagram_rejects_[r] = &server_.metrics().rejects(protocol::to_string(static_cast<protocol::Reason>(r)));
+  server_.set_connection_handler([this](asio::ip::tcp::socket socket) { on_connection(std::move(socket)); });
+  server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
+    on_datagram(bytes, sender);
+  });
+  server_.set_frame_sink([this](const std::shared_ptr<const TickFrames>& frames) { on_frames(frames); });
+  server_.set_stop_handler([this] { on_stop(); });
+}
+
+codec::StreamConfig SessionHub::stream_config(const Profile& profile, const sim::SceneParams& scene) const {
+  codec::StreamConfig config =
+      codec::StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m);
+  config.tick_rate_hz = static_cast<std::uint16_t>(server_.config().tick_rate_hz);
+  return config;
+}
+
+std::uint64_t SessionHub::new_session_id() const {
+  std::uint64_t id = 0;
+  while (id == 0 || sessions_.count(id)) randombytes_buf(&id, sizeof id);
+  return id;
+}
+
+std::size_t SessionHub::max_queued_bytes() const {
+  std::size_t most = 0;
+  for (const auto& [id, session] : sessions_) most = std::max(most, session->link->queued_bytes());
+  return most;
+}
+
+std::size_t SessionHub::peak_queued_bytes() const {
+  std::size_t most = peak_closed_queued_bytes_;
+  for (const auto& [id, session] : sessions_) most = std::max(most, session->link->peak_queued_bytes());
+  return most;
+}
+
+// ---- TCP ----
+
+void SessionHub::on_connection(asio::ip::tcp::socket socket) {
+  if (options_.socket_send_buffer_bytes > 0) {
+    std::error_code ignored;
+    socket.set_option(asio::socket_base::send_buffer_size(options_.socket_send_buffer_bytes), ignored);
+  }
+  auto session = std::make_shared<Session>();
+  session->link = std::make_shared<TcpLink>(std::move(socket), options_.send_queue_bytes);
+  session->peer = endpoint_text(session->link->peer());
+  session->opened_s = session->last_heard_s = monotonic_s();
+  std::weak_ptr<Session> weak = session;
+  session->link->start(
+      [this, weak](std::span<const std::uint8_t> bytes) {
+        if (auto s = weak.lock()) on_tcp_message(s, bytes);
+      },
+      [this, weak](const std::string& reason) {
+        auto s = weak.lock();
+        if (!s) return;
+        peak_closed_queued_bytes_ = std::max(peak_closed_queued_bytes_, s->link->peak_queued_bytes());
+        if (s->welcomed) {
+          log_disconnect(s->id, s->transport_name(), s->peer, reason);
+          sessions_.erase(s->id);
+          update_client_gauges();
+        }
+        std::erase(handshaking_, s);
+      });
+  if (stopping_ || sessions_.size() + handshaking_.size() >= static_cast<std::size_t>(server_.config().max_clients)) {
+    handshaking_.push_back(session);
+    return refuse(*session, protocol::Reason::server_full,
+                  "server_full: " + std::to_string(server_.config().max_clients) + " clients connected (--max-clients)");
+  }
+  handshaking_.push_back(session);
+}
+
+void SessionHub::send_control(Session& session, protocol::Bytes bytes) {
+  session.link->send(share(std::move(bytes)));
+}
+
+void SessionHub::refuse(Session& session, protocol::Reason reason, const std::string& text) {
+  const std::string_view name = protocol::to_string(reason);
+  log_reject("tcp", session.peer, name);
+  server_.metrics().rejects(name).inc();
+  send_control(session, protocol::encode(protocol::Error{reason, text.substr(0, protocol::kMaxTextBytes)}));
+  session.link->close_after_flush(1.0);
+}
+
+void SessionHub::end(Session& session, wire::ByeReason reason, const std::string& text) {
+  send_control(session, protocol::encode(protocol::Bye{reason, text}));
+  session.link->close_after_flush(1.0);
+}
+
+void SessionHub::on_tcp_message(const std::shared_ptr<Session>& session, std::span<const std::uint8_t> bytes) {
+  if (bytes.empty()) {
+    const protocol::Reason reason = session->link->framing_failure();
+    return refuse(*session, reason, std::string(protocol::to_string(reason)) +
+                                        " in the TCP size prefix: expected a message of 12.." +
+                                        std::to_string(protocol::kDefaultMaxMessageBytes) + " bytes");
+  }
+  const protocol::Verified verified =
+      protocol::verify_message(bytes, {protocol::Sender::client, wire::Transport::tcp, protocol::kDefaultMaxMessageBytes});
+  if (!verified) return refuse(*session, verified.reason, protocol::describe(verified));
+  const double now = monotonic_s();
+  session->last_heard_s = now;
+  const wire::Message& message = *verified.message;
+  if (!session->welcomed) {
+    if (message.body_type() != wire::Body::Hello)
+      return refuse(*session, protocol::Reason::unexpected_message, "unexpected_message: expected Hello first");
+    return on_hello(session, *message.body_as_Hello());
+  }
+  switch (message.body_type()) {
+    case wire::Body::Ack:
+      session->baselines.on_ack({message.body_as_Ack()->latest_tick(), message.body_as_Ack()->ack_bits()});
+      break;
+    case wire::Body::KeyframeRequest:
+      session->key_requested = true;
+      break;
+    case wire::Body::SetTransport:
+      session->wants_udp = message.body_as_SetTransport()->transport() == wire::Transport::udp;
+      if (!session->wants_udp) session->need_key = true;  // PROTOCOL.md 5.6: a key, then TCP only
+      update_client_gauges();
+      break;
+    case wire::Body::ParamChange:
+      on_param_change(session, *message.body_as_ParamChange());
+      break;
+    case wire::Body::Ping: {
+      const wire::Ping& ping = *message.body_as_Ping();
+      send_control(*session, protocol::encode(protocol::Pong{ping.seq(), ping.client_time_us(), tick_, unix_ms_now()}));
+      break;
+    }
+    case wire::Body::Bye:
+      session->link->close("client_bye");
+      break;
+    default:
+      refuse(*session, protocol::Reason::unexpected_message,
+             "unexpected_message: a Hello after the Welcome");
+  }
+}
+
+ProfileStream* SessionHub::choose_profile(std::uint8_t wanted, std::uint64_t bandwidth_bps) const {
+  if (wanted != 0) {
+    for (const auto& stream : streams_)
+      if (stream->profile().id == wanted) return stream.get();
+    return nullptr;
+  }
+  // Server's choice: the first offered profile whose delta rate fits 80 % of the budget, else the
+  // lightest (smallest grid). The rate is measured once the profile streams; before that it is
+  // estimated at half a byte per sample and frame.
+  ProfileStream* lightest = streams_.front().get();
+  for (const auto& stream : streams_)
+    if (stream->profile().grid < lightest->profile().grid) lightest = stream.get();
+  if (bandwidth_bps == 0) return streams_.front().get();
+  for (const auto& stream : streams_) {
+    const double grid = stream->profile().grid;
+    const double frame_bytes = stream->mean_delta_bytes() > 0.0 ? stream->mean_delta_bytes() : 0.5 * grid * grid;
+    const double bps = frame_bytes * 8.0 * stream->profile().rate_hz;
+    if (bps <= 0.8 * static_cast<double>(bandwidth_bps)) return stream.get();
+  }
+  return lightest;
+}
+
+void SessionHub::on_hello(const std::shared_ptr<Session>& session, const wire::Hello& wire_hello) {
+  const protocol::Hello hello = protocol::read(wire_hello);
+  ProfileStream* stream = choose_profile(hello.profile_id, hello.bandwidth_bps);
+  if (!stream) {
+    std::string offered;
+    for (const auto& s : streams_) offered += (offered.empty() ? "" : ", ") + std::to_string(s->profile().id) + " (" + std::string(s->profile().name) + ")";
+    return refuse(*session, protocol::Reason::profile_unavailable,
+                  "profile_unavailable in Hello.profile_id: " + std::to_string(hello.profile_id) + " is not offered; offered: " + offered);
+  }
+  std::erase(handshaking_, session);
+  session->id = new_session_id();
+  session->stream = stream;
+  session->welcomed = true;
+  session->wants_udp = hello.transport == wire::Transport::udp;
+  session->bytes_per_s = static_cast<double>(hello.bandwidth_bps) / 8.0;
+  session->udp_bucket = TokenBucket(session->bytes_per_s, std::max(0.25 * session->bytes_per_s, 2.0 * protocol::kMaxDatagram),
+                                    monotonic_s());
+  session->link->set_rate(session->bytes_per_s);
+  const std::int64_t now_ms = unix_ms_now();
+  session->cookie = mint_cookie(server_.cookie_key(), session->id, cookie_endpoint(session->link->peer().address()), now_ms,
+                                options_.cookie_lifetime_ms);
+
+  protocol::Welcome welcome;
+  welcome.session_id = session->id;
+  welcome.stream = wire_stream(stream->config());
+  welcome.scene = wire_scene(scene_);
+  for (const auto& s : streams_) welcome.offered_profiles.push_back(s->profile().id);
+  welcome.epoch_unix_ms = server_.config().epoch_unix_ms;
+  welcome.current_tick = tick_;
+  welcome.tick_period_s = 1.0 / server_.config().tick_rate_hz;
+  if (session->wants_udp) {
+    welcome.udp_port = server_.udp_port();
+    welcome.udp_cookie.assign(session->cookie.begin(), session->cookie.end());
+  }
+  welcome.max_message_bytes = protocol::kDefaultMaxMessageBytes;
+  send_control(*session, protocol::encode(welcome));
+  sessions_.emplace(session->id, session);
+  log_connect(session->id, session->wants_udp ? "udp" : "tcp", session->peer, stream->profile().name);
+  update_client_gauges();
+  // The key follows with the next frame tick of the profile, shared by everyone who joined in it.
+}
+
+void SessionHub::on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& wire_change) {
+  const protocol::ParamChange change = protocol::read(wire_change);
+  if (!same_token(change.admin_token, server_.config().admin_token)) {
+    spdlog::warn("param_change refused session={} peer={} reason=unauthorized", session->id, session->peer);
+    server_.metrics().rejects("unauthorized").inc();
+    return send_control(*session, protocol::encode(protocol::Error{
+                                      protocol::Reason::unauthorized,
+                                      "unauthorized in ParamChange.admin_token: expected the server's admin token"}));
+  }
+  sim::SceneParams scene = scene_;
+  if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;
+  if (change.wind_dir_deg) scene.wind_dir_deg = *change.wind_dir_deg;
+  if (change.amplitude) scene.amplitude = *change.amplitude;
+  if (change.choppiness) scene.choppiness = *change.choppiness;
+  if (change.spectrum) scene.spectrum = static_cast<sim::SpectrumKind>(*change.spectrum);
+  if (const std::string error = sim::validate(scene); !error.empty())
+    return send_control(*session, protocol::encode(protocol::Error{protocol::Reason::out_of_range, error.substr(0, 256)}));
+  for (auto& [id, s] : sessions_) s->scene_request_id.reset();
+  session->scene_request_id = change.request_id;
+  server_.request_scene(scene);
+  server_.metrics().param_changes.inc();
+  spdlog::info("param_change accepted session={} peer={} request={} wind={} m/s dir={} deg amplitude={} choppiness={}",
+               session->id, session->peer, change.request_id, scene.wind_speed_mps, scene.wind_dir_deg, scene.amplitude,
+               scene.choppiness);
+}
+
+// ---- UDP ----
+
+void SessionHub::drop_datagram(protocol::Reason reason, const asio::ip::udp::endpoint& sender) {
+  datagram_rejects_[static_cast<std::size_t>(reason) % datagram_rejects_.size()]->inc();
+  if (spdlog::should_log(spdlog::level::debug)) log_reject("udp", endpoint_text(sender), protocol::to_string(reason), true);
+}
+
+void SessionHub::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
+  if (bytes.size() > datagram_.size()) return drop_datagram(protocol::Reason::oversized, sender);
+  std::memcpy(datagram_.data(), bytes.data(), bytes.size());  // verify_message needs 8-byte alignment
+  const std::span<const std::uint8_t> aligned(datagram_.data(), bytes.size());
+  const protocol::Verified verified = protocol::verify_message(aligned, {protocol::Sender::client, wire::Transport::udp});
+  const wire::Message* message = verified.message;
+  std::uint64_t session_id = 0;
+  if (verified) {
+    switch (message->body_type()) {
+      case wire::Body::UdpHello: session_id = message->body_as_UdpHello()->session_id(); break;
+      case wire::Body::Ack: session_id = message->body_as_Ack()->session_id(); break;
+      case wire::Body::KeyframeRequest: session_id = message->body_as_KeyframeRequest()->session_id(); break;
+      case wire::Body::Ping: session_id = message->body_as_Ping()->session_id(); break;
+      default: break;
+    }
+  }
+  const auto found = sessions_.find(session_id);
+  const bool proven = found != sessions_.end() && found->second->udp == sender;
+  if (!proven) unproven_bytes_in_ += bytes.size();
+  if (!verified) return drop_datagram(verified.reason, sender);
+  if (found == sessions_.end()) return drop_datagram(protocol::Reason::bad_session, sender);
+  Session& session = *found->second;
+  if (message->body_type() == wire::Body::UdpHello) {
+    // Stateless first: the MAC binds the cookie to this IP; then the session's own cookie.
+    const auto* cookie = message->body_as_UdpHello()->cookie();
+    const CookieCheck check = verify_cookie(server_.cookie_key(), std::span<const std::uint8_t>(cookie->data(), cookie->size()),
+                                            cookie_endpoint(sender.address()), unix_ms_now());
+    if (check.status != CookieStatus::ok || check.session_id != session_id) return drop_datagram(protocol::Reason::bad_cookie, sender);
+    if (const protocol::Reason r = protocol::check_udp_sender(*message, session.id, session.cookie); r != protocol::Reason::ok)
+      return drop_datagram(r, sender);
+    const bool moved = session.udp != sender;
+    session.udp = sender;
+    session.last_heard_s = monotonic_s();
+    const protocol::Bytes ready = protocol::encode(protocol::UdpReady{session.id});
+    if (!proven) unproven_bytes_out_ += ready.size();  // always smaller than the padded UdpHello
+    if (ready.size() <= bytes.size()) server_.send_datagram(ready, sender);
+    if (moved) {
+      spdlog::info("udp proven session={} peer={}", session.id, endpoint_text(sender));
+      update_client_gauges();
+    }
+    return;
+  }
+  if (!proven) return drop_datagram(protocol::Reason::bad_session, sender);  // address not proven
+  if (const protocol::Reason r = protocol::check_udp_sender(*message, session.id, session.cookie); r != protocol::Reason::ok)
+    return drop_datagram(r, sender);
+  session.last_heard_s = monotonic_s();
+  switch (message->body_type()) {
+    case wire::Body::Ack:
+      session.baselines.on_ack({message->body_as_Ack()->latest_tick(), message->body_as_Ack()->ack_bits()});
+      break;
+    case wire::Body::KeyframeRequest:
+      session.key_requested = true;
+      break;
+    case wire::Body::Ping: {
+      const wire::Ping& ping = *message->body_as_Ping();
+      const protocol::Bytes pong = protocol::encode(protocol::Pong{ping.seq(), ping.client_time_us(), tick_, unix_ms_now()});
+      server_.send_datagram(pong, sender);
+      break;
+    }
+    default:
+      break;
+  }
+}
+
+// ---- ticks ----
+
+void SessionHub::apply_scene_change(const TickFrames& frames) {
+  scene_ = frames.scene;
+  for (auto& stream : streams_) stream->reset(stream_config(stream->profile(), scene_));
+  for (auto& [id, session] : sessions_) {
+    const std::uint32_t request_id = session->scene_request_id.value_or(0);
+    session->scene_request_id.reset();
+    send_control(*session, protocol::encode(protocol::SceneUpdate{request_id, tick_, wire_scene(scene_)}));
+    session->baselines.reset();  // the codec cannot predict across a physics change
+    session->need_key = true;
+  }
+}
+
+void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
+  if (stopping_) return;
+  tick_ = static_cast<std::uint32_t>(frames->tick);
+  if (frames->scene_changed && have_tick_) apply_scene_change(*frames);
+  scene_ = frames->scene;
+  have_tick_ = true;
+  for (auto& stream : streams_)
+    for (const ProfileFrame& frame : frames->frames)
+      if (frame.profile == &stream->profile()) stream->add_truth(tick_, frame.frame);
+
+  const double now = monotonic_s();
+  std::vector<std::pair<const void*, codec::StateId>> bases;
+  HubTickStats stats;
+  stats.tick = tick_;
+  for (auto& [id, session] : sessions_) {
+    try {
+      serve(*session, tick_, now, bases);
+    } catch (const std::exception& e) {  // an encoder precondition: a server bug, not the client's
+      spdlog::error("session={} tick={}: {}", id, tick_, e.what());
+      refuse(*session, protocol::Reason::internal_error, "internal_error: the server failed to encode a frame");
+    }
+  }
+  std::sort(bases.begin(), bases.end());
+  stats.sessions_served = bases.size();
+  stats.distinct_baselines = static_cast<std::size_t>(std::unique(bases.begin(), bases.end()) - bases.begin());
+  for (const auto& stream : streams_) {
+    stats.encodes += stream->encodes_this_tick();
+    if (stream->encodes_this_tick() > 0) server_.metrics().encode_seconds.observe(stream->encode_seconds_this_tick());
+  }
+  server_.metrics().encodes.inc(static_cast<double>(stats.encodes));
+  server_.metrics().encodes_last_tick.set(static_cast<double>(stats.encodes));
+  last_tick_ = stats;
+  if (tick_observer_) tick_observer_(stats);
+  sweep_timeouts(now);
+}
+
+void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
+                       std::vector<std::pair<const void*, codec::StateId>>& bases) {
+  ProfileStream& stream = *session.stream;
+  if (!session.link->open() || !stream.is_frame_tick(tick)) return;
+  const bool udp = session.on_udp();
+  const bool key_due = now_s - session.last_key_s >= options_.key_interval_s;
+  std::optional<codec::StateId> base;
+  if (!session.need_key && !(session.key_requested && key_due))
+    base = session.baselines.choose(tick, udp, [&](codec::StateId id) { return stream.has_state(id); });
+  ServerMetrics& metrics = server_.metrics();
+  if (!base) {
+    // A key on TCP: at once when required, else (acks missing) at most once per key interval.
+    if ((!session.need_key && !key_due) || !stream.can_key(tick)) return;
+    const SharedFrame& frame = stream.key(tick);
+    bases.emplace_back(&stream, codec::StateId{tick, 0});
+    if (!session.link->has_room(frame.bytes)) {
+      metrics.send_queue_drops.inc();
+      session.need_key = true;
+      return;
+    }
+    for (const SharedBytes& message : frame.messages) session.link->send(message);
+    session.need_key = session.key_requested = false;
+    session.last_key_s = now_s;
+    session.baselines.record_sent(tick, frame.encoded->id, true);
+    metrics.keyframes_sent.inc();
+    metrics.frames_sent("tcp").inc();
+    metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
+    if (observer_) observer_(session.id, frame);
+    return;
+  }
+  const SharedFrame& frame = stream.delta(tick, *base);
+  bases.emplace_back(&stream, *base);
+  if (udp && session.baselines.is_acked(*base)) {
+    if (!session.udp_bucket.try_take(frame.bytes, now_s)) {
+      metrics.frames_skipped_bandwidth.inc();
+      return;
+    }
+    for (const SharedBytes& message : frame.messages) server_.send_datagram(*message, *session.udp);
+    session.baselines.record_sent(tick, frame.encoded->id, false);
+    metrics.frames_sent("udp").inc();
+    metrics.bytes_sent("udp").inc(static_cast<double>(frame.bytes));
+  } else {
+    // Within the budget the link paces; beyond a quarter second of backlog a frame is skipped.
+    if (session.bytes_per_s > 0.0 && static_cast<double>(session.link->queued_bytes()) > 0.25 * session.bytes_per_s) {
+      metrics.frames_skipped_bandwidth.inc();
+      return;
+    }
+    if (!session.link->has_room(frame.bytes)) {
+      metrics.send_queue_drops.inc();
+      return;  // the baseline stays the last queued frame, or a key once it ages out
+    }
+    for (const SharedBytes& message : frame.messages) session.link->send(message);
+    session.baselines.record_sent(tick, frame.encoded->id, true);
+    metrics.frames_sent("tcp").inc();
+    metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
+  }
+  if (observer_) observer_(session.id, frame);
+}
+
+void SessionHub::sweep_timeouts(double now_s) {
+  std::vector<std::shared_ptr<Session>> expired;
+  for (const auto& session : handshaking_)
+    if (session->link->open() && now_s - session->opened_s > options_.handshake_timeout_s) expired.push_back(session);
+  for (const auto& session : expired) refuse(*session, protocol::Reason::timeout, "timeout: no Hello within the handshake time");
+  expired.clear();
+  for (const auto& [id, session] : sessions_)
+    if (session->link->open() && now_s - session->last_heard_s > server_.config().idle_timeout_s) expired.push_back(session);
+  for (const auto& session : expired) {
+    server_.metrics().rejects("idle_timeout").inc();
+    end(*session, wire::ByeReason::idle_timeout, "no message for the idle limit (--idle-timeout)");
+  }
+}
+
+void SessionHub::update_client_gauges() {
+  for (const auto& stream : streams_) {
+    double tcp = 0, udp = 0;
+    for (const auto& [id, session] : sessions_)
+      if (session->stream == stream.get()) (session->on_udp() ? udp : tcp) += 1;
+    server_.metrics().clients(stream->profile().name, "tcp").set(tcp);
+    server_.metrics().clients(stream->profile().name, "udp").set(udp);
+  }
+}
+
+void SessionHub::on_stop() {
+  stopping_ = true;
+  for (const auto& [id, session] : sessions_) end(*session, wire::ByeReason::server_shutdown, "server shutting down");
+  const std::vector<std::shared_ptr<Session>> handshaking = handshaking_;  // close() erases from it
+  for (const auto& session : handshaking) session->link->close("server_shutdown");
+}
+
+}  // namespace ocean::server

@@ -1,0 +1,195 @@
+// SessionTestClient: a small blocking client for in-process server tests, built from the protocol
+// builders and codec::Decoder only: handshake, UDP proof, frame decoding, acks, and a record of
+// every completed tick's reconstruction. The test thread pumps it; nothing here runs by itself.
+#pragma once
+
+#include "ack_window.hpp"
+#include "decoder.hpp"
+#include "message_builders.hpp"
+#include "message_readers.hpp"
+#include "tcp_framer.hpp"
+#include "verify_message.hpp"
+
+#include <asio/connect.hpp>
+#include <asio/io_context.hpp>
+#include <asio/ip/tcp.hpp>
+#include <asio/ip/udp.hpp>
+#include <asio/read.hpp>
+#include <asio/write.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+#include <thread>
+#include <vector>
+
+namespace ocean::server::test {
+
+namespace proto = ocean::protocol;
+
+class SessionTestClient {
+ public:
+  SessionTestClient(std::uint16_t tcp_port, std::uint16_t udp_port, int receive_buffer_bytes = 0)
+      : tcp_(context_), udp_(context_), udp_port_(udp_port) {
+    tcp_.open(asio::ip::tcp::v4());
+    if (receive_buffer_bytes > 0) tcp_.set_option(asio::socket_base::receive_buffer_size(receive_buffer_bytes));
+    tcp_.connect({asio::ip::make_address("127.0.0.1"), tcp_port});
+    tcp_.non_blocking(true);
+    udp_.open(asio::ip::udp::v4());
+    udp_.bind({asio::ip::make_address("127.0.0.1"), 0});
+    udp_.non_blocking(true);
+  }
+
+  void send_tcp(const proto::Bytes& bytes) {
+    tcp_.non_blocking(false);
+    std::error_code error;
+    asio::write(tcp_, asio::buffer(bytes), error);
+    tcp_.non_blocking(true);
+  }
+  void send_udp(const proto::Bytes& bytes) {
+    std::error_code error;
+    udp_.send_to(asio::buffer(bytes), {asio::ip::make_address("127.0.0.1"), udp_port_}, 0, error);
+  }
+  void hello(const proto::Hello& hello) { send_tcp(proto::encode(hello)); }
+
+  // Reads whatever arrived (TCP and UDP) without blocking; false once TCP is closed.
+  bool pump() {
+    if (reading_paused) return !tcp_closed_;
+    std::array<std::uint8_t, 8192> buffer;
+    while (!tcp_closed_) {
+      std::error_code error;
+      const std::size_t n = tcp_.read_some(asio::buffer(buffer), error);
+      if (error == asio::error::would_block) break;
+      if (error || n == 0) {
+        tcp_closed_ = true;
+        break;
+      }
+      std::span<const std::uint8_t> bytes(buffer.data(), n);
+      while (!bytes.empty()) {
+        const auto result = framer_.feed(bytes);
+        bytes = bytes.subspan(result.consumed);
+        if (result.status == proto::TcpFramer::Status::bad) {
+          tcp_closed_ = true;
+          break;
+        }
+        if (result.status == proto::TcpFramer::Status::good) on_message(framer_.message(), wire::Transport::tcp);
+      }
+    }
+    for (;;) {
+      alignas(8) std::array<std::uint8_t, 2048> datagram;
+      asio::ip::udp::endpoint from;
+      std::error_code error;
+      const std::size_t n = udp_.receive_from(asio::buffer(datagram), from, 0, error);
+      if (error) break;
+      udp_bytes_in += n;
+      on_message({datagram.data(), n}, wire::Transport::udp);
+    }
+    return !tcp_closed_;
+  }
+
+  // Sends UdpHello every 250 ms from inside pump loops until UdpReady came.
+  void prove_udp_if_due() {
+    if (!welcome || welcome->udp_port == 0 || udp_ready) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_udp_hello_ < std::chrono::milliseconds(250)) return;
+    last_udp_hello_ = now;
+    send_udp(proto::encode(proto::UdpHello{welcome->session_id, welcome->udp_cookie}));
+  }
+
+  // Every complete tick's reconstruction, as the decoder showed it when it completed.
+  std::map<std::uint32_t, std::vector<float>> completed_heights;
+  std::optional<proto::Welcome> welcome;
+  std::vector<proto::Error> errors;
+  std::vector<proto::Bye> byes;
+  std::vector<proto::SceneUpdate> scene_updates;
+  std::vector<std::uint32_t> key_ticks;
+  bool udp_ready = false;
+  bool reading_paused = false;
+  bool send_acks = true;
+  std::size_t udp_frame_chunks = 0, tcp_frame_chunks = 0, udp_bytes_in = 0, rejected_chunks = 0;
+  bool closed() const { return tcp_closed_; }
+
+ private:
+  void on_message(std::span<const std::uint8_t> bytes, wire::Transport transport) {
+    const proto::Verified verified = proto::verify_message(
+        bytes, {proto::Sender::server, transport, welcome ? welcome->max_message_bytes : proto::kDefaultMaxMessageBytes});
+    if (!verified) {
+      ++rejected_chunks;
+      return;
+    }
+    const proto::AnyMessage message = proto::decode(*verified.message);
+    if (const auto* w = std::get_if<proto::Welcome>(&message)) {
+      welcome = *w;
+      framer_.set_max_message_bytes(w->max_message_bytes);
+      codec::StreamConfig config;
+      config.profile_id = w->stream.profile_id;
+      config.grid = w->stream.grid;
+      config.patch_x_m = w->stream.patch_x_m;
+      config.patch_z_m = w->stream.patch_z_m;
+      config.gravity_mps2 = w->stream.gravity_mps2;
+      config.depth_m = w->stream.depth_m;
+      config.rate_hz = w->stream.rate_hz;
+      config.tick_rate_hz = static_cast<std::uint16_t>(std::lround(1.0 / w->tick_period_s));
+      config.height_step_m = w->stream.height_step_m;
+      config.slope_step = w->stream.slope_step;
+      config.disp_step_m = w->stream.disp_step_m;
+      config.normals = w->stream.normals;
+      config.choppy = w->stream.choppy;
+      config_ = config;
+      reset_decoder();
+    } else if (const auto* chunk = std::get_if<proto::FrameChunk>(&message)) {
+      on_chunk(*chunk, transport);
+    } else if (std::get_if<proto::UdpReady>(&message)) {
+      udp_ready = true;
+    } else if (const auto* e = std::get_if<proto::Error>(&message)) {
+      errors.push_back(*e);
+    } else if (const auto* b = std::get_if<proto::Bye>(&message)) {
+      byes.push_back(*b);
+    } else if (const auto* u = std::get_if<proto::SceneUpdate>(&message)) {
+      scene_updates.push_back(*u);
+      reset_decoder();  // the stream restarts from a key in the new scene
+    }
+  }
+
+  void reset_decoder() {
+    codec::DecoderOptions options;
+    options.max_payload = proto::kMaxChunkPayloadUdp;
+    decoder_ = std::make_unique<codec::Decoder>(config_, options);
+  }
+
+  void on_chunk(const proto::FrameChunk& chunk, wire::Transport transport) {
+    (transport == wire::Transport::udp ? udp_frame_chunks : tcp_frame_chunks)++;
+    if (!decoder_) return;
+    const codec::ChunkView view{chunk.frame.tick, chunk.frame.baseline, chunk.frame.key, chunk.index, chunk.count,
+                                chunk.payload};
+    if (decoder_->accept(view) != codec::ChunkError::ok) {
+      ++rejected_chunks;
+      return;
+    }
+    const std::uint32_t tick = chunk.frame.tick;
+    if (!decoder_->is_complete(tick) || completed_heights.count(tick)) return;
+    if (chunk.frame.key) key_ticks.push_back(tick);
+    const codec::ReconstructedFrame* shown = decoder_->latest();
+    if (shown && shown->tick == tick && shown->complete) completed_heights[tick] = shown->height;
+    const std::vector<std::uint32_t> ticks = decoder_->complete_ticks();
+    const auto window = proto::ack_window(ticks);
+    if (!window || !welcome || !send_acks) return;
+    const proto::Ack ack{welcome->session_id, welcome->udp_cookie, window->latest_tick, window->bits};
+    if (udp_ready) send_udp(proto::encode(ack));
+    else send_tcp(proto::encode(ack));
+  }
+
+  asio::io_context context_;
+  asio::ip::tcp::socket tcp_;
+  asio::ip::udp::socket udp_;
+  std::uint16_t udp_port_;
+  proto::TcpFramer framer_;
+  bool tcp_closed_ = false;
+  codec::StreamConfig config_;
+  std::unique_ptr<codec::Decoder> decoder_;
+  std::chrono::steady_clock::time_point last_udp_hello_{};
+};
+
+}  // namespace ocean::server::test

@@ -1,0 +1,131 @@
+// Sessions end to end over loopback: handshake, keys and deltas on TCP and UDP, reconstructions
+// equal to the encoder's, shared encodings, refusals, timeouts and Bye on shutdown.
+#include "session_harness.hpp"
+
+using namespace ocean::server;
+using namespace ocean::server::test;
+namespace proto = ocean::protocol;
+
+namespace {
+
+proto::Hello hello_for(std::uint8_t profile, ocean::wire::Transport transport, std::uint64_t bandwidth_bps = 0) {
+  return proto::Hello{profile, bandwidth_bps, transport, "test"};
+}
+
+}  // namespace
+
+TEST_CASE("clients on TCP and UDP reconstruct exactly what the encoder sent") {
+  SessionHarness harness(session_test_config());
+  auto tcp_mobile = harness.client();
+  auto udp_mobile = harness.client();
+  auto udp_lite = harness.client();    // 15 Hz under 30 Hz ticks: every 2nd tick
+  auto tcp_choice = harness.client();  // profile 0: the server's choice
+  tcp_mobile->hello(hello_for(1, ocean::wire::Transport::tcp));
+  udp_mobile->hello(hello_for(1, ocean::wire::Transport::udp));
+  udp_lite->hello(hello_for(4, ocean::wire::Transport::udp));
+  tcp_choice->hello(hello_for(0, ocean::wire::Transport::tcp));
+  const std::vector<SessionTestClient*> all{tcp_mobile.get(), udp_mobile.get(), udp_lite.get(), tcp_choice.get()};
+
+  REQUIRE(pump_until(all, [&] {
+    for (auto* c : all)
+      if (c->completed_heights.size() < 20) return false;
+    return udp_mobile->udp_frame_chunks > 20 && udp_lite->udp_frame_chunks > 10;
+  }));
+  CHECK(udp_mobile->udp_ready);
+  CHECK(tcp_mobile->udp_frame_chunks == 0);
+  CHECK(tcp_mobile->welcome->udp_port == 0);
+  CHECK(udp_mobile->welcome->udp_cookie.size() >= 8);
+  CHECK(udp_lite->welcome->stream.profile_id == 4);
+  CHECK(tcp_choice->welcome->stream.profile_id == 1);  // first offered, no budget given
+  for (const auto& [tick, heights] : udp_lite->completed_heights) CHECK(tick % 2 == 0);
+  for (auto* c : all) {
+    CHECK(c->errors.empty());
+    CHECK(c->key_ticks.size() == 1);  // one key, then deltas only
+    harness.check_reconstructions(*c);
+  }
+  harness.stop();
+  for (auto* c : all) {
+    pump_until({c}, [&] { return !c->byes.empty(); }, std::chrono::seconds(5));
+    REQUIRE(c->byes.size() == 1);
+    CHECK(c->byes[0].reason == ocean::wire::ByeReason::server_shutdown);
+  }
+  // Encodes per tick equal the distinct baselines served, never the number of sessions.
+  for (const HubTickStats& stats : harness.ticks()) CHECK(stats.encodes == stats.distinct_baselines);
+}
+
+TEST_CASE("clients that join in one tick share one encoding per tick") {
+  // Lite streams every 2nd tick (66 ms apart): four Hellos sent back to back land in one frame
+  // interval, or at worst straddle one boundary.
+  SessionHarness harness(session_test_config());
+  std::vector<std::unique_ptr<SessionTestClient>> clients;
+  std::vector<SessionTestClient*> all;
+  for (int i = 0; i < 4; ++i) {
+    clients.push_back(harness.client());
+    all.push_back(clients.back().get());
+  }
+  for (auto* c : all) c->hello(hello_for(4, ocean::wire::Transport::tcp));
+  REQUIRE(pump_until(all, [&] {
+    for (auto* c : all)
+      if (c->completed_heights.size() < 4) return false;
+    return true;
+  }));
+  harness.stop();
+  const std::vector<HubTickStats> ticks = harness.ticks();
+  REQUIRE(!ticks.empty());
+  const HubTickStats& last = ticks.back();
+  CHECK(last.sessions_served == 4);
+  CHECK(last.encodes == last.distinct_baselines);
+  CHECK(last.encodes <= 2);  // at worst the joins straddled one tick boundary
+  for (auto* c : all) harness.check_reconstructions(*c);
+}
+
+TEST_CASE("a profile that is not offered is refused with the offered ids") {
+  SessionHarness harness(session_test_config());
+  auto client = harness.client();
+  client->hello(hello_for(2, ocean::wire::Transport::tcp));  // desktop: valid, not offered
+  REQUIRE(pump_until({client.get()}, [&] { return client->closed(); }));
+  REQUIRE(client->errors.size() == 1);
+  CHECK(client->errors[0].code == proto::Reason::profile_unavailable);
+  CHECK(client->errors[0].text.find("1 (mobile)") != std::string::npos);
+  CHECK(!client->welcome);
+}
+
+TEST_CASE("a small bandwidth budget gets the lighter profile when the server chooses") {
+  SessionHarness harness(session_test_config());
+  auto client = harness.client();
+  client->hello(hello_for(0, ocean::wire::Transport::tcp, 64'000));
+  REQUIRE(pump_until({client.get()}, [&] { return client->welcome.has_value(); }));
+  CHECK(client->welcome->stream.profile_id == 4);  // lite
+}
+
+TEST_CASE("the bandwidth budget is respected on UDP") {
+  SessionHarness harness(session_test_config());
+  auto client = harness.client();
+  const std::uint64_t budget_bps = 200'000;
+  client->hello(hello_for(1, ocean::wire::Transport::udp, budget_bps));
+  REQUIRE(pump_until({client.get()}, [&] { return client->udp_ready && client->udp_bytes_in > 0; }));
+  const std::size_t start_bytes = client->udp_bytes_in;
+  const auto start = std::chrono::steady_clock::now();
+  pump_until({client.get()}, [] { return false; }, std::chrono::milliseconds(2000));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double bytes = static_cast<double>(client->udp_bytes_in - start_bytes);
+  // The bucket's burst is a quarter second of budget (at least two datagrams).
+  CHECK(bytes <= budget_bps / 8.0 * (seconds + 0.25) + 2400);
+  CHECK(bytes > 0);
+}
+
+TEST_CASE("a silent client is timed out with Bye") {
+  ServerConfig config = session_test_config();
+  config.idle_timeout_s = 0.5;
+  SessionHarness harness(config);
+  auto client = harness.client();
+  client->hello(hello_for(1, ocean::wire::Transport::udp));
+  client->send_acks = false;  // it only reads: silence is what the server measures
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (client->byes.empty() && std::chrono::steady_clock::now() < end) {
+    client->pump();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  REQUIRE(client->byes.size() == 1);
+  CHECK(client->byes[0].reason == ocean::wire::ByeReason::idle_timeout);
+}
