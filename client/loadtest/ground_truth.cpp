@@ -1,0 +1,76 @@
+#include "ground_truth.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace ocean::loadtest {
+
+sim::SceneParams to_sim_scene(const protocol::SceneParams& w) {
+  sim::SceneParams s;
+  s.size_x = w.size_x;
+  s.size_z = w.size_z;
+  s.patch_x_m = w.patch_x_m;
+  s.patch_z_m = w.patch_z_m;
+  s.spectrum = static_cast<sim::SpectrumKind>(w.spectrum);
+  s.spreading = static_cast<sim::SpreadingKind>(w.spreading);
+  s.wind_speed_mps = w.wind_speed_mps;
+  s.wind_dir_deg = w.wind_dir_deg;
+  s.fetch_m = w.fetch_m;
+  s.amplitude = w.amplitude;
+  s.depth_m = w.depth_m == 0.0 ? std::numeric_limits<double>::infinity() : w.depth_m;
+  s.small_wave_m = w.small_wave_m;
+  s.choppiness = w.choppiness;
+  s.gravity_mps2 = w.gravity_mps2;
+  s.seed = w.seed;
+  return s;
+}
+
+GroundTruth::GroundTruth(int tick_rate_hz, std::size_t cache_frames)
+    : rate_hz_(tick_rate_hz), cache_frames_(std::max<std::size_t>(1, cache_frames)) {
+  if (tick_rate_hz < 1) throw std::invalid_argument("GroundTruth: tick_rate_hz must be >= 1, got " + std::to_string(tick_rate_hz));
+}
+
+void GroundTruth::set_scene(std::uint32_t effective_tick, const protocol::SceneParams& scene) {
+  // Already in force at that tick (the usual case: every client reports the same Welcome).
+  if (const SceneEntry* current = scene_for(effective_tick); current && current->wire == scene) return;
+  auto it = std::find_if(scenes_.begin(), scenes_.end(), [&](const SceneEntry& e) { return e.effective_tick >= effective_tick; });
+  if (it != scenes_.end() && it->effective_tick == effective_tick) {
+    it->wire = scene;
+    it->ocean = std::make_unique<sim::Ocean>(to_sim_scene(scene));
+  } else {
+    scenes_.insert(it, SceneEntry{effective_tick, scene, std::make_unique<sim::Ocean>(to_sim_scene(scene))});
+  }
+  // Frames from the changed tick on were computed with the old scene.
+  for (auto c = cache_.begin(); c != cache_.end();)
+    c = (c->first >> 16) >= effective_tick ? cache_.erase(c) : std::next(c);
+}
+
+GroundTruth::SceneEntry* GroundTruth::scene_for(std::uint32_t tick) {
+  SceneEntry* found = nullptr;
+  for (SceneEntry& e : scenes_)
+    if (e.effective_tick <= tick) found = &e;
+  // A tick before every known scene (a client joined after a change): the oldest scene known.
+  if (!found && !scenes_.empty()) found = &scenes_.front();
+  return found;
+}
+
+double GroundTruth::time_of(std::uint32_t tick) const {
+  const std::uint32_t seconds = tick / static_cast<std::uint32_t>(rate_hz_);
+  return static_cast<double>(seconds) + static_cast<double>(tick - seconds * rate_hz_) / rate_hz_;
+}
+
+const sim::Frame& GroundTruth::at(std::uint32_t tick, int grid) {
+  const std::uint64_t key = std::uint64_t{tick} << 16 | static_cast<std::uint16_t>(grid);
+  if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+  SceneEntry* scene = scene_for(tick);
+  if (!scene) throw std::logic_error("GroundTruth::at: no scene yet (call set_scene with the Welcome's scene first)");
+  while (cache_.size() >= cache_frames_) cache_.erase(cache_.begin());
+  sim::Frame& frame = cache_[key];
+  scene->ocean->evaluate_band(time_of(tick), grid, grid, frame, sim::FrameRequest{true, false});
+  ++evaluations_;
+  return frame;
+}
+
+}  // namespace ocean::loadtest

@@ -1,0 +1,51 @@
+// GroundTruth: the frame the server should have streamed for a tick, computed once per (tick, grid)
+// from the scene in the Welcome (and every SceneUpdate from its effective tick) with the same
+// sim the server runs, and shared by every simulated client.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "message_types.hpp"
+#include "ocean.hpp"
+
+namespace ocean::loadtest {
+
+// protocol (0 = deep water) to sim (infinity = deep water).
+sim::SceneParams to_sim_scene(const protocol::SceneParams& wire);
+
+class GroundTruth {
+ public:
+  // tick_rate_hz: the server's tick rate (1 / Welcome.tick_period_s, rounded).
+  explicit GroundTruth(int tick_rate_hz, std::size_t cache_frames = 256);
+
+  // The scene in force from effective_tick on. Re-announcing a known scene changes nothing, so
+  // every client may report the Welcome and SceneUpdates it sees.
+  void set_scene(std::uint32_t effective_tick, const protocol::SceneParams& scene);
+
+  // The grid x grid band (heights and slopes) at tick; valid until the next call.
+  const sim::Frame& at(std::uint32_t tick, int grid);
+
+  // Server time of a tick as the server computes it (whole seconds and the fraction apart).
+  double time_of(std::uint32_t tick) const;
+  std::uint64_t evaluations() const { return evaluations_; }
+  std::size_t scenes() const { return scenes_.size(); }
+
+ private:
+  struct SceneEntry {
+    std::uint32_t effective_tick;
+    protocol::SceneParams wire;
+    std::unique_ptr<sim::Ocean> ocean;
+  };
+  SceneEntry* scene_for(std::uint32_t tick);
+
+  int rate_hz_;
+  std::size_t cache_frames_;
+  std::vector<SceneEntry> scenes_;  // sorted by effective_tick
+  std::map<std::uint64_t, sim::Frame> cache_;  // key: tick << 16 | grid, so begin() is the oldest
+  std::uint64_t evaluations_ = 0;
+};
+
+}  // namespace ocean::loadtest

@@ -1,0 +1,391 @@
+#include "load_run.hpp"
+
+#include <asio/io_context.hpp>
+#include <asio/steady_timer.hpp>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "client_connection.hpp"
+#include "client_tally.hpp"
+#include "frame_verdict.hpp"
+#include "ground_truth.hpp"
+#include "latency_histogram.hpp"
+#include "link_model.hpp"
+#include "npy_writer.hpp"
+#include "profile.hpp"
+
+namespace ocean::loadtest {
+namespace {
+
+double unix_now_s() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+double own_cpu_s() {
+  rusage r{};
+  getrusage(RUSAGE_SELF, &r);
+  return r.ru_utime.tv_sec + r.ru_utime.tv_usec * 1e-6 + r.ru_stime.tv_sec + r.ru_stime.tv_usec * 1e-6;
+}
+
+// utime + stime of a process from /proc/PID/stat; nullopt when it cannot be read.
+std::optional<double> process_cpu_s(int pid) {
+  if (pid <= 0) return std::nullopt;
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  if (!std::getline(in, text)) return std::nullopt;
+  const auto paren = text.rfind(')');  // the command name may hold spaces
+  if (paren == std::string::npos) return std::nullopt;
+  std::istringstream fields(text.substr(paren + 2));
+  std::string skip;
+  for (int i = 3; i < 14; ++i) fields >> skip;  // fields 3..13
+  unsigned long long utime = 0, stime = 0;
+  if (!(fields >> utime >> stime)) return std::nullopt;
+  return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
+// TCP hides loss as retransmission delay, and a lost message would break the session: TCP
+// directions get the rate and delay only, and a queue that never drops.
+LinkSpec tcp_link(const LinkSpec& spec) {
+  LinkSpec t;
+  t.rate_bps = spec.rate_bps;
+  t.delay_ms = spec.delay_ms;
+  t.queue_bytes = std::numeric_limits<std::uint32_t>::max();
+  return t;
+}
+
+client::ConnectionLinks make_links(const LinkSpec& spec, std::uint64_t seed) {
+  client::ConnectionLinks links;
+  if (!spec.impaired()) return links;
+  using Adapter = client::PacketLinkAdapter<LinkModel>;
+  links.udp_down = std::make_unique<Adapter>(spec, seed * 4 + 0);
+  links.udp_up = std::make_unique<Adapter>(spec, seed * 4 + 1);
+  links.tcp_down = std::make_unique<Adapter>(tcp_link(spec), seed * 4 + 2);
+  links.tcp_up = std::make_unique<Adapter>(tcp_link(spec), seed * 4 + 3);
+  return links;
+}
+
+// What a client's sessions reported that explains lost frames.
+struct SessionCounts {
+  std::uint64_t codec_rejected = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0;
+  std::array<std::uint64_t, client::kChunkErrorCount> codec_by_reason{};
+  void add(const client::ClientStats& s) {
+    for (std::size_t r = 0; r < codec_by_reason.size(); ++r) codec_by_reason[r] += s.chunks_rejected_by_codec[r];
+    codec_rejected += s.codec_rejected_total();
+    messages_rejected += s.rejected_total();
+    keyframe_requests += s.keyframe_requests_sent;
+    transport_fallbacks += s.transport_fallbacks;
+  }
+};
+
+// The stream every client of this run gets, fixed by the first Welcome.
+struct StreamFacts {
+  double tick_period_s = 0.0;
+  int tick_rate_hz = 0;
+  std::uint32_t interval_ticks = 1;
+  int grid = 0;
+  ErrorBounds bounds{0.0, 0.0};
+  double epoch_s = 0.0;  // unix seconds of tick 0
+  double interpolation_delay_s = 0.0;
+};
+
+struct SimClient {
+  std::shared_ptr<client::ClientConnection> connection;
+  std::optional<ClientTally> tally;
+  std::optional<std::uint32_t> welcome_tick;
+  std::uint32_t scene_tick_seen = 0;
+  std::uint64_t closed_bytes = 0, closed_keyframes = 0;
+  SessionCounts closed;
+  std::uint64_t bytes() const {
+    std::uint64_t b = closed_bytes;
+    if (const auto* s = connection ? connection->session() : nullptr) b += s->stats().tcp.bytes_in + s->stats().udp.bytes_in;
+    return b;
+  }
+  std::uint64_t keyframes() const {
+    std::uint64_t k = closed_keyframes;
+    if (const auto* s = connection ? connection->session() : nullptr) k += s->stats().keyframes_complete;
+    return k;
+  }
+};
+
+class Driver {
+ public:
+  explicit Driver(const LoadtestOptions& o) : o_(o), clients_(static_cast<std::size_t>(o.clients)), tick_timer_(io_) {}
+
+  LoadRunResult run() {
+    LoadRunResult result;
+    if (!o_.record_path.empty()) record_path_ = o_.record_path;
+    start_steady_ = client::ClientConnection::now_s();
+    start_unix_ = unix_now_s();
+    cpu_start_ = own_cpu_s();
+    server_cpu_start_ = process_cpu_s(o_.server_pid);
+    end_steady_ = start_steady_ + o_.ramp_s + o_.duration_s;
+    schedule_second(1);
+    io_.run_for(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+        std::chrono::duration<double>(o_.ramp_s + o_.duration_s + 2.0)));
+    io_.restart();
+    // An overloaded loop may not have reached its last second: end the measurement here.
+    if (!measuring_done_) finish();
+    // Let the Byes go out, then drop everything.
+    io_.run_for(std::chrono::milliseconds(200));
+    result.summary = summarize();
+    result.series = std::move(series_);
+    if (recorder_) recorder_->close();
+    result.error = record_error_;
+    return result;
+  }
+
+ private:
+  struct Clock {
+    static double now() { return client::ClientConnection::now_s(); }
+  };
+
+  void start_client(std::size_t i) {
+    client::ClientConnectionConfig config;
+    config.host = o_.host;
+    config.port = o_.port;
+    config.session.profile_id = find_profile(o_.profile)->id;
+    config.session.transport = o_.transport == "tcp" ? wire::Transport::tcp : wire::Transport::udp;
+    config.session.client_name = "ocean-loadtest-" + std::to_string(i);
+    auto connection = client::ClientConnection::create(
+        io_, config,
+        [this, i](const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) { on_frame(i, frame, tick, arrival_s); },
+        make_links(o_.link, o_.seed + i));
+    connection->set_on_welcome([this, i](const protocol::Welcome& w) { on_welcome(i, w); });
+    connection->set_on_session_end([this, i](const client::ClientSession& s, const std::string&) {
+      clients_[i].closed_bytes += s.stats().tcp.bytes_in + s.stats().udp.bytes_in;
+      clients_[i].closed_keyframes += s.stats().keyframes_complete;
+      clients_[i].closed.add(s.stats());
+    });
+    clients_[i].connection = connection;
+    connection->start();
+  }
+
+  void on_welcome(std::size_t i, const protocol::Welcome& w) {
+    if (!truth_) {
+      facts_.tick_period_s = w.tick_period_s;
+      facts_.tick_rate_hz = static_cast<int>(std::lround(1.0 / w.tick_period_s));
+      facts_.interval_ticks = w.stream.rate_hz ? std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(
+                                                                               facts_.tick_rate_hz / double(w.stream.rate_hz))))
+                                               : 1;
+      facts_.grid = w.stream.grid;
+      facts_.bounds = ErrorBounds{w.stream.height_step_m / 2.0, w.stream.normals ? w.stream.slope_step / 2.0 : 0.0};
+      facts_.epoch_s = static_cast<double>(w.epoch_unix_ms) / 1000.0;
+      // FrameTimeline's default: three send intervals behind (Fiedler's snapshot interpolation).
+      facts_.interpolation_delay_s = 3.0 * facts_.interval_ticks * facts_.tick_period_s;
+      truth_.emplace(facts_.tick_rate_hz);
+      truth_->set_scene(0, w.scene);
+    } else {
+      truth_->set_scene(w.current_tick, w.scene);
+    }
+    SimClient& c = clients_[i];
+    if (!c.welcome_tick) c.welcome_tick = w.current_tick;
+    if (!c.tally) c.tally.emplace(facts_.tick_period_s, facts_.interval_ticks);
+    c.scene_tick_seen = 0;
+  }
+
+  std::uint32_t end_tick() const { return tick_at_unix(start_unix_ + o_.ramp_s + o_.duration_s - 1.0); }
+
+  std::uint32_t tick_at_unix(double unix_s) const {
+    const double ticks = (unix_s - facts_.epoch_s) / facts_.tick_period_s;
+    return ticks <= 0 ? 0u : static_cast<std::uint32_t>(std::floor(ticks));
+  }
+
+  void on_frame(std::size_t i, const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
+    SimClient& c = clients_[i];
+    if (!truth_ || !c.tally || measuring_done_) return;
+    // The schedule owes frames up to one second before the end; later ones may still be in flight.
+    if (tick > end_tick()) return;
+    const double now_unix = unix_now_s();
+    if (const client::ClientSession* s = c.connection->session(); s && s->scene_effective_tick() != c.scene_tick_seen) {
+      c.scene_tick_seen = s->scene_effective_tick();
+      truth_->set_scene(c.scene_tick_seen, s->scene());
+    }
+    const sim::Frame& truth = truth_->at(tick, facts_.grid);
+    const FrameError error = frame_error(frame.height, frame.slope_x, frame.slope_z, truth.height, truth.slope_x, truth.slope_z);
+    ClientTally& tally = *c.tally;
+    tally.clock().observe(tick, arrival_s);
+    FrameOutcome outcome;
+    outcome.within_bound = within_bounds(error, facts_.bounds);
+    outcome.on_time = arrived_on_time(arrival_s, tick, *tally.clock().offset_s(), facts_.tick_period_s,
+                                      facts_.interpolation_delay_s);
+    if (!tally.record(tick, outcome, error.height_m)) return;
+    const double latency = now_unix - (facts_.epoch_s + truth_->time_of(tick));
+    latency_all_.add(latency);
+    latency_second_.add(latency);
+    ++second_frames_;
+    if (outcome.within_bound && outcome.on_time) ++second_ok_;
+    if (!outcome.within_bound) ++second_bad_;
+    if (i == 0 && !record_path_.empty() && record_error_.empty()) {
+      try {
+        if (!recorder_) recorder_.emplace(record_path_, facts_.grid, facts_.grid);
+        recorder_->append(frame.height);
+      } catch (const std::exception& e) {
+        record_error_ = std::string("--record: ") + e.what();
+      }
+    }
+  }
+
+  // Starts the clients due by now, and once a second prints progress and adds a series row.
+  void schedule_second(int second) {
+    const double due = start_steady_ + second * 1.0;
+    launch_due();
+    arm_at(std::min(due, next_launch_time()), [this, second, due] {
+      if (Clock::now() + 1e-4 >= due) {
+        second_tick(second);
+        if (Clock::now() < end_steady_) schedule_second(second + 1);
+        else finish();
+      } else {
+        schedule_second(second);
+      }
+    });
+  }
+
+  double next_launch_time() const {
+    if (launched_ >= clients_.size()) return std::numeric_limits<double>::infinity();
+    return start_steady_ + o_.ramp_s * static_cast<double>(launched_) / static_cast<double>(clients_.size());
+  }
+
+  void launch_due() {
+    while (launched_ < clients_.size() && next_launch_time() <= Clock::now()) start_client(launched_++);
+  }
+
+  template <typename F>
+  void arm_at(double steady_s, F&& f) {
+    const double wait = std::max(0.0, steady_s - Clock::now());
+    tick_timer_.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(wait)));
+    tick_timer_.async_wait([f = std::forward<F>(f)](const std::error_code& ec) {
+      if (!ec) f();
+    });
+  }
+
+  void second_tick(int second) {
+    std::uint64_t bytes = 0;
+    int connected = 0;
+    for (const SimClient& c : clients_) {
+      bytes += c.bytes();
+      if (c.connection && c.connection->connected()) ++connected;
+    }
+    SeriesRow row;
+    row.t_s = second;
+    row.clients = connected;
+    row.kbps_mean = connected ? (bytes - last_bytes_) * 8.0 / 1000.0 / connected : 0.0;
+    row.ok_pct = second_frames_ ? 100.0 * second_ok_ / second_frames_ : 0.0;
+    row.latency_p50_ms = latency_second_.percentile(50) * 1e3;
+    row.latency_p99_ms = latency_second_.percentile(99) * 1e3;
+    row.bad = second_bad_;
+    series_.push_back(row);
+    last_bytes_ = bytes;
+    second_frames_ = second_ok_ = second_bad_ = 0;
+    latency_second_.clear();
+    if (o_.progress)
+      std::fprintf(stderr, "[%4ds] clients %d/%zu  frames ok %.2f%%  bad %llu  kbps %.1f  p99 %.1f ms\n", second, connected,
+                   clients_.size(), row.ok_pct, static_cast<unsigned long long>(row.bad), row.kbps_mean, row.latency_p99_ms);
+  }
+
+  void finish() {
+    measuring_done_ = true;
+    end_unix_ = unix_now_s();
+    end_wall_steady_ = Clock::now();
+    cpu_end_ = own_cpu_s();
+    server_cpu_end_ = process_cpu_s(o_.server_pid);
+    end_bytes_ = 0;
+    for (const SimClient& c : clients_) {
+      end_bytes_ += c.bytes();
+      if (c.connection && c.connection->connected()) ++connected_at_end_;
+    }
+    for (SimClient& c : clients_)
+      if (c.connection) c.connection->stop();
+    // Stop once the Byes are out (run() bounds this with run_for).
+    arm_at(Clock::now() + 0.2, [this] { io_.stop(); });
+  }
+
+  LoadSummary summarize() const {
+    LoadSummary s;
+    s.clients = o_.clients;
+    s.clients_connected = connected_at_end_;
+    s.profile = o_.profile;
+    s.transport = o_.transport;
+    s.link = o_.link_text;
+    s.scenario = o_.scenario;
+    const double wall = end_wall_steady_ - start_steady_;
+    s.duration_s = wall;
+    s.loadtest_cpu_pct = wall > 0 ? 100.0 * (cpu_end_ - cpu_start_) / wall : 0.0;
+    if (server_cpu_start_ && server_cpu_end_ && wall > 0) s.server_cpu_pct = 100.0 * (*server_cpu_end_ - *server_cpu_start_) / wall;
+    s.error_bound_m = facts_.bounds.height_m;
+    s.interpolation_delay_ms = facts_.interpolation_delay_s * 1e3;
+    const std::uint32_t last_tick = truth_ ? end_tick() : 0;
+    double client_seconds = 0.0;
+    for (std::size_t i = 0; i < clients_.size(); ++i) {
+      const SimClient& c = clients_[i];
+      const double started = o_.ramp_s * static_cast<double>(i) / static_cast<double>(clients_.size());
+      client_seconds += std::max(0.0, wall - started);
+      s.keyframes += c.keyframes();
+      SessionCounts counts = c.closed;
+      if (const auto* session = c.connection ? c.connection->session() : nullptr) counts.add(session->stats());
+      s.chunks_rejected_by_codec += counts.codec_rejected;
+      s.messages_rejected += counts.messages_rejected;
+      s.keyframe_requests += counts.keyframe_requests;
+      s.transport_fallbacks += counts.transport_fallbacks;
+      for (std::size_t r = 0; r < counts.codec_by_reason.size(); ++r)
+        if (counts.codec_by_reason[r]) s.codec_rejections[std::string(codec::to_string(static_cast<codec::ChunkError>(r)))] += counts.codec_by_reason[r];
+      if (c.connection) {
+        const auto& k = c.connection->counters();
+        if (k.connects > 1) s.reconnects += k.connects - 1;
+      }
+      if (!truth_) continue;
+      const std::uint32_t start_tick = c.welcome_tick.value_or(tick_at_unix(start_unix_ + started));
+      ClientTally empty(facts_.tick_period_s, facts_.interval_ticks);
+      const ClientTally& t = c.tally ? *c.tally : empty;
+      const std::uint64_t expected = t.expected(start_tick, last_tick);
+      s.frames_expected += expected;
+      s.frames_received += t.received();
+      s.frames_ok += t.ok();
+      s.frames_late += t.late();
+      s.frames_bad += t.bad();
+      s.stalls += t.stalls();
+      s.max_err_m = std::max(s.max_err_m, t.max_error_m());
+      if (expected > t.received()) s.frames_lost += expected - t.received();
+    }
+    if (!truth_) s.frames_expected = 0;
+    s.frames_ok_pct = s.frames_expected ? 100.0 * std::min(s.frames_ok, s.frames_expected) / s.frames_expected : 0.0;
+    s.kbps_mean = client_seconds > 0 ? end_bytes_ * 8.0 / 1000.0 / client_seconds : 0.0;
+    s.latency_p50_ms = latency_all_.percentile(50) * 1e3;
+    s.latency_p99_ms = latency_all_.percentile(99) * 1e3;
+    s.latency_max_ms = latency_all_.max_s() * 1e3;
+    s.truth_evaluations = truth_ ? truth_->evaluations() : 0;
+    return s;
+  }
+
+  const LoadtestOptions& o_;
+  asio::io_context io_;
+  std::vector<SimClient> clients_;
+  asio::steady_timer tick_timer_;
+  std::size_t launched_ = 0;
+  std::optional<GroundTruth> truth_;
+  StreamFacts facts_;
+  LatencyHistogram latency_all_, latency_second_;
+  std::uint64_t second_frames_ = 0, second_ok_ = 0, second_bad_ = 0, last_bytes_ = 0, end_bytes_ = 0;
+  std::vector<SeriesRow> series_;
+  double start_steady_ = 0.0, end_steady_ = 0.0, end_wall_steady_ = 0.0, start_unix_ = 0.0, end_unix_ = 0.0;
+  double cpu_start_ = 0.0, cpu_end_ = 0.0;
+  std::optional<double> server_cpu_start_, server_cpu_end_;
+  bool measuring_done_ = false;
+  int connected_at_end_ = 0;
+  std::string record_path_, record_error_;
+  std::optional<codec::NpyWriter> recorder_;
+};
+
+}  // namespace
+
+LoadRunResult run_load(const LoadtestOptions& options) { return Driver(options).run(); }
+
+}  // namespace ocean::loadtest

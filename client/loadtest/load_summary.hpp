@@ -1,0 +1,35 @@
+// LoadSummary: the figures of one load-test run, printed as a human table or one JSON object.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <string>
+
+namespace ocean::loadtest {
+
+struct LoadSummary {
+  int clients = 0;
+  int clients_connected = 0;     // connected at the end
+  std::uint64_t frames_expected = 0, frames_received = 0, frames_ok = 0, frames_late = 0, frames_lost = 0,
+                frames_bad = 0, stalls = 0, keyframes = 0, reconnects = 0, truth_evaluations = 0;
+  // Client-side explanations of lost frames, summed over every session.
+  std::uint64_t chunks_rejected_by_codec = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0;
+  std::map<std::string, std::uint64_t> codec_rejections;  // by codec::ChunkError name
+  double frames_ok_pct = 0.0;    // verified and on time, over frames expected
+  double max_err_m = 0.0;
+  double error_bound_m = 0.0;
+  double kbps_mean = 0.0;        // received kbit/s per client, envelopes included
+  double latency_p50_ms = 0.0, latency_p99_ms = 0.0, latency_max_ms = 0.0;
+  double interpolation_delay_ms = 0.0;
+  std::optional<double> server_cpu_pct;
+  double loadtest_cpu_pct = 0.0;
+  double duration_s = 0.0;
+  std::string profile, transport, link, scenario;
+};
+
+void print_table(std::ostream& out, const LoadSummary& s);
+std::string to_json(const LoadSummary& s);  // one line, no trailing newline
+
+}  // namespace ocean::loadtest

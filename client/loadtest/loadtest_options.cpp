@@ -1,0 +1,122 @@
+#include "loadtest_options.hpp"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+
+#include "profile.hpp"
+#include "scenario.hpp"
+
+namespace ocean::loadtest {
+namespace {
+
+std::string scenario_names() {
+  std::string names;
+  for (const Scenario& s : all_scenarios()) names += (names.empty() ? "" : ", ") + std::string(s.name);
+  return names;
+}
+
+std::string profile_names() {
+  std::string names;
+  for (const Profile& p : all_profiles()) names += (names.empty() ? "" : ", ") + std::string(p.name);
+  return names;
+}
+
+// "host:port" or "[v6]:port".
+bool split_server(const std::string& text, std::string& host, std::string& port) {
+  const auto colon = text.rfind(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) return false;
+  host = text.substr(0, colon);
+  port = text.substr(colon + 1);
+  if (host.size() > 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
+  if (!std::all_of(port.begin(), port.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
+  const long n = std::stol(port.substr(0, 6));
+  return n >= 1 && n <= 65535;
+}
+
+}  // namespace
+
+OptionsResult parse_options(const std::vector<std::string>& args) {
+  OptionsResult result;
+  LoadtestOptions& o = result.options;
+  CLI::App app{"ocean-loadtest: N simulated clients on one thread, each behind a simulated link, every frame checked against the sim"};
+  std::string server = o.host + ":" + o.port;
+  app.add_option("--server", server, "HOST:PORT of the server's TCP listener");
+  app.add_option("--clients", o.clients, "number of simulated clients, 1..100000");
+  app.add_option("--ramp", o.ramp_s, "seconds over which the clients start, >= 0");
+  app.add_option("--duration", o.duration_s, "seconds measured after the ramp, > 0");
+  app.add_option("--scenario", o.scenario, "a named set of --profile/--transport/--link (see --list-scenarios)");
+  app.add_option("--profile", o.profile, "stream profile to ask for: " + profile_names());
+  app.add_option("--transport", o.transport, "udp or tcp");
+  app.add_option("--link", o.link_text, "link impairment, e.g. rate=256kbit,delay=80ms,jitter=20ms,loss=5%,reorder=1%,dup=0.5% (\"\" or none = none)");
+  app.add_option("--seed", o.seed, "seed of the link randomness");
+  app.add_option("--server-pid", o.server_pid, "pid of a local server, for server_cpu_pct from /proc");
+  app.add_flag("--json", o.json, "print one JSON summary object as the last stdout line");
+  bool quiet = false;
+  app.add_flag("--quiet", quiet, "no progress line on stderr");
+  app.add_flag("--list-scenarios", o.list_scenarios, "print the scenarios and exit");
+  app.add_option("--csv", o.csv_path, "write a per-second series to this CSV file");
+  app.add_option("--plot", o.plot_path, "render kbps, on-time % and latency over time to this PNG (gnuplot)");
+  app.add_option("--record", o.record_path, "record client 0's reconstructed heights to this .npy file");
+
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    result.help = true;
+    result.error = app.help();
+    return result;
+  } catch (const CLI::ParseError& e) {
+    result.error = e.what();
+    return result;
+  }
+  o.progress = !quiet;
+  if (o.list_scenarios) return result;
+
+  if (!split_server(server, o.host, o.port)) {
+    result.error = "--server: '" + server + "' is not HOST:PORT with a port in 1..65535";
+    return result;
+  }
+  if (o.clients < 1 || o.clients > 100000) {
+    result.error = "--clients: " + std::to_string(o.clients) + " is out of range; allowed 1..100000";
+    return result;
+  }
+  if (!(o.ramp_s >= 0.0 && o.ramp_s <= 3600.0)) {
+    result.error = "--ramp: must be in [0, 3600] seconds";
+    return result;
+  }
+  if (!(o.duration_s > 0.0 && o.duration_s <= 86400.0)) {
+    result.error = "--duration: must be in (0, 86400] seconds";
+    return result;
+  }
+  if (!o.scenario.empty()) {
+    const Scenario* s = find_scenario(o.scenario);
+    if (!s) {
+      result.error = "--scenario: unknown scenario '" + o.scenario + "'; known: " + scenario_names();
+      return result;
+    }
+    // The scenario fills in what was not given explicitly.
+    if (app.count("--profile") == 0) o.profile = s->profile;
+    if (app.count("--transport") == 0) o.transport = s->transport;
+    if (app.count("--link") == 0) o.link_text = s->link;
+  }
+  if (!find_profile(o.profile)) {
+    result.error = "--profile: unknown profile '" + o.profile + "'; known: " + profile_names();
+    return result;
+  }
+  if (o.transport != "udp" && o.transport != "tcp") {
+    result.error = "--transport: '" + o.transport + "' is not udp or tcp";
+    return result;
+  }
+  if (o.link_text == "none") o.link_text.clear();
+  if (!o.link_text.empty()) {
+    LinkSpecResult link = parse_link_spec(o.link_text);
+    if (!link.error.empty()) {
+      result.error = "--link: " + link.error;
+      return result;
+    }
+    o.link = link.spec;
+  }
+  return result;
+}
+
+}  // namespace ocean::loadtest

@@ -1,0 +1,41 @@
+// LoadtestOptions: everything ocean-loadtest is told on its command line, after a --scenario's
+// values are filled in under the explicit flags. Parsing never exits: errors name the flag.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "link_spec.hpp"
+
+namespace ocean::loadtest {
+
+struct LoadtestOptions {
+  std::string host = "127.0.0.1";
+  std::string port = "7700";
+  int clients = 10;
+  double ramp_s = 1.0;       // clients start evenly spread over this long
+  double duration_s = 10.0;  // measured time after the ramp
+  std::string scenario;      // "" = none
+  std::string profile = "mobile";
+  std::string transport = "udp";
+  std::string link_text;     // as given (or from the scenario); "" = no impairment
+  LinkSpec link;
+  std::uint64_t seed = 1;    // link randomness; client i uses seed + i
+  int server_pid = 0;       // 0 = none
+  bool json = false;
+  bool progress = true;
+  bool list_scenarios = false;
+  std::string csv_path, plot_path, record_path;
+};
+
+struct OptionsResult {
+  LoadtestOptions options;
+  std::string error;  // empty on success; names the flag and what it accepts
+  bool help = false;  // --help was given: `error` holds the help text
+};
+
+// args excludes the program name.
+OptionsResult parse_options(const std::vector<std::string>& args);
+
+}  // namespace ocean::loadtest

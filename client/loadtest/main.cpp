@@ -1,0 +1,68 @@
+// ocean-loadtest: parses the flags, runs the load, prints the table / JSON and writes the series.
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "load_run.hpp"
+#include "loadtest_options.hpp"
+#include "scenario.hpp"
+
+namespace {
+
+void list_scenarios() {
+  std::printf("%-14s %-8s %-9s %-60s %s\n", "scenario", "profile", "transport", "link", "stands for");
+  for (const ocean::loadtest::Scenario& s : ocean::loadtest::all_scenarios())
+    std::printf("%-14.*s %-8.*s %-9.*s %-60.*s %.*s\n", int(s.name.size()), s.name.data(), int(s.profile.size()),
+                s.profile.data(), int(s.transport.size()), s.transport.data(), int(s.link.empty() ? 4 : s.link.size()),
+                s.link.empty() ? "none" : s.link.data(), int(s.why.size()), s.why.data());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace ocean::loadtest;
+  const OptionsResult parsed = parse_options(std::vector<std::string>(argv + 1, argv + argc));
+  if (parsed.help) {
+    std::cout << parsed.error;
+    return 0;
+  }
+  if (!parsed.error.empty()) {
+    std::cerr << "ocean-loadtest: " << parsed.error << "\n";
+    return 2;
+  }
+  const LoadtestOptions& options = parsed.options;
+  if (options.list_scenarios) {
+    list_scenarios();
+    return 0;
+  }
+  try {
+    const LoadRunResult result = run_load(options);
+    int status = 0;
+    if (!result.error.empty()) {
+      std::cerr << "ocean-loadtest: " << result.error << "\n";
+      status = 1;
+    }
+    if (!options.csv_path.empty() || !options.plot_path.empty()) {
+      const std::string csv = options.csv_path.empty() ? options.plot_path + ".csv" : options.csv_path;
+      if (std::string e = write_series_csv(csv, result.series); !e.empty()) {
+        std::cerr << "ocean-loadtest: " << e << "\n";
+        status = 1;
+      } else if (!options.plot_path.empty()) {
+        const std::string title = "ocean-loadtest " + (options.scenario.empty() ? options.profile : options.scenario) + ", " +
+                                  std::to_string(options.clients) + " clients";
+        if (std::string p = plot_series(csv, options.plot_path, title); !p.empty()) {
+          std::cerr << "ocean-loadtest: " << p << "\n";
+          status = 1;
+        }
+        if (options.csv_path.empty()) std::remove(csv.c_str());
+      }
+    }
+    print_table(options.json ? std::cerr : std::cout, result.summary);
+    if (options.json) std::cout << to_json(result.summary) << std::endl;
+    return status;
+  } catch (const std::exception& e) {
+    std::cerr << "ocean-loadtest: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,53 @@
+// Scenario parsing, explicit flags over a scenario, and errors that name the flag.
+#include <catch2/catch.hpp>
+
+#include "loadtest_options.hpp"
+#include "scenario.hpp"
+
+using namespace ocean::loadtest;
+
+TEST_CASE("options: a scenario fills profile, transport and link") {
+  const OptionsResult r = parse_options({"--scenario", "mobile-3g", "--clients", "4"});
+  REQUIRE(r.error.empty());
+  CHECK(r.options.profile == "mobile");
+  CHECK(r.options.transport == "udp");
+  CHECK(r.options.link.rate_bps == Approx(256000));
+  CHECK(r.options.link.delay_ms == Approx(80));
+  CHECK(r.options.link.loss == Approx(0.05));
+  CHECK(r.options.clients == 4);
+}
+
+TEST_CASE("options: explicit flags override the scenario, in any order") {
+  const OptionsResult r = parse_options({"--link", "delay=5ms", "--scenario", "tcp-fallback", "--profile", "lite"});
+  REQUIRE(r.error.empty());
+  CHECK(r.options.transport == "tcp");  // from the scenario
+  CHECK(r.options.profile == "lite");
+  CHECK(r.options.link.delay_ms == Approx(5));
+  CHECK(r.options.link.rate_bps == 0.0);  // the scenario's rate is not merged in
+}
+
+TEST_CASE("options: every scenario parses") {
+  for (const Scenario& s : all_scenarios()) {
+    const OptionsResult r = parse_options({"--scenario", std::string(s.name)});
+    INFO(s.name);
+    CHECK(r.error.empty());
+    CHECK(r.options.link.impaired() == !s.link.empty());
+  }
+}
+
+TEST_CASE("options: bad values name their flag") {
+  auto error_of = [](std::vector<std::string> args) { return parse_options(args).error; };
+  CHECK_THAT(error_of({"--clients", "0"}), Catch::Contains("--clients"));
+  CHECK_THAT(error_of({"--server", "localhost"}), Catch::Contains("--server"));
+  CHECK_THAT(error_of({"--server", "localhost:99999"}), Catch::Contains("--server"));
+  CHECK_THAT(error_of({"--transport", "sctp"}), Catch::Contains("--transport"));
+  CHECK_THAT(error_of({"--profile", "phone"}), Catch::Contains("--profile"));
+  CHECK_THAT(error_of({"--scenario", "moon"}), Catch::Contains("--scenario"));
+  CHECK_THAT(error_of({"--link", "loss=150%"}), Catch::Contains("--link"));
+  CHECK_THAT(error_of({"--duration", "0"}), Catch::Contains("--duration"));
+  CHECK_FALSE(error_of({"--bogus"}).empty());
+  const OptionsResult ok = parse_options({"--server", "10.0.0.2:7100"});
+  REQUIRE(ok.error.empty());
+  CHECK(ok.options.host == "10.0.0.2");
+  CHECK(ok.options.port == "7100");
+}
