@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "ack_window.hpp"
+#include "decoder_config.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
 #include "stream_config.hpp"
@@ -16,26 +17,6 @@ namespace ocean::client {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// The codec advances its state one server tick per step, so it needs the tick rate too: a stream
-// slower than its server (lite at 15 Hz under 30 Hz ticks) carries every n-th tick.
-codec::StreamConfig stream_config_of(const protocol::StreamParams& s, double tick_period_s) {
-  codec::StreamConfig c;
-  c.tick_rate_hz = static_cast<std::uint16_t>(std::lround(1.0 / tick_period_s));
-  c.profile_id = s.profile_id;
-  c.grid = s.grid;
-  c.patch_x_m = s.patch_x_m;
-  c.patch_z_m = s.patch_z_m;
-  c.gravity_mps2 = s.gravity_mps2;
-  c.depth_m = s.depth_m;
-  c.rate_hz = s.rate_hz;
-  c.height_step_m = s.height_step_m;
-  c.slope_step = s.slope_step;
-  c.disp_step_m = s.disp_step_m;
-  c.normals = s.normals;
-  c.choppy = s.choppy;
-  return c;
-}
 
 // Refusals that mean the payload itself is broken (not merely late, duplicated or baseline-less).
 bool is_decode_error(codec::ChunkError e) {
@@ -163,7 +144,7 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
 }
 
 void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now) {
-  const codec::StreamConfig config = stream_config_of(welcome.stream, welcome.tick_period_s);
+  const codec::StreamConfig config = decoder_config(welcome);
   if (const std::string problem = codec::validate(config); !problem.empty()) {
     ++stats_.rejected_by_reason[static_cast<std::size_t>(protocol::Reason::out_of_range)];
     return close("Welcome.stream is not decodable by this client's codec: " + problem);

@@ -5,6 +5,7 @@
 
 #include "ack_window.hpp"
 #include "decoder.hpp"
+#include "decoder_config.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
 #include "tcp_framer.hpp"
@@ -123,21 +124,7 @@ class SessionTestClient {
     if (const auto* w = std::get_if<proto::Welcome>(&message)) {
       welcome = *w;
       framer_.set_max_message_bytes(w->max_message_bytes);
-      codec::StreamConfig config;
-      config.profile_id = w->stream.profile_id;
-      config.grid = w->stream.grid;
-      config.patch_x_m = w->stream.patch_x_m;
-      config.patch_z_m = w->stream.patch_z_m;
-      config.gravity_mps2 = w->stream.gravity_mps2;
-      config.depth_m = w->stream.depth_m;
-      config.rate_hz = w->stream.rate_hz;
-      config.tick_rate_hz = static_cast<std::uint16_t>(std::lround(1.0 / w->tick_period_s));
-      config.height_step_m = w->stream.height_step_m;
-      config.slope_step = w->stream.slope_step;
-      config.disp_step_m = w->stream.disp_step_m;
-      config.normals = w->stream.normals;
-      config.choppy = w->stream.choppy;
-      config_ = config;
+      config_ = client::decoder_config(*w);
       reset_decoder();
     } else if (const auto* chunk = std::get_if<proto::FrameChunk>(&message)) {
       on_chunk(*chunk, transport);
