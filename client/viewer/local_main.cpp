@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "fps_meter.hpp"
 #include "client/render/camera_controls.hpp"
 #include "client/render/framebuffer_readback.hpp"
 #include "client/render/hud_overlay.hpp"
@@ -169,21 +170,14 @@ int run_window(const Options& o, const ocean::viewer::SyntheticSeaParams& sea_pa
     return 1;
   }
   const auto start = Clock::now();
-  auto last = start, fps_window_start = start;
-  double fps = 0.0;
-  int frame = 0, fps_window_frames = 0;
+  auto last = start;
+  ocean::viewer::FpsMeter fps_meter;
+  int frame = 0;
   while (!window.should_close() && (o.frames <= 0 || frame < o.frames)) {
     const auto now = Clock::now();
     const double dt = std::chrono::duration<double>(now - last).count();
     last = now;
-    // Frames counted over half-second windows: steady to read, quick to follow a change.
-    const double window_s = std::chrono::duration<double>(now - fps_window_start).count();
-    if (window_s >= 0.5) {
-      fps = fps_window_frames / window_s;
-      fps_window_frames = 0;
-      fps_window_start = now;
-    }
-    ++fps_window_frames;
+    const double fps = fps_meter.tick(std::chrono::duration<double>(now - start).count());
     ocean::render::apply_fly_input(scene->camera, window.poll(), dt);
     const double t = std::chrono::duration<double>(now - start).count();
     scene->step(t);

@@ -1,4 +1,5 @@
 // Headless and window front ends of ocean-viewer, and its JSON summary.
+#include "fps_meter.hpp"
 #include "client/viewer/viewer_run.hpp"
 
 #include <chrono>
@@ -175,20 +176,14 @@ int run_window(const ViewerOptions& o, ViewerSummary& summary, std::string& erro
   NetworkThread net(net_config);
   net.start();
   const auto start = Clock::now();
-  auto last = start, fps_window_start = start;
-  double fps = 0.0;
-  int frame = 0, fps_window_frames = 0;
+  auto last = start;
+  FpsMeter fps_meter;
+  int frame = 0;
   while (!window.should_close() && (o.frames <= 0 || frame < o.frames)) {
     const auto now = Clock::now();
     const double dt = std::chrono::duration<double>(now - last).count();
     last = now;
-    const double window_s = std::chrono::duration<double>(now - fps_window_start).count();
-    if (window_s >= 0.5) {  // half-second windows: steady to read, quick to follow a change
-      fps = fps_window_frames / window_s;
-      fps_window_frames = 0;
-      fps_window_start = now;
-    }
-    ++fps_window_frames;
+    const double fps = fps_meter.tick(std::chrono::duration<double>(now - start).count());
     render::apply_fly_input(view->camera(), window.poll(), dt);
     const double t = client::ClientConnection::now_s();
     if (!view->update(net, t)) {
