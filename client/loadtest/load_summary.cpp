@@ -55,6 +55,9 @@ std::string to_json(const LoadSummary& s) {
   field("keyframes", u(s.keyframes));
   field("reconnects", u(s.reconnects));
   field("truth_evaluations", u(s.truth_evaluations));
+  field("decodes_run", u(s.decodes_run));
+  field("decodes_shared", u(s.decodes_shared));
+  field("truth_checks", u(s.truth_checks));
   field("keyframe_requests", u(s.keyframe_requests));
   field("chunks_rejected_by_codec", u(s.chunks_rejected_by_codec));
   std::string reasons = "{";

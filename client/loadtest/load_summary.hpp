@@ -14,6 +14,9 @@ struct LoadSummary {
   int clients_connected = 0;     // connected at the end
   std::uint64_t frames_expected = 0, frames_received = 0, frames_ok = 0, frames_late = 0, frames_lost = 0,
                 frames_bad = 0, stalls = 0, keyframes = 0, reconnects = 0, truth_evaluations = 0;
+  // Decodes the clients ran and frames checked against the truth; with a shared DecodeMemo, a
+  // frame several clients decoded identically is decoded and checked once.
+  std::uint64_t decodes_run = 0, decodes_shared = 0, truth_checks = 0;
   // Client-side explanations of lost frames, summed over every session.
   std::uint64_t chunks_rejected_by_codec = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0;
   std::map<std::string, std::uint64_t> codec_rejections;  // by codec::ChunkError name

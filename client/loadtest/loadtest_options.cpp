@@ -54,6 +54,10 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
   bool quiet = false;
   app.add_flag("--quiet", quiet, "no progress line on stderr");
   app.add_flag("--list-scenarios", o.list_scenarios, "print the scenarios and exit");
+  bool own_decode = false;
+  app.add_flag("--no-shared-decode", own_decode,
+               "every client decodes every frame itself (default: clients that got identical bytes on an identical "
+               "state share one decode, which gives bit-identical frames at a fraction of the CPU)");
   app.add_option("--csv", o.csv_path, "write a per-second series to this CSV file");
   app.add_option("--plot", o.plot_path, "render kbps, on-time % and latency over time to this PNG (gnuplot)");
   app.add_option("--record", o.record_path, "record client 0's reconstructed heights to this .npy file");
@@ -69,6 +73,7 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
     result.error = e.what();
     return result;
   }
+  o.shared_decode = !own_decode;
   o.progress = !quiet;
   if (o.list_scenarios) return result;
 

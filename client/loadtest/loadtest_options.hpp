@@ -26,6 +26,7 @@ struct LoadtestOptions {
   bool json = false;
   bool progress = true;
   bool list_scenarios = false;
+  bool shared_decode = true;  // clients of one stream share a DecodeMemo (exact; off = each decodes alone)
   std::string csv_path, plot_path, record_path;
 };
 

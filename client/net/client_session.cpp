@@ -153,6 +153,7 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   // Keyframes on TCP may use chunks up to the session's message limit.
   options.max_payload = std::max(codec::kDefaultMaxPayload, protocol::max_chunk_payload(welcome.max_message_bytes));
   options.history_ticks = protocol::kAckWindowTicks;
+  if (config_.decode_memo) options.memo = config_.decode_memo(config);
   try {
     decoder_ = std::make_unique<codec::Decoder>(config, options);
   } catch (const std::invalid_argument& e) {

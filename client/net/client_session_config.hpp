@@ -3,7 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
+
+#include "decode_memo.hpp"
 
 #include "ocean_generated.h"
 
@@ -29,6 +32,10 @@ struct ClientSessionConfig {
   // PROTOCOL.md 5: a client that receives a bad TCP message closes. Tests turn this off to check
   // that a rejected message changes nothing.
   bool close_on_bad_tcp_message = true;
+
+  // Many clients of one process (a load test) may share decoding work: given the Welcome's stream,
+  // return a memo for it (or nullptr). Results are identical either way.
+  std::function<codec::DecodeMemo*(const codec::StreamConfig&)> decode_memo;
 };
 
 }  // namespace ocean::client

@@ -10,6 +10,8 @@ Decoder::Decoder(const StreamConfig& config, DecoderOptions options)
     : config_(config), options_(options), model_(config) {
   if (options.history_ticks < 1 || options.max_lag < 1 || options.max_pending < 1)
     throw std::invalid_argument("DecoderOptions: history_ticks, max_lag and max_pending must be >= 1");
+  if (options.memo && !(options.memo->config() == config))
+    throw std::invalid_argument("DecoderOptions: the memo belongs to another stream configuration");
 }
 
 std::optional<std::uint32_t> Decoder::newest_complete() const {
@@ -25,7 +27,7 @@ std::vector<std::uint32_t> Decoder::complete_ticks() const {
 
 const ModalState* Decoder::state(std::uint32_t tick) const {
   auto it = states_.find(tick);
-  return it == states_.end() ? nullptr : &it->second;
+  return it == states_.end() ? nullptr : it->second.get();
 }
 
 ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const {
@@ -65,6 +67,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
   layout.samples = static_cast<std::uint32_t>(n) * n;
   layout.normals = config_.normals;
   if (const ChunkError e = check(c, h, layout); e != ChunkError::ok) return e;
+  if (accept_remembered(c)) return ChunkError::ok;
   DecodedBody decoded;
   if (!decode_body(layout, h.item_begin, h.item_end, body, decoded)) return ChunkError::bad_value;
 
@@ -81,7 +84,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
       p.pos_shift = h.pos_shift;
       p.vel_shift = h.vel_shift;
     } else {
-      p.predicted = states_.at(c.baseline);
+      p.predicted = *states_.at(c.baseline);
       model_.advance(p.predicted, c.tick - c.baseline);
       model_.synthesize(p.predicted.cur, p.fields);
     }
@@ -98,12 +101,9 @@ ChunkError Decoder::accept(const ChunkView& c) {
   append(p.corrections.slope_x, decoded.corrections.slope_x);
   append(p.corrections.slope_z, decoded.corrections.slope_z);
 
-  if (!c.key && (!shown_tick_ || c.tick >= *shown_tick_)) {
-    shown_tick_ = c.tick;
-    shown_dirty_ = true;
-  }
+  if (!c.key && (!shown_tick_ || c.tick >= *shown_tick_)) show(c.tick);
   if (p.received == p.count) {
-    complete(c.tick, p);
+    complete(c.tick, p, c.payload);
     pending_.erase(c.tick);
   }
   while (pending_.size() > options_.max_pending) drop_pending(pending_.begin());
@@ -111,7 +111,30 @@ ChunkError Decoder::accept(const ChunkView& c) {
   return ChunkError::ok;
 }
 
-void Decoder::complete(std::uint32_t tick, Pending& p) {
+void Decoder::show(std::uint32_t tick) {
+  shown_tick_ = tick;
+  shown_dirty_ = true;
+  shown_shared_.reset();
+}
+
+// A single-chunk delta whose exact bytes the memo has seen on this very baseline state.
+bool Decoder::accept_remembered(const ChunkView& c) {
+  DecodeMemo* memo = options_.memo;
+  if (!memo || c.key || c.count != 1) return false;
+  const DecodeMemo::Result* r = memo->find(states_.at(c.baseline), c.tick, c.payload);
+  if (!r) return false;
+  states_[c.tick] = r->state;
+  if (!shown_tick_ || c.tick >= *shown_tick_) {
+    show(c.tick);
+    shown_shared_ = r->frame;
+    shown_complete_ = true;
+    shown_dirty_ = false;
+  }
+  evict();
+  return true;
+}
+
+void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint8_t> payload) {
   if (p.key) {
     p.predicted = key_state(model_, p.key_coefficients, p.pos_shift, p.vel_shift);
     model_.synthesize(p.predicted.cur, p.fields);
@@ -119,13 +142,28 @@ void Decoder::complete(std::uint32_t tick, Pending& p) {
   }
   if (!p.corrections.height.empty())
     model_.add_correction(p.predicted, height_correction_field(model_.n(), p.corrections.height));
-  states_[tick] = std::move(p.predicted);
-  if (!shown_tick_ || tick >= *shown_tick_) {
-    shown_tick_ = tick;
+  DecodeMemo* memo = options_.memo;
+  const DecodeMemo::State state = memo ? memo->intern(tick, std::move(p.predicted))
+                                       : std::make_shared<const ModalState>(std::move(p.predicted));
+  const bool shown = !shown_tick_ || tick >= *shown_tick_;
+  if (memo && !p.key && p.count == 1) {
+    ReconstructedFrame frame;
+    to_float(p.fields, config_, frame);
+    frame.tick = tick;
+    frame.complete = true;
+    const DecodeMemo::Result& r = memo->remember(states_.at(p.baseline), tick, payload, state, std::move(frame));
+    if (shown) {
+      show(tick);
+      shown_shared_ = r.frame;
+      shown_complete_ = true;
+      shown_dirty_ = false;
+    }
+  } else if (shown) {
+    show(tick);
     shown_fields_ = std::move(p.fields);
     shown_complete_ = true;
-    shown_dirty_ = true;
   }
+  states_[tick] = state;
 }
 
 void Decoder::evict() {
@@ -139,15 +177,16 @@ void Decoder::evict() {
 void Decoder::drop_pending(std::map<std::uint32_t, Pending>::iterator it) {
   // The frame on show keeps showing what it had, still marked incomplete.
   if (shown_tick_ && it->first == *shown_tick_) {
+    show(it->first);
     shown_fields_ = std::move(it->second.fields);
     shown_complete_ = false;
-    shown_dirty_ = true;
   }
   pending_.erase(it);
 }
 
 const ReconstructedFrame* Decoder::latest() {
   if (!shown_tick_) return nullptr;
+  if (shown_shared_) return shown_shared_.get();
   if (shown_dirty_) {
     auto it = pending_.find(*shown_tick_);
     const bool held = it == pending_.end();

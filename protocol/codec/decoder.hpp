@@ -4,6 +4,7 @@
 #pragma once
 
 #include "chunk_body.hpp"
+#include "decode_memo.hpp"
 #include "chunk_format.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
@@ -21,11 +22,13 @@ struct DecoderOptions {
   std::uint32_t history_ticks = 32;  // complete states older than newest complete - this are dropped
   std::uint32_t max_lag = 64;        // largest tick - baseline accepted (the advance costs lag steps)
   std::size_t max_pending = 8;       // incomplete frames kept; the oldest is dropped beyond this
+  DecodeMemo* memo = nullptr;        // shared with other decoders of the same stream (same thread)
 };
 
 class Decoder {
  public:
-  explicit Decoder(const StreamConfig& config, DecoderOptions options = {});  // throws invalid_argument
+  // Throws invalid_argument on bad options or a memo of another stream configuration.
+  explicit Decoder(const StreamConfig& config, DecoderOptions options = {});
 
   const StreamConfig& config() const { return config_; }
 
@@ -58,19 +61,23 @@ class Decoder {
   };
 
   ChunkError check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const;
-  void complete(std::uint32_t tick, Pending& p);
+  // payload: the chunk of a single-chunk delta, remembered in the memo with its result.
+  void complete(std::uint32_t tick, Pending& p, std::span<const std::uint8_t> payload);
+  bool accept_remembered(const ChunkView& c);
+  void show(std::uint32_t tick);
   void evict();
   void drop_pending(std::map<std::uint32_t, Pending>::iterator it);
 
   StreamConfig config_;
   DecoderOptions options_;
   ModalModel model_;
-  std::map<std::uint32_t, ModalState> states_;  // complete frames
+  std::map<std::uint32_t, DecodeMemo::State> states_;  // complete frames (interned when memo is set)
   std::map<std::uint32_t, Pending> pending_;
   std::optional<std::uint32_t> shown_tick_;     // newest tick with something to show
   SampleFields shown_fields_;                   // its fields once it left pending_
   bool shown_complete_ = false;
   ReconstructedFrame shown_;
+  DecodeMemo::Frame shown_shared_;              // set instead of shown_ when the memo holds the frame
   bool shown_dirty_ = true;
 };
 

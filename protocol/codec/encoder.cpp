@@ -189,6 +189,15 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(std::uint32_t tick, ModalSta
   chunk_frame(*frame, layout, proto, key_coefficients, corr);
 
   if (!corr.height.empty()) model_.add_correction(predicted, height_correction_field(n, corr.height));
+  // Deltas of one tick from different baselines often land on the same state (without
+  // corrections, advancing is path-independent): one id for one state lets later deltas from
+  // either be encoded once for every client.
+  if (!key)
+    for (auto it = states_.lower_bound(StateId{tick, 0}); it != states_.end() && it->first.tick == tick; ++it)
+      if (it->second == predicted) {
+        frame->id = it->first;
+        return frame;
+      }
   states_[frame->id] = std::move(predicted);
   return frame;
 }

@@ -63,7 +63,8 @@ class Encoder {
   std::shared_ptr<const EncodedFrame> encode_key(std::uint32_t tick);
 
   // A delta for `tick` predicted from `baseline` (a state this encoder produced, baseline.tick <
-  // tick). Throws std::invalid_argument when the truth or the baseline state is gone.
+  // tick). Its id is that of an earlier delta of `tick` when both leave the very same state.
+  // Throws std::invalid_argument when the truth or the baseline state is gone.
   std::shared_ptr<const EncodedFrame> encode_delta(std::uint32_t tick, StateId baseline);
 
   bool has_state(StateId id) const { return states_.count(id) != 0; }

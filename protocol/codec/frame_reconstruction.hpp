@@ -16,6 +16,7 @@ namespace ocean::codec {
 struct ReconstructedFrame {
   std::uint32_t tick = 0;
   bool complete = false;  // all chunks arrived (only complete frames can be baselines)
+  std::uint64_t shared_id = 0;  // nonzero: this very frame is shown by every decoder of a DecodeMemo that got it
   std::vector<float> height, slope_x, slope_z;
 };
 

@@ -1,6 +1,8 @@
 // BaselineTracker: the Quake 3 model for one session. Remembers which encoded state it sent for
 // each tick, learns from acks which ones the client holds, and names the state the next delta is
-// predicted from: the newest acked one (UDP), or the last one queued on TCP (ordered, reliable).
+// predicted from: an acked one (UDP), or one queued on TCP (ordered, reliable). Baselines prefer
+// ticks on a grid shared by every session (multiples of align_ticks), so sessions whose acks
+// arrive at different ticks still ask for the same (tick, baseline) and share one encode.
 #pragma once
 
 #include "ack_window.hpp"
@@ -15,24 +17,37 @@ namespace ocean::server {
 
 class BaselineTracker {
  public:
-  // reliable: queued on TCP, so the client will hold it without an ack.
-  void record_sent(std::uint32_t tick, codec::StateId state, bool reliable);
-  // Acks name ticks; the state sent for the newest acked tick becomes the UDP baseline.
+  explicit BaselineTracker(std::uint32_t align_ticks = 1) : align_(align_ticks ? align_ticks : 1) {}
+
+  // reliable: queued on TCP, so the client will hold it without an ack. key: everything the
+  // client held before is superseded (a new root; older states are never chosen again).
+  void record_sent(std::uint32_t tick, codec::StateId state, bool reliable, bool key = false);
+  // Acks name ticks; the states sent for the newest acked tick (and the newest on the grid) become
+  // the UDP baselines.
   void on_ack(const protocol::AckWindow& window);
-  // The baseline for a delta of `tick`: within kMaxBaselineGap and still held by the encoder.
+  // The baseline for a delta of `tick`: within kMaxBaselineGap and still held by the encoder; on
+  // the grid when one qualifies.
   std::optional<codec::StateId> choose(std::uint32_t tick, bool over_udp,
                                        const std::function<bool(codec::StateId)>& encoder_has) const;
   void reset();  // a new scene: nothing sent before predicts anything after
-  // True when `state` is the newest state the client acked: a UDP datagram predicted from it can
-  // be decoded whatever order datagrams arrive in. A baseline only queued on TCP cannot (the key
-  // may still be in flight), so deltas from it go on TCP behind it.
-  bool is_acked(codec::StateId state) const { return acked_ && *acked_ == state; }
+  // True when the client acked `state`: a UDP datagram predicted from it can be decoded whatever
+  // order datagrams arrive in. A baseline only queued on TCP cannot (the key may still be in
+  // flight), so deltas from it go on TCP behind it.
+  bool is_acked(codec::StateId state) const {
+    return (acked_ && *acked_ == state) || (acked_aligned_ && *acked_aligned_ == state);
+  }
   std::optional<std::uint32_t> newest_acked() const { return acked_ ? std::optional(acked_->tick) : std::nullopt; }
+  // The state this session's chain started from (its last key), for sharing policy.
+  std::optional<std::uint32_t> root_tick() const { return root_; }
 
  private:
+  bool on_grid(std::uint32_t tick) const { return tick % align_ == 0; }
+
+  std::uint32_t align_;
   std::map<std::uint32_t, codec::StateId> sent_;  // the last 2 windows of ticks
-  std::optional<codec::StateId> acked_;
-  std::optional<codec::StateId> reliable_;
+  std::optional<codec::StateId> acked_, acked_aligned_;
+  std::optional<codec::StateId> reliable_, reliable_aligned_;
+  std::optional<std::uint32_t> root_;
 };
 
 }  // namespace ocean::server

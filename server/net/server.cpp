@@ -33,6 +33,11 @@ asio::ip::udp::socket open_udp_socket(asio::io_context& context, const ListenAdd
   socket.open(endpoint.protocol(), error);
   if (!error) socket.bind(endpoint, error);
   if (error) throw std::system_error(error, "cannot bind UDP on " + address.to_string());
+  // Every client's acks arrive on this one socket (30 a second each): a deep buffer rides out a
+  // network thread that was descheduled for a moment instead of dropping acks (capped by the
+  // kernel's net.core.rmem_max; failure is not fatal).
+  socket.set_option(asio::socket_base::receive_buffer_size(kUdpSocketBufferBytes), error);
+  socket.set_option(asio::socket_base::send_buffer_size(kUdpSocketBufferBytes), error);
   return socket;
 }
 
@@ -153,16 +158,26 @@ void Server::do_accept() {
   });
 }
 
+void Server::on_datagram(std::size_t n) {
+  if (datagram_handler_) {
+    datagram_handler_(std::span<const std::uint8_t>(datagram_.data(), n), datagram_sender_);
+  } else {
+    log_reject("udp", peer_text(datagram_sender_), "udp_no_session", true);
+    metrics_.rejects("udp_no_session").inc();
+  }
+}
+
 void Server::do_receive() {
   udp_socket_.async_receive_from(asio::buffer(datagram_), datagram_sender_, [this](std::error_code error, std::size_t n) {
     if (!udp_socket_.is_open()) return;
-    if (!error) {
-      if (datagram_handler_) {
-        datagram_handler_(std::span<const std::uint8_t>(datagram_.data(), n), datagram_sender_);
-      } else {
-        log_reject("udp", peer_text(datagram_sender_), "udp_no_session", true);
-        metrics_.rejects("udp_no_session").inc();
-      }
+    if (!error) on_datagram(n);
+    // Drain what else is queued without a reactor round trip per datagram (the socket is
+    // non-blocking), but bounded so TCP clients and ticks are not starved by a flood.
+    for (int i = 0; i < 256 && udp_socket_.is_open(); ++i) {
+      std::error_code more;
+      const std::size_t got = udp_socket_.receive_from(asio::buffer(datagram_), datagram_sender_, 0, more);
+      if (more) break;
+      on_datagram(got);
     }
     do_receive();
   });

@@ -28,6 +28,9 @@
 
 namespace ocean::server {
 
+// SO_RCVBUF and SO_SNDBUF asked for the UDP socket (the kernel caps them at net.core.*mem_max).
+inline constexpr int kUdpSocketBufferBytes = 4 << 20;
+
 class Server {
  public:
   // All run on the network thread.
@@ -72,6 +75,7 @@ class Server {
   void do_await_stop();
   void do_accept();
   void do_receive();
+  void on_datagram(std::size_t n);
   void do_stop();
   void on_tick(const TickDecision& decision);  // simulation thread
   void drain_frames();                          // network thread

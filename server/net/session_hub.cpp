@@ -218,6 +218,7 @@ void SessionHub::on_hello(const std::shared_ptr<Session>& session, const wire::H
   std::erase(handshaking_, session);
   session->id = new_session_id();
   session->stream = stream;
+  session->baselines = BaselineTracker(stream->tick_step() * options_.baseline_align_frames);
   session->welcomed = true;
   session->wants_udp = hello.transport == wire::Transport::udp;
   session->bytes_per_s = static_cast<double>(hello.bandwidth_bps) / 8.0;
@@ -245,7 +246,7 @@ void SessionHub::on_hello(const std::shared_ptr<Session>& session, const wire::H
   sessions_.emplace(session->id, session);
   log_connect(session->id, session->wants_udp ? "udp" : "tcp", session->peer, stream->profile().name);
   update_client_gauges();
-  // The key follows with the next frame tick of the profile, shared by everyone who joined in it.
+  // The key follows on the next key tick of the profile, shared by everyone who joined since.
 }
 
 void SessionHub::on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& wire_change) {
@@ -373,6 +374,8 @@ void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
   std::vector<std::pair<const void*, codec::StateId>> bases;
   HubTickStats stats;
   stats.tick = tick_;
+  for (auto& stream : streams_)
+    if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_)) limit_roots(*stream, tick_);
   for (auto& [id, session] : sessions_) {
     try {
       serve(*session, tick_, now, bases);
@@ -406,8 +409,9 @@ void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
     base = session.baselines.choose(tick, udp, [&](codec::StateId id) { return stream.has_state(id); });
   ServerMetrics& metrics = server_.metrics();
   if (!base) {
-    // A key on TCP: at once when required, else (acks missing) at most once per key interval.
-    if ((!session.need_key && !key_due) || !stream.can_key(tick)) return;
+    // A key on TCP, on a key tick (everyone keyed in one tick shares the key and every delta
+    // after it): when required, else (acks missing) at most once per key interval.
+    if ((!session.need_key && !key_due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
     const SharedFrame& frame = stream.key(tick);
     bases.emplace_back(&stream, codec::StateId{tick, 0});
     if (!session.link->has_room(frame.bytes)) {
@@ -418,7 +422,7 @@ void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
     for (const SharedBytes& message : frame.messages) session.link->send(message);
     session.need_key = session.key_requested = false;
     session.last_key_s = now_s;
-    session.baselines.record_sent(tick, frame.encoded->id, true);
+    session.baselines.record_sent(tick, frame.encoded->id, true, true);
     metrics.keyframes_sent.inc();
     metrics.frames_sent("tcp").inc();
     metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
@@ -427,7 +431,9 @@ void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
   }
   const SharedFrame& frame = stream.delta(tick, *base);
   bases.emplace_back(&stream, *base);
-  if (udp && session.baselines.is_acked(*base)) {
+  // UDP only once TCP has flushed: a datagram overtaking the TCP frames before it would leave them
+  // complete but older than what the client already shows.
+  if (udp && session.baselines.is_acked(*base) && session.link->queued_bytes() == 0) {
     if (!session.udp_bucket.try_take(frame.bytes, now_s)) {
       metrics.frames_skipped_bandwidth.inc();
       return;
@@ -452,6 +458,37 @@ void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
     metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
   }
   if (observer_) observer_(session.id, frame);
+}
+
+bool SessionHub::is_key_tick(const ProfileStream& stream, std::uint32_t tick) const {
+  const auto frames = std::max<long>(1, std::lround(options_.key_period_s * stream.profile().rate_hz));
+  return tick % (stream.tick_step() * static_cast<std::uint32_t>(frames)) == 0;
+}
+
+// Sessions keyed at different ticks hold different states forever (a key is lossy), so every
+// root costs its own encodes each tick. Beyond max_roots, the smallest root old enough is keyed
+// again onto the root this key tick starts: one per key tick, so neither the keys' bytes nor the
+// clients' key decodes come in one burst, and a session pays at most one extra key per
+// root_merge_age_s.
+void SessionHub::limit_roots(ProfileStream& stream, std::uint32_t tick) {
+  std::map<std::uint32_t, std::vector<Session*>> roots;
+  for (auto& [id, session] : sessions_)
+    if (session->stream == &stream && !session->need_key)
+      if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
+  if (roots.size() <= options_.max_roots) return;
+  const double min_age_ticks = options_.root_merge_age_s * server_.config().tick_rate_hz;
+  std::uint32_t smallest = 0;
+  std::size_t smallest_size = 0;
+  for (const auto& [root, members] : roots)
+    if (static_cast<double>(tick - root) >= min_age_ticks && (smallest_size == 0 || members.size() < smallest_size)) {
+      smallest = root;
+      smallest_size = members.size();
+    }
+  if (smallest_size == 0) return;
+  for (Session* session : roots[smallest]) session->need_key = true;
+  server_.metrics().root_merges.inc();
+  spdlog::debug("tick {} profile {}: {} key roots; the {} sessions of root {} are keyed again", tick,
+                stream.profile().name, roots.size(), smallest_size, smallest);
 }
 
 void SessionHub::sweep_timeouts(double now_s) {

@@ -25,6 +25,13 @@ struct SessionHubOptions {
   double handshake_timeout_s = 5.0;            // a connection must send its Hello within this
   std::int64_t cookie_lifetime_ms = 3'600'000; // a UdpHello may (re)prove the address this long
   int socket_send_buffer_bytes = 0;            // SO_SNDBUF of client sockets; 0 = the OS default
+  // Sharing (README-server.md "Fan-out"): baselines on a grid of this many frames; keys only on
+  // a grid of this period (a joiner waits at most this long); beyond max_roots key roots of a
+  // profile, one root older than root_merge_age_s is keyed again per key tick.
+  std::uint32_t baseline_align_frames = 4;
+  double key_period_s = 0.5;
+  std::size_t max_roots = 8;
+  double root_merge_age_s = 10.0;
 };
 
 // What the last tick did, for metrics and tests.
@@ -66,6 +73,8 @@ class SessionHub {
   void on_stop();
 
   void serve(Session& session, std::uint32_t tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
+  void limit_roots(ProfileStream& stream, std::uint32_t tick);
+  bool is_key_tick(const ProfileStream& stream, std::uint32_t tick) const;
   void sweep_timeouts(double now_s);
   void apply_scene_change(const TickFrames& frames);
   void refuse(Session& session, protocol::Reason reason, const std::string& text);

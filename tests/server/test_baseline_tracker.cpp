@@ -39,3 +39,36 @@ TEST_CASE("the token bucket never lets more than rate x time + burst through") {
   CHECK(bucket.wait_s(300, 1.0) > 0.0);
   CHECK(TokenBucket(0.0, 0.0, 0.0).try_take(1 << 30, 0.0));  // 0 = unlimited
 }
+
+TEST_CASE("baselines prefer the grid, so sessions acking different ticks share one") {
+  // Two sessions keyed at 8 on a grid of 4: their newest acks differ, their baseline does not.
+  BaselineTracker a(4), b(4);
+  for (BaselineTracker* t : {&a, &b}) {
+    t->record_sent(8, StateId{8, 1}, true, true);
+    for (std::uint32_t tick = 9; tick <= 14; ++tick) t->record_sent(tick, StateId{tick, tick}, false);
+  }
+  a.on_ack({13, 0b11111});  // 8..13
+  b.on_ack({14, 0b110111});  // 14, 13, 12, 10, 9, 8 (11 lost)
+  CHECK(a.choose(15, true, held) == StateId{12, 12});
+  CHECK(b.choose(15, true, held) == StateId{12, 12});
+  CHECK(a.is_acked(StateId{12, 12}));
+  CHECK(a.is_acked(StateId{13, 13}));   // the newest acked stays usable
+  CHECK(!a.is_acked(StateId{11, 11}));
+  // Off the gap limit the grid state gives way to the newest acked one.
+  CHECK(a.choose(13 + 33, true, held) == std::nullopt);
+  CHECK(a.choose(15, true, [](StateId s) { return s.tick != 12; }) == StateId{13, 13});
+  CHECK(a.root_tick() == 8u);
+}
+
+TEST_CASE("a key starts a new root: nothing from before it is chosen again") {
+  BaselineTracker t(4);
+  t.record_sent(8, StateId{8, 1}, true, true);
+  t.record_sent(12, StateId{12, 2}, false);
+  t.on_ack({12, 0b1111});
+  CHECK(t.choose(13, true, held) == StateId{12, 2});
+  t.record_sent(16, StateId{16, 3}, true, true);  // keyed again (e.g. merged into a newer root)
+  CHECK(t.root_tick() == 16u);
+  CHECK(!t.is_acked(StateId{12, 2}));
+  CHECK(t.choose(17, true, held) == StateId{16, 3});  // the key, on TCP until acked
+  CHECK(t.choose(17, false, held) == StateId{16, 3});
+}

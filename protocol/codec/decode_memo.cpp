@@ -1,0 +1,77 @@
+#include "decode_memo.hpp"
+
+#include "state_hash.hpp"
+
+#include <algorithm>
+
+namespace ocean::codec {
+namespace {
+
+std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const std::uint8_t b : bytes) h = (h ^ b) * 1099511628211ull;
+  return h;
+}
+
+}  // namespace
+
+std::size_t DecodeMemo::KeyHash::operator()(const Key& k) const {
+  std::uint64_t h = k.payload_hash ^ (reinterpret_cast<std::uintptr_t>(k.baseline) * 0x9E3779B97F4A7C15ull);
+  h ^= (h >> 29) ^ (std::uint64_t{k.tick} * 0xBF58476D1CE4E5B9ull);
+  return static_cast<std::size_t>(h ^ (h >> 32));
+}
+
+DecodeMemo::DecodeMemo(const StreamConfig& config, std::uint32_t window_ticks) : config_(config), window_(window_ticks) {}
+
+void DecodeMemo::saw_tick(std::uint32_t tick) {
+  if (tick <= newest_) return;
+  newest_ = tick;
+  if (newest_ < window_) return;
+  const std::uint32_t oldest = newest_ - window_;
+  while (!states_.empty() && states_.begin()->first < oldest) states_.erase(states_.begin());
+  std::erase_if(deltas_, [oldest](const auto& item) { return item.first.tick < oldest; });
+}
+
+DecodeMemo::State DecodeMemo::intern(std::uint32_t tick, ModalState&& state) {
+  saw_tick(tick);
+  auto& same_tick = states_[tick];
+  const std::uint64_t hash = hash_state(state);
+  const auto [begin, end] = same_tick.equal_range(hash);
+  for (auto it = begin; it != end; ++it) {
+    if (*it->second == state) {
+      ++counts_.intern_hits;
+      return it->second;
+    }
+  }
+  ++counts_.interned;
+  State shared = std::make_shared<const ModalState>(std::move(state));
+  same_tick.emplace(hash, shared);
+  return shared;
+}
+
+const DecodeMemo::Result* DecodeMemo::find(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload) {
+  const auto found = deltas_.find(Key{baseline.get(), tick, fnv1a(payload)});
+  if (found != deltas_.end()) {
+    for (const Entry& e : found->second) {
+      if (std::equal(e.payload.begin(), e.payload.end(), payload.begin(), payload.end())) {
+        ++counts_.hits;
+        return &e.result;
+      }
+    }
+  }
+  ++counts_.misses;
+  return nullptr;
+}
+
+const DecodeMemo::Result& DecodeMemo::remember(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload,
+                                               State state, ReconstructedFrame&& frame) {
+  saw_tick(tick);
+  frame.shared_id = ++frame_ids_;
+  Entry entry{baseline, std::vector<std::uint8_t>(payload.begin(), payload.end()),
+              Result{std::move(state), std::make_shared<const ReconstructedFrame>(std::move(frame))}};
+  auto& bucket = deltas_[Key{baseline.get(), tick, fnv1a(payload)}];
+  bucket.push_back(std::move(entry));
+  return bucket.back().result;
+}
+
+}  // namespace ocean::codec

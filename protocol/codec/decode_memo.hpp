@@ -1,0 +1,75 @@
+// DecodeMemo: lets many decoders of one stream share their work, exactly. Complete states are
+// interned by content, so equal states are one object; a single-chunk delta decoded from an
+// interned state is remembered by (that object, tick, payload bytes), and a decoder that gets the
+// same bytes on the same baseline object takes the remembered state and frame instead of
+// decoding again. A hit needs identical inputs, so it changes no result: a load test's hundreds
+// of clients of one stream decode each distinct frame once. One memo per thread (not locked).
+#pragma once
+
+#include "frame_reconstruction.hpp"
+#include "modal_model.hpp"
+#include "stream_config.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+namespace ocean::codec {
+
+class DecodeMemo {
+ public:
+  using State = std::shared_ptr<const ModalState>;
+  using Frame = std::shared_ptr<const ReconstructedFrame>;
+  struct Result {
+    State state;  // the frame's complete state (interned)
+    Frame frame;  // what the decoder shows for it; frame->shared_id != 0
+  };
+  struct Counts {
+    std::uint64_t hits = 0, misses = 0, interned = 0, intern_hits = 0;
+  };
+
+  // window_ticks: entries older than the newest tick seen minus this are forgotten.
+  explicit DecodeMemo(const StreamConfig& config, std::uint32_t window_ticks = 64);
+
+  const StreamConfig& config() const { return config_; }
+  const Counts& counts() const { return counts_; }
+
+  // The one object holding a state equal to `state` at `tick`.
+  State intern(std::uint32_t tick, ModalState&& state);
+
+  const Result* find(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload);
+  // `frame` gets a fresh shared_id; returns the stored result.
+  const Result& remember(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload,
+                         State state, ReconstructedFrame&& frame);
+
+ private:
+  struct Key {
+    const ModalState* baseline;
+    std::uint32_t tick;
+    std::uint64_t payload_hash;
+    bool operator==(const Key&) const = default;
+  };
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const;
+  };
+  struct Entry {
+    State baseline;  // held so its address cannot be reused while the key names it
+    std::vector<std::uint8_t> payload;
+    Result result;
+  };
+
+  void saw_tick(std::uint32_t tick);
+
+  StreamConfig config_;
+  std::uint32_t window_;
+  std::uint32_t newest_ = 0;
+  std::uint64_t frame_ids_ = 0;
+  std::unordered_map<Key, std::vector<Entry>, KeyHash> deltas_;
+  std::map<std::uint32_t, std::unordered_multimap<std::uint64_t, State>> states_;  // tick -> content hash -> state
+  Counts counts_;
+};
+
+}  // namespace ocean::codec

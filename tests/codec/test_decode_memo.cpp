@@ -1,0 +1,115 @@
+// DecodeMemo: decoders that share a memo show exactly what a lone decoder shows, decode each
+// distinct (baseline, bytes) once, and never serve a frame for different inputs.
+#include "stream_harness.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace ocean::codec;
+using namespace ocean::codec::test;
+
+namespace {
+
+bool same_frame(const ReconstructedFrame* a, const ReconstructedFrame* b) {
+  return a && b && a->tick == b->tick && a->complete == b->complete && a->height == b->height &&
+         a->slope_x == b->slope_x && a->slope_z == b->slope_z;
+}
+
+// Payloads large enough that every delta is one chunk (the memo only shares single-chunk deltas).
+constexpr std::size_t kWide = 16000;
+EncoderOptions wide_encoder() {
+  EncoderOptions o;
+  o.max_payload = kWide;
+  return o;
+}
+DecoderOptions wide_decoder(DecodeMemo* memo) {
+  DecoderOptions o;
+  o.max_payload = kWide;
+  o.memo = memo;
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("decoders sharing a memo match a lone decoder bit for bit and share the work") {
+  const StreamConfig config = test_config(32, 30);
+  const SyntheticOcean ocean(32, 128.0, 120, 5, 0.4);
+  const double dt = 1.0 / config.rate_hz;
+  Encoder enc(config, wide_encoder());
+  DecodeMemo memo(config);
+  Decoder lone(config, wide_decoder(nullptr)), a(config, wide_decoder(&memo)), b(config, wide_decoder(&memo));
+  enc.add_truth(0, view_of(ocean.at(0.0)));
+  std::map<std::uint32_t, StateId> sent;
+  int compared = 0, other_baseline = 0;
+  for (std::uint32_t tick = 1; tick <= 60; ++tick) {
+    enc.add_truth(tick, view_of(ocean.at(tick * dt)));
+    std::shared_ptr<const EncodedFrame> f =
+        tick == 1 ? enc.encode_key(tick) : enc.encode_delta(tick, sent[tick - (tick > 3 ? 2 : 1)]);
+    sent[tick] = f->id;
+    for (const Chunk& c : f->chunks) {
+      REQUIRE(lone.accept(c) == ChunkError::ok);
+      REQUIRE(a.accept(c) == ChunkError::ok);
+      REQUIRE(b.accept(c) == ChunkError::ok);
+    }
+    REQUIRE(same_frame(lone.latest(), a.latest()));
+    REQUIRE(same_frame(lone.latest(), b.latest()));
+    REQUIRE(*lone.state(tick) == *a.state(tick));
+    REQUIRE(a.state(tick) == b.state(tick));  // one interned object
+    if (!f->key) {
+      REQUIRE(f->chunks.size() == 1);
+      CHECK(a.latest()->shared_id != 0);
+      CHECK(a.latest()->shared_id == b.latest()->shared_id);
+      CHECK(lone.latest()->shared_id == 0);
+    }
+    ++compared;
+    // The same tick from another baseline: other bytes, so the memo must not answer with the first.
+    if (tick > 4 && tick % 5 == 0) {
+      const auto other = enc.encode_delta(tick, sent[tick - 1]);
+      REQUIRE(other->chunks.size() == 1);
+      CHECK(other->chunks[0].payload != f->chunks[0].payload);
+      ++other_baseline;
+    }
+  }
+  CHECK(compared == 60);
+  CHECK(other_baseline > 0);
+  // b found every single-chunk delta that a decoded first.
+  CHECK(memo.counts().hits >= 59);
+  CHECK(memo.counts().misses >= 59);
+  CHECK(memo.counts().intern_hits >= 1);  // b's key state is a's object
+}
+
+TEST_CASE("a memo answers only for the exact baseline object and bytes") {
+  const StreamConfig config = test_config(32, 30);
+  const SyntheticOcean ocean(32, 128.0, 120, 9, 0.4);
+  const double dt = 1.0 / config.rate_hz;
+  Encoder enc(config, wide_encoder());
+  DecodeMemo memo(config);
+  enc.add_truth(0, view_of(ocean.at(0.0)));
+  enc.add_truth(1, view_of(ocean.at(dt)));
+  const auto key = enc.encode_key(1);
+  enc.add_truth(2, view_of(ocean.at(2 * dt)));
+  enc.add_truth(3, view_of(ocean.at(3 * dt)));
+  const auto d2 = enc.encode_delta(2, key->id);
+  const auto d3_from_key = enc.encode_delta(3, key->id);
+  const auto d3_from_2 = enc.encode_delta(3, d2->id);
+  Decoder lone(config, wide_decoder(nullptr)), x(config, wide_decoder(&memo)), y(config, wide_decoder(&memo));
+  for (Decoder* d : {&lone, &x, &y})
+    for (const Chunk& c : key->chunks) REQUIRE(d->accept(c) == ChunkError::ok);
+  // x: 3 from the key; y: 2, then 3 from 2. Same tick, different inputs: different results.
+  REQUIRE(x.accept(d3_from_key->chunks[0]) == ChunkError::ok);
+  REQUIRE(y.accept(d2->chunks[0]) == ChunkError::ok);
+  REQUIRE(y.accept(d3_from_2->chunks[0]) == ChunkError::ok);
+  REQUIRE(lone.accept(d2->chunks[0]) == ChunkError::ok);
+  REQUIRE(lone.accept(d3_from_2->chunks[0]) == ChunkError::ok);
+  CHECK(memo.counts().hits == 0);
+  CHECK(same_frame(lone.latest(), y.latest()));
+  CHECK(x.latest()->shared_id != y.latest()->shared_id);
+  CHECK(*x.state(3) == *enc.state(d3_from_key->id));
+  CHECK(*y.state(3) == *enc.state(d3_from_2->id));
+}
+
+TEST_CASE("a memo of another stream configuration is refused") {
+  DecodeMemo memo(test_config(32, 30));
+  DecoderOptions shared;
+  shared.memo = &memo;
+  CHECK_THROWS_AS(Decoder(test_config(64, 30), shared), std::invalid_argument);
+}
