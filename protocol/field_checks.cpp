@@ -182,6 +182,18 @@ Problem check(const wire::FrameChunk& m, const wire::Message&, std::size_t, wire
   return kOk;
 }
 
+Problem check(const wire::FrameBundle& m, const wire::Message& message, std::size_t size, wire::Transport transport) {
+  const auto* chunks = m.chunks();
+  if (!chunks) return fail(Reason::missing_field, "FrameBundle.chunks", "present");
+  if (chunks->size() < 1 || chunks->size() > kMaxBundleChunks)
+    return fail(Reason::out_of_range, "FrameBundle.chunks", "1..8 chunks");
+  for (const wire::FrameChunk* chunk : *chunks) {
+    if (!chunk) return fail(Reason::missing_field, "FrameBundle.chunks", "no null entries");
+    if (auto p = check(*chunk, message, size, transport)) return p;
+  }
+  return kOk;
+}
+
 Problem check(const wire::Ack& m, const wire::Message&, std::size_t, wire::Transport transport) {
   if (auto p = session(m.session_id(), "Ack.session_id")) return p;
   return cookie(m.cookie(), transport == wire::Transport::udp, "Ack.cookie");
@@ -262,6 +274,7 @@ Problem check_body(const wire::Message& message, std::size_t size, wire::Transpo
     case wire::Body::Bye: return check_as<wire::Bye>(message, size, transport);
     case wire::Body::Ping: return check_as<wire::Ping>(message, size, transport);
     case wire::Body::Pong: return check_as<wire::Pong>(message, size, transport);
+    case wire::Body::FrameBundle: return check_as<wire::FrameBundle>(message, size, transport);
     case wire::Body::NONE: break;
   }
   return fail(Reason::unknown_message_type, "Message.body_type", "a type defined in ocean.fbs");

@@ -1,7 +1,10 @@
 // Builds each message with the generated FlatBuffers builders and finishes it size-prefixed.
 #include "message_builders.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
+#include <stdexcept>
 
 #include "protocol_version.hpp"
 #include "wire_limits.hpp"
@@ -128,18 +131,59 @@ Bytes encode(const UdpReady& m) {
   return finish(fbb, wire::Body::UdpReady, b.Finish());
 }
 
+
+namespace {
+
+flatbuffers::Offset<wire::FrameChunk> add_chunk(FlatBufferBuilder& fbb, const FrameHeader& frame, std::uint16_t index,
+                                                std::uint16_t count, std::span<const std::uint8_t> payload) {
+  const auto bytes = fbb.CreateVector(payload.data(), payload.size());
+  wire::FrameChunkBuilder b(fbb);
+  b.add_tick(frame.tick);
+  b.add_baseline(frame.baseline);
+  b.add_key(frame.key);
+  b.add_profile_id(frame.profile_id);
+  b.add_index(index);
+  b.add_count(count);
+  b.add_payload(bytes);
+  return b.Finish();
+}
+
+}  // namespace
+
 Bytes encode(const FrameChunk& m) {
   FlatBufferBuilder fbb(m.payload.size() + kChunkOverheadBytes);
-  const auto payload = fbb.CreateVector(m.payload.data(), m.payload.size());
-  wire::FrameChunkBuilder b(fbb);
-  b.add_tick(m.frame.tick);
-  b.add_baseline(m.frame.baseline);
-  b.add_key(m.frame.key);
-  b.add_profile_id(m.frame.profile_id);
-  b.add_index(m.index);
-  b.add_count(m.count);
-  b.add_payload(payload);
-  return finish(fbb, wire::Body::FrameChunk, b.Finish());
+  return finish(fbb, wire::Body::FrameChunk, add_chunk(fbb, m.frame, m.index, m.count, m.payload));
+}
+
+Bytes encode(const FrameBundle& m) {
+  std::size_t size = 64;
+  for (const FrameChunk& c : m.chunks) size += c.payload.size() + kChunkOverheadBytes;
+  FlatBufferBuilder fbb(size);
+  std::vector<flatbuffers::Offset<wire::FrameChunk>> chunks;
+  for (const FrameChunk& c : m.chunks) chunks.push_back(add_chunk(fbb, c.frame, c.index, c.count, c.payload));
+  const auto vector = fbb.CreateVector(chunks);
+  wire::FrameBundleBuilder b(fbb);
+  b.add_chunks(vector);
+  return finish(fbb, wire::Body::FrameBundle, b.Finish());
+}
+
+Bytes encode_bundle(std::span<const std::span<const std::uint8_t>> chunk_messages) {
+  std::size_t size = 64;
+  for (const auto& bytes : chunk_messages) size += bytes.size();
+  FlatBufferBuilder fbb(size);
+  std::vector<flatbuffers::Offset<wire::FrameChunk>> chunks;
+  for (const auto& bytes : chunk_messages) {
+    const wire::FrameChunk* c = wire::GetSizePrefixedMessage(bytes.data())->body_as_FrameChunk();
+    if (!c) throw std::invalid_argument("encode_bundle: a message that is not a FrameChunk");
+    const auto* payload = c->payload();
+    chunks.push_back(add_chunk(fbb, FrameHeader{c->tick(), c->baseline(), c->key(), c->profile_id()}, c->index(), c->count(),
+                               payload ? std::span<const std::uint8_t>(payload->data(), payload->size())
+                                       : std::span<const std::uint8_t>()));
+  }
+  const auto vector = fbb.CreateVector(chunks);
+  wire::FrameBundleBuilder b(fbb);
+  b.add_chunks(vector);
+  return finish(fbb, wire::Body::FrameBundle, b.Finish());
 }
 
 Bytes encode(const Ack& m) {

@@ -25,6 +25,10 @@ Bytes encode(const Error& message);
 Bytes encode(const Bye& message);
 Bytes encode(const Ping& message);
 Bytes encode(const Pong& message);
+Bytes encode(const FrameBundle& message);
+// A FrameBundle of FrameChunk messages already encoded (each whole, as encode() made it), oldest
+// first: the server re-sends the exact chunks it sent before without decoding them to structs.
+Bytes encode_bundle(std::span<const std::span<const std::uint8_t>> chunk_messages);
 Bytes encode(const AnyMessage& message);
 
 // One frame of opaque bytes cut into FrameChunk messages of at most max_payload bytes each

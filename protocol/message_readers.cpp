@@ -86,6 +86,14 @@ FrameChunk read(const wire::FrameChunk& m) {
   return out;
 }
 
+FrameBundle read(const wire::FrameBundle& m) {
+  FrameBundle out;
+  if (const auto* chunks = m.chunks())
+    for (const wire::FrameChunk* c : *chunks)
+      if (c) out.chunks.push_back(read(*c));
+  return out;
+}
+
 Ack read(const wire::Ack& m) {
   return Ack{m.session_id(), bytes_of(m.cookie()), m.latest_tick(), m.ack_bits()};
 }
@@ -144,6 +152,7 @@ AnyMessage decode(const wire::Message& message) {
     case wire::Body::Bye: return read(*message.body_as_Bye());
     case wire::Body::Ping: return read(*message.body_as_Ping());
     case wire::Body::Pong: return read(*message.body_as_Pong());
+    case wire::Body::FrameBundle: return read(*message.body_as_FrameBundle());
     case wire::Body::NONE: break;
   }
   // verify_message() rejects NONE and unknown types, so this is a caller bug.

@@ -25,5 +25,6 @@ Error read(const wire::Error& message);
 Bye read(const wire::Bye& message);
 Ping read(const wire::Ping& message);
 Pong read(const wire::Pong& message);
+FrameBundle read(const wire::FrameBundle& message);
 
 }  // namespace ocean::protocol

@@ -102,6 +102,12 @@ struct FrameChunk {
   bool operator==(const FrameChunk&) const = default;
 };
 
+// Frames in one datagram, oldest first (UDP only; PROTOCOL.md 6.4).
+struct FrameBundle {
+  std::vector<FrameChunk> chunks;
+  bool operator==(const FrameBundle&) const = default;
+};
+
 struct Ack {
   std::uint64_t session_id = 0;
   Bytes cookie;
@@ -171,6 +177,6 @@ struct Pong {
 // Any one message, as decode() returns it.
 using AnyMessage = std::variant<Hello, Welcome, UdpHello, UdpReady, FrameChunk, Ack,
                                 KeyframeRequest, SetTransport, ParamChange, SceneUpdate, Error, Bye,
-                                Ping, Pong>;
+                                Ping, Pong, FrameBundle>;
 
 }  // namespace ocean::protocol

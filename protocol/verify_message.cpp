@@ -51,6 +51,7 @@ bool may_send(Sender sender, wire::Body type) {
     case wire::Body::Welcome:
     case wire::Body::UdpReady:
     case wire::Body::FrameChunk:
+    case wire::Body::FrameBundle:
     case wire::Body::SceneUpdate:
     case wire::Body::Pong:
       return sender == Sender::server;
@@ -67,6 +68,7 @@ bool may_travel(wire::Transport transport, wire::Body type) {
   switch (type) {
     case wire::Body::UdpHello:
     case wire::Body::UdpReady:
+    case wire::Body::FrameBundle:
       return transport == wire::Transport::udp;
     case wire::Body::FrameChunk:
     case wire::Body::Ack:

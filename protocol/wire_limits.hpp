@@ -29,6 +29,8 @@ constexpr std::size_t max_chunk_payload(std::size_t max_message_bytes) {
 
 // Frame sequencing.
 inline constexpr std::uint16_t kMaxChunksPerFrame = 4096;
+// Frames in one FrameBundle datagram: the newest plus up to 7 unacknowledged earlier ones.
+inline constexpr std::size_t kMaxBundleChunks = 8;
 // tick - baseline of a delta frame, in ticks: the client keeps the frames of its 32-tick ack
 // window, so a baseline at most this old is one it still holds (PROTOCOL.md section 7).
 inline constexpr std::uint32_t kMaxBaselineGap = 32;

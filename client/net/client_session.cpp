@@ -113,7 +113,11 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
     }
     case wire::Body::FrameChunk:
       if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
-      return handle_chunk(*message.body_as_FrameChunk(), now);
+      handle_chunk(*message.body_as_FrameChunk(), now);
+      return;
+    case wire::Body::FrameBundle:
+      if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
+      return handle_bundle(*message.body_as_FrameBundle(), now);
     case wire::Body::SceneUpdate: {
       if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
       const protocol::SceneUpdate update = protocol::read(*message.body_as_SceneUpdate());
@@ -180,10 +184,32 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   send_ping(now);
 }
 
-void ClientSession::handle_chunk(const wire::FrameChunk& chunk, double now) {
+// Oldest first: a copy of a frame whose own datagram was lost completes before the newest frame,
+// so each is delivered in order; copies of frames already held are skipped, not refused.
+void ClientSession::handle_bundle(const wire::FrameBundle& bundle, double now) {
+  bool completed = false;
+  const auto& chunks = *bundle.chunks();  // verify_message requires 1..8 non-null chunks
+  for (flatbuffers::uoffset_t i = 0; i < chunks.size() && state_ == State::streaming; ++i) {
+    const wire::FrameChunk& chunk = *chunks.Get(i);
+    const bool last = i + 1 == chunks.size();
+    if (!last && decoder_->is_complete(chunk.tick())) {
+      ++stats_.chunks_received;
+      ++stats_.chunks_redundant;
+      continue;
+    }
+    if (handle_chunk(chunk, now, false)) {
+      completed = true;
+      if (!last) ++stats_.frames_recovered;
+    }
+  }
+  if (completed && state_ == State::streaming) send_ack(now);
+}
+
+bool ClientSession::handle_chunk(const wire::FrameChunk& chunk, double now, bool ack) {
   ++stats_.chunks_received;
   if (chunk.profile_id() != welcome_->stream.profile_id) {
-    return count_rejection(protocol::Reason::unknown_profile);
+    count_rejection(protocol::Reason::unknown_profile);
+    return false;
   }
   codec::ChunkView view;
   view.tick = chunk.tick();
@@ -198,10 +224,10 @@ void ClientSession::handle_chunk(const wire::FrameChunk& chunk, double now) {
     ++stats_.chunks_rejected_by_codec[static_cast<std::size_t>(error)];
     last_chunk_error_ = error;
     if (is_decode_error(error)) request_keyframe(wire::KeyframeReason::decode_error, now);
-    return;
+    return false;
   }
   ++stats_.chunks_accepted;
-  if (was_complete || !decoder_->is_complete(view.tick)) return;
+  if (was_complete || !decoder_->is_complete(view.tick)) return false;
   ++stats_.frames_complete;
   if (view.key) ++stats_.keyframes_complete;
   if (!stats_.latest_tick || view.tick > *stats_.latest_tick) stats_.latest_tick = view.tick;
@@ -212,7 +238,8 @@ void ClientSession::handle_chunk(const wire::FrameChunk& chunk, double now) {
     ++stats_.frames_delivered;
     if (events_.on_frame) events_.on_frame(*frame, view.tick);
   }
-  if (state_ == State::streaming) send_ack(now);
+  if (ack && state_ == State::streaming) send_ack(now);
+  return true;
 }
 
 void ClientSession::handle_pong(const protocol::Pong& pong, double now) {

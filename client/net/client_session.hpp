@@ -66,7 +66,9 @@ class ClientSession {
  private:
   void handle(const wire::Message& message, wire::Transport transport, double now);
   void handle_welcome(const protocol::Welcome& welcome, double now);
-  void handle_chunk(const wire::FrameChunk& chunk, double now);
+  // Returns true when the chunk completed a frame; acks then (unless the caller acks for a bundle).
+  bool handle_chunk(const wire::FrameChunk& chunk, double now, bool ack = true);
+  void handle_bundle(const wire::FrameBundle& bundle, double now);
   void handle_pong(const protocol::Pong& pong, double now);
   void reject(const protocol::Verified& result, wire::Transport transport, double now);
   void count_rejection(protocol::Reason reason);

@@ -26,7 +26,9 @@ struct ClientStats {
   std::array<std::uint64_t, protocol::kReasonCount> rejected_by_reason{};  // verification + session checks
   std::array<std::uint64_t, kChunkErrorCount> chunks_rejected_by_codec{};  // Decoder::accept refusals
 
-  std::uint64_t chunks_received = 0;   // verified FrameChunks
+  std::uint64_t chunks_received = 0;   // verified FrameChunks (bundled ones included)
+  std::uint64_t chunks_redundant = 0;  // bundled copies of frames already complete, skipped
+  std::uint64_t frames_recovered = 0;  // frames completed from a bundled copy (their first datagram was lost)
   std::uint64_t chunks_accepted = 0;   // taken by the decoder
   std::uint64_t frames_complete = 0;
   std::uint64_t keyframes_complete = 0;

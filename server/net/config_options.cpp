@@ -204,6 +204,11 @@ const ConfigOption kOptions[] = {
     {"max-clients", "N", "most clients connected at once, in 1..100000", ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_clients); },
      [](const ServerConfig& c) { return std::to_string(c.max_clients); }},
+    {"udp-redundancy", "N",
+     "copies of up to N earlier unacknowledged frames in each UDP datagram (FrameBundle), so a lost datagram "
+     "costs no frame; in 0..7",
+     ValueKind::integer, false, [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.udp_redundancy); },
+     [](const ServerConfig& c) { return std::to_string(c.udp_redundancy); }},
     {"admin-token-file", "PATH", "file holding the admin token (readable, non-empty); unset = no admin interface",
      ValueKind::text, false,
      [](ServerConfig& c, std::string_view v) -> std::string {

@@ -60,6 +60,9 @@ std::string validate_server_config(const ServerConfig& config) {
   if (config.max_clients < 1 || config.max_clients > kMaxClientsLimit)
     return "--max-clients " + std::to_string(config.max_clients) + ": must be in 1.." +
            std::to_string(kMaxClientsLimit);
+  if (config.udp_redundancy < 0 || config.udp_redundancy > kMaxUdpRedundancy)
+    return "--udp-redundancy " + std::to_string(config.udp_redundancy) + ": must be in 0.." +
+           std::to_string(kMaxUdpRedundancy) + " earlier frames per datagram";
   if (!(config.idle_timeout_s > 0.0) || config.idle_timeout_s > 3600.0)
     return "--idle-timeout " + std::to_string(config.idle_timeout_s) + ": must be in (0, 3600] seconds";
   if (spdlog::level::from_str(config.log_level) == spdlog::level::off && config.log_level != "off")

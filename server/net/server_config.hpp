@@ -41,6 +41,7 @@ struct ServerConfig {
   std::vector<std::string> profiles{"mobile", "desktop"};  // names from protocol/profile.hpp
 
   int max_clients = 64;
+  int udp_redundancy = 2;                         // earlier unacked frames copied into each datagram
   std::string admin_token_file;                   // empty = admin interface disabled
   std::string admin_token;                        // read from admin_token_file; never logged
   std::vector<std::uint8_t> cookie_key;           // empty = a random key per process
@@ -52,6 +53,7 @@ struct ServerConfig {
 inline constexpr int kMinTickRateHz = 1;
 inline constexpr int kMaxTickRateHz = 240;
 inline constexpr int kMaxClientsLimit = 100000;
+inline constexpr int kMaxUdpRedundancy = 7;  // a FrameBundle holds at most 8 chunks
 
 // Empty when the configuration is usable; otherwise one message naming the option (as a flag) and
 // what is allowed. Checks the scene (sim::validate), the schedule, and the server-level options.

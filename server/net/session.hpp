@@ -11,12 +11,19 @@
 #include <asio/ip/udp.hpp>
 
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 
 namespace ocean::server {
+
+// A single-chunk frame sent on UDP, kept to be copied into the next datagrams until acked.
+struct RecentFrame {
+  std::uint32_t tick = 0;
+  SharedBytes message;
+};
 
 struct Session {
   std::uint64_t id = 0;
@@ -28,6 +35,7 @@ struct Session {
   bool wants_udp = false;                   // Hello / SetTransport
   std::optional<asio::ip::udp::endpoint> udp;  // proven by a UdpHello
   BaselineTracker baselines;
+  std::deque<RecentFrame> recent_udp;       // the last kMaxUdpRedundancy single-chunk UDP frames
   bool need_key = true;                     // the next frame must be a key
   bool key_requested = false;               // a KeyframeRequest waits for its rate limit
   double last_key_s = -std::numeric_limits<double>::infinity();

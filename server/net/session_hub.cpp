@@ -1,39 +1,27 @@
 #include "session_hub.hpp"
 
+#include "admin_token.hpp"
+#include "hub_helpers.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
-#include "admin_token.hpp"
 #include "server_log.hpp"
-#include "wire_params.hpp"
 #include "verify_message.hpp"
+#include "wire_params.hpp"
 
 #include <sodium.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstring>
-#include <set>
 
 namespace ocean::server {
+
+using hub::cookie_endpoint;
+using hub::endpoint_text;
+using hub::unix_ms_now;
+
 namespace {
 
-std::int64_t unix_ms_now() {
-  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-}
-
-std::string endpoint_text(const auto& endpoint) {
-  std::string text = endpoint.address().to_string();
-  text += ':';
-  text += std::to_string(endpoint.port());
-  return text;
-}
-
 SharedBytes share(protocol::Bytes bytes) { return std::make_shared<const protocol::Bytes>(std::move(bytes)); }
-
-// The cookie binds the client's IP only: its UDP port is not known when the Welcome is sent.
-asio::ip::udp::endpoint cookie_endpoint(const asio::ip::address& address) { return {address, 0}; }
 
 }  // namespace
 
@@ -273,236 +261,6 @@ void SessionHub::on_param_change(const std::shared_ptr<Session>& session, const 
   spdlog::info("param_change accepted session={} peer={} request={} wind={} m/s dir={} deg amplitude={} choppiness={}",
                session->id, session->peer, change.request_id, scene.wind_speed_mps, scene.wind_dir_deg, scene.amplitude,
                scene.choppiness);
-}
-
-// ---- UDP ----
-
-void SessionHub::drop_datagram(protocol::Reason reason, const asio::ip::udp::endpoint& sender) {
-  datagram_rejects_[static_cast<std::size_t>(reason) % datagram_rejects_.size()]->inc();
-  if (spdlog::should_log(spdlog::level::debug)) log_reject("udp", endpoint_text(sender), protocol::to_string(reason), true);
-}
-
-void SessionHub::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
-  if (bytes.size() > datagram_.size()) return drop_datagram(protocol::Reason::oversized, sender);
-  std::memcpy(datagram_.data(), bytes.data(), bytes.size());  // verify_message needs 8-byte alignment
-  const std::span<const std::uint8_t> aligned(datagram_.data(), bytes.size());
-  const protocol::Verified verified = protocol::verify_message(aligned, {protocol::Sender::client, wire::Transport::udp});
-  const wire::Message* message = verified.message;
-  std::uint64_t session_id = 0;
-  if (verified) {
-    switch (message->body_type()) {
-      case wire::Body::UdpHello: session_id = message->body_as_UdpHello()->session_id(); break;
-      case wire::Body::Ack: session_id = message->body_as_Ack()->session_id(); break;
-      case wire::Body::KeyframeRequest: session_id = message->body_as_KeyframeRequest()->session_id(); break;
-      case wire::Body::Ping: session_id = message->body_as_Ping()->session_id(); break;
-      default: break;
-    }
-  }
-  const auto found = sessions_.find(session_id);
-  const bool proven = found != sessions_.end() && found->second->udp == sender;
-  if (!proven) unproven_bytes_in_ += bytes.size();
-  if (!verified) return drop_datagram(verified.reason, sender);
-  if (found == sessions_.end()) return drop_datagram(protocol::Reason::bad_session, sender);
-  Session& session = *found->second;
-  if (message->body_type() == wire::Body::UdpHello) {
-    // Stateless first: the MAC binds the cookie to this IP; then the session's own cookie.
-    const auto* cookie = message->body_as_UdpHello()->cookie();
-    const CookieCheck check = verify_cookie(server_.cookie_key(), std::span<const std::uint8_t>(cookie->data(), cookie->size()),
-                                            cookie_endpoint(sender.address()), unix_ms_now());
-    if (check.status != CookieStatus::ok || check.session_id != session_id) return drop_datagram(protocol::Reason::bad_cookie, sender);
-    if (const protocol::Reason r = protocol::check_udp_sender(*message, session.id, session.cookie); r != protocol::Reason::ok)
-      return drop_datagram(r, sender);
-    const bool moved = session.udp != sender;
-    session.udp = sender;
-    session.last_heard_s = monotonic_s();
-    const protocol::Bytes ready = protocol::encode(protocol::UdpReady{session.id});
-    if (!proven) unproven_bytes_out_ += ready.size();  // always smaller than the padded UdpHello
-    if (ready.size() <= bytes.size()) server_.send_datagram(ready, sender);
-    if (moved) {
-      spdlog::info("udp proven session={} peer={}", session.id, endpoint_text(sender));
-      update_client_gauges();
-    }
-    return;
-  }
-  if (!proven) return drop_datagram(protocol::Reason::bad_session, sender);  // address not proven
-  if (const protocol::Reason r = protocol::check_udp_sender(*message, session.id, session.cookie); r != protocol::Reason::ok)
-    return drop_datagram(r, sender);
-  session.last_heard_s = monotonic_s();
-  switch (message->body_type()) {
-    case wire::Body::Ack:
-      session.baselines.on_ack({message->body_as_Ack()->latest_tick(), message->body_as_Ack()->ack_bits()});
-      break;
-    case wire::Body::KeyframeRequest:
-      session.key_requested = true;
-      break;
-    case wire::Body::Ping: {
-      const wire::Ping& ping = *message->body_as_Ping();
-      const protocol::Bytes pong = protocol::encode(protocol::Pong{ping.seq(), ping.client_time_us(), tick_, unix_ms_now()});
-      server_.send_datagram(pong, sender);
-      break;
-    }
-    default:
-      break;
-  }
-}
-
-// ---- ticks ----
-
-void SessionHub::apply_scene_change(const TickFrames& frames) {
-  scene_ = frames.scene;
-  for (auto& stream : streams_) stream->reset(stream_config(stream->profile(), scene_));
-  for (auto& [id, session] : sessions_) {
-    const std::uint32_t request_id = session->scene_request_id.value_or(0);
-    session->scene_request_id.reset();
-    send_control(*session, protocol::encode(protocol::SceneUpdate{request_id, tick_, wire_scene(scene_)}));
-    session->baselines.reset();  // the codec cannot predict across a physics change
-    session->need_key = true;
-  }
-}
-
-void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
-  if (stopping_) return;
-  tick_ = static_cast<std::uint32_t>(frames->tick);
-  if (frames->scene_changed && have_tick_) apply_scene_change(*frames);
-  scene_ = frames->scene;
-  have_tick_ = true;
-  for (auto& stream : streams_)
-    for (const ProfileFrame& frame : frames->frames)
-      if (frame.profile == &stream->profile()) stream->add_truth(tick_, frame.frame);
-
-  const double now = monotonic_s();
-  std::vector<std::pair<const void*, codec::StateId>> bases;
-  HubTickStats stats;
-  stats.tick = tick_;
-  for (auto& stream : streams_)
-    if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_)) limit_roots(*stream, tick_);
-  for (auto& [id, session] : sessions_) {
-    try {
-      serve(*session, tick_, now, bases);
-    } catch (const std::exception& e) {  // an encoder precondition: a server bug, not the client's
-      spdlog::error("session={} tick={}: {}", id, tick_, e.what());
-      refuse(*session, protocol::Reason::internal_error, "internal_error: the server failed to encode a frame");
-    }
-  }
-  std::sort(bases.begin(), bases.end());
-  stats.sessions_served = bases.size();
-  stats.distinct_baselines = static_cast<std::size_t>(std::unique(bases.begin(), bases.end()) - bases.begin());
-  for (const auto& stream : streams_) {
-    stats.encodes += stream->encodes_this_tick();
-    if (stream->encodes_this_tick() > 0) server_.metrics().encode_seconds.observe(stream->encode_seconds_this_tick());
-  }
-  server_.metrics().encodes.inc(static_cast<double>(stats.encodes));
-  server_.metrics().encodes_last_tick.set(static_cast<double>(stats.encodes));
-  last_tick_ = stats;
-  if (tick_observer_) tick_observer_(stats);
-  sweep_timeouts(now);
-}
-
-void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
-                       std::vector<std::pair<const void*, codec::StateId>>& bases) {
-  ProfileStream& stream = *session.stream;
-  if (!session.link->open() || !stream.is_frame_tick(tick)) return;
-  const bool udp = session.on_udp();
-  const bool key_due = now_s - session.last_key_s >= options_.key_interval_s;
-  std::optional<codec::StateId> base;
-  if (!session.need_key && !(session.key_requested && key_due))
-    base = session.baselines.choose(tick, udp, [&](codec::StateId id) { return stream.has_state(id); });
-  ServerMetrics& metrics = server_.metrics();
-  if (!base) {
-    // A key on TCP, on a key tick (everyone keyed in one tick shares the key and every delta
-    // after it): when required, else (acks missing) at most once per key interval.
-    if ((!session.need_key && !key_due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
-    const SharedFrame& frame = stream.key(tick);
-    bases.emplace_back(&stream, codec::StateId{tick, 0});
-    if (!session.link->has_room(frame.bytes)) {
-      metrics.send_queue_drops.inc();
-      session.need_key = true;
-      return;
-    }
-    for (const SharedBytes& message : frame.messages) session.link->send(message);
-    session.need_key = session.key_requested = false;
-    session.last_key_s = now_s;
-    session.baselines.record_sent(tick, frame.encoded->id, true, true);
-    metrics.keyframes_sent.inc();
-    metrics.frames_sent("tcp").inc();
-    metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
-    if (observer_) observer_(session.id, frame);
-    return;
-  }
-  const SharedFrame& frame = stream.delta(tick, *base);
-  bases.emplace_back(&stream, *base);
-  // UDP only once TCP has flushed: a datagram overtaking the TCP frames before it would leave them
-  // complete but older than what the client already shows.
-  if (udp && session.baselines.is_acked(*base) && session.link->queued_bytes() == 0) {
-    if (!session.udp_bucket.try_take(frame.bytes, now_s)) {
-      metrics.frames_skipped_bandwidth.inc();
-      return;
-    }
-    for (const SharedBytes& message : frame.messages) server_.send_datagram(*message, *session.udp);
-    session.baselines.record_sent(tick, frame.encoded->id, false);
-    metrics.frames_sent("udp").inc();
-    metrics.bytes_sent("udp").inc(static_cast<double>(frame.bytes));
-  } else {
-    // Within the budget the link paces; beyond a quarter second of backlog a frame is skipped.
-    if (session.bytes_per_s > 0.0 && static_cast<double>(session.link->queued_bytes()) > 0.25 * session.bytes_per_s) {
-      metrics.frames_skipped_bandwidth.inc();
-      return;
-    }
-    if (!session.link->has_room(frame.bytes)) {
-      metrics.send_queue_drops.inc();
-      return;  // the baseline stays the last queued frame, or a key once it ages out
-    }
-    for (const SharedBytes& message : frame.messages) session.link->send(message);
-    session.baselines.record_sent(tick, frame.encoded->id, true);
-    metrics.frames_sent("tcp").inc();
-    metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
-  }
-  if (observer_) observer_(session.id, frame);
-}
-
-bool SessionHub::is_key_tick(const ProfileStream& stream, std::uint32_t tick) const {
-  const auto frames = std::max<long>(1, std::lround(options_.key_period_s * stream.profile().rate_hz));
-  return tick % (stream.tick_step() * static_cast<std::uint32_t>(frames)) == 0;
-}
-
-// Sessions keyed at different ticks hold different states forever (a key is lossy), so every
-// root costs its own encodes each tick. Beyond max_roots, the smallest root old enough is keyed
-// again onto the root this key tick starts: one per key tick, so neither the keys' bytes nor the
-// clients' key decodes come in one burst, and a session pays at most one extra key per
-// root_merge_age_s.
-void SessionHub::limit_roots(ProfileStream& stream, std::uint32_t tick) {
-  std::map<std::uint32_t, std::vector<Session*>> roots;
-  for (auto& [id, session] : sessions_)
-    if (session->stream == &stream && !session->need_key)
-      if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
-  if (roots.size() <= options_.max_roots) return;
-  const double min_age_ticks = options_.root_merge_age_s * server_.config().tick_rate_hz;
-  std::uint32_t smallest = 0;
-  std::size_t smallest_size = 0;
-  for (const auto& [root, members] : roots)
-    if (static_cast<double>(tick - root) >= min_age_ticks && (smallest_size == 0 || members.size() < smallest_size)) {
-      smallest = root;
-      smallest_size = members.size();
-    }
-  if (smallest_size == 0) return;
-  for (Session* session : roots[smallest]) session->need_key = true;
-  server_.metrics().root_merges.inc();
-  spdlog::debug("tick {} profile {}: {} key roots; the {} sessions of root {} are keyed again", tick,
-                stream.profile().name, roots.size(), smallest_size, smallest);
-}
-
-void SessionHub::sweep_timeouts(double now_s) {
-  std::vector<std::shared_ptr<Session>> expired;
-  for (const auto& session : handshaking_)
-    if (session->link->open() && now_s - session->opened_s > options_.handshake_timeout_s) expired.push_back(session);
-  for (const auto& session : expired) refuse(*session, protocol::Reason::timeout, "timeout: no Hello within the handshake time");
-  expired.clear();
-  for (const auto& [id, session] : sessions_)
-    if (session->link->open() && now_s - session->last_heard_s > server_.config().idle_timeout_s) expired.push_back(session);
-  for (const auto& session : expired) {
-    server_.metrics().rejects("idle_timeout").inc();
-    end(*session, wire::ByeReason::idle_timeout, "no message for the idle limit (--idle-timeout)");
-  }
 }
 
 void SessionHub::update_client_gauges() {

@@ -73,6 +73,8 @@ class SessionHub {
   void on_stop();
 
   void serve(Session& session, std::uint32_t tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
+  bool send_udp_frame(Session& session, std::uint32_t tick, const SharedFrame& frame, double now_s);
+  SharedBytes bundle_of(const std::vector<const SharedBytes*>& copies, const SharedBytes& newest);
   void limit_roots(ProfileStream& stream, std::uint32_t tick);
   bool is_key_tick(const ProfileStream& stream, std::uint32_t tick) const;
   void sweep_timeouts(double now_s);
@@ -100,6 +102,7 @@ class SessionHub {
   TickObserver tick_observer_;
   std::array<Counter*, 29> datagram_rejects_{};  // by protocol::Reason, made up front: no allocation per datagram
   alignas(8) std::array<std::uint8_t, protocol::kMaxDatagram> datagram_{};
+  std::map<std::vector<const protocol::Bytes*>, SharedBytes> bundles_;  // this tick's, by their chunks
   std::uint64_t unproven_bytes_in_ = 0;
   std::uint64_t unproven_bytes_out_ = 0;
   std::size_t peak_closed_queued_bytes_ = 0;

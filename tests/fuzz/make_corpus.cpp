@@ -64,6 +64,16 @@ void write_protocol_seeds(const fs::path& out) {
       session(out / "fuzz_client_session");
   std::vector<protocol::Bytes> all = client_messages();
   for (const auto& m : exchange) all.push_back(m.bytes);
+  // A FrameBundle of the exchange's single frames, as the server's UDP redundancy sends them.
+  std::vector<std::span<const std::uint8_t>> chunks;
+  for (const auto& m : exchange)
+    if (wire::GetSizePrefixedMessage(m.bytes.data())->body_type() == wire::Body::FrameChunk && chunks.size() < 3)
+      chunks.emplace_back(m.bytes);
+  protocol::Bytes bundle;
+  if (!chunks.empty()) {
+    bundle = protocol::encode_bundle(chunks);
+    all.push_back(bundle);
+  }
   for (const auto& m : all) verify.add(m);
 
   // Framer: limit selector 2 (64 KiB), read sizes, then a stream of real messages.
@@ -81,6 +91,11 @@ void write_protocol_seeds(const fs::path& out) {
       const bool udp = exchange[i].transport == wire::Transport::udp;
       fuzz::append_record(seed, static_cast<std::uint8_t>((udp ? 1 : 0) | 2 | 16), exchange[i].bytes);
     }
+    session.add(seed);
+  }
+  if (!bundle.empty()) {
+    Seed seed{1};  // the harness replays the Welcome itself
+    fuzz::append_record(seed, 1, bundle);
     session.add(seed);
   }
   for (std::size_t i = 1; i < exchange.size(); ++i) {

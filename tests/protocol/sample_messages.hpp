@@ -72,6 +72,14 @@ inline FrameChunk sample_chunk() {
   return c;
 }
 
+inline FrameBundle sample_bundle() {
+  FrameChunk older = sample_chunk();
+  older.frame = FrameHeader{999, 998, false, 1};
+  older.index = 0;
+  older.count = 1;
+  return FrameBundle{{older, sample_chunk()}};
+}
+
 inline ParamChange sample_param_change() {
   ParamChange p;
   p.admin_token = "s3cret";
@@ -106,6 +114,7 @@ inline std::vector<Sample> all_samples() {
       {Bye{wire::ByeReason::server_shutdown, "maintenance"}, Sender::server},
       {Ping{session, cookie, 42, 123'456'789'012ull}, Sender::client},
       {Pong{42, 123'456'789'012ull, 1001, 1'763'700'033'366}, Sender::server},
+      {sample_bundle(), Sender::server},
   };
 }
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "message_builders.hpp"
+#include "message_readers.hpp"
 #include "sample_messages.hpp"
 
 using namespace ocean::protocol;
@@ -86,4 +87,28 @@ TEST_CASE("every message allowed on UDP fits a datagram with its largest fields"
                              encode(Ping{big, cookie, tick, big}), encode(Pong{tick, big, tick, -1}),
                              encode(UdpHello{big, cookie}), encode(UdpReady{big})})
     CHECK(fits_datagram(bytes));
+}
+
+TEST_CASE("a FrameBundle re-encodes whole chunk messages exactly and is checked chunk by chunk") {
+  FrameChunk a = sample_chunk(), b = sample_chunk();
+  a.frame = FrameHeader{999, 998, false, 1};
+  b.frame = FrameHeader{1000, 998, false, 1};
+  const Bytes ma = encode(a), mb = encode(b);
+  const std::vector<std::span<const std::uint8_t>> parts{ma, mb};
+  const Bytes bundle = encode_bundle(parts);
+  CHECK(bundle == encode(FrameBundle{{a, b}}));
+  const Verified ok = verify_message(bundle, kFromServerUdp);
+  REQUIRE(ok.ok);
+  CHECK(std::get<FrameBundle>(decode(*ok.message)).chunks == std::vector<FrameChunk>{a, b});
+  // UDP only, from the server only, 1..8 chunks, each a valid FrameChunk.
+  CHECK(verify_message(bundle, from(Sender::server, wire::Transport::tcp)).reason == Reason::unexpected_message);
+  CHECK(verify_message(bundle, from(Sender::client, wire::Transport::udp)).reason == Reason::unexpected_message);
+  CHECK(verify_message(encode(FrameBundle{}), kFromServerUdp).reason == Reason::out_of_range);
+  CHECK(verify_message(encode(FrameBundle{std::vector<FrameChunk>(kMaxBundleChunks + 1, a)}), kFromServerUdp).reason ==
+        Reason::out_of_range);
+  FrameChunk bad = b;
+  bad.index = bad.count;
+  const Verified refused = verify_message(encode(FrameBundle{{a, bad}}), kFromServerUdp);
+  CHECK(refused.reason == Reason::bad_chunk_index);
+  CHECK(refused.field == "FrameChunk.index");
 }

@@ -1,0 +1,90 @@
+// SessionHub, UDP side: every datagram is verified, matched to a proven session (or proves one
+// with its cookie), and answered never larger than it before proof; nothing is allocated per
+// datagram.
+#include "session_hub.hpp"
+
+#include "hub_helpers.hpp"
+#include "message_builders.hpp"
+#include "server_log.hpp"
+#include "verify_message.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <cstring>
+
+namespace ocean::server {
+
+using hub::cookie_endpoint;
+using hub::endpoint_text;
+using hub::unix_ms_now;
+
+void SessionHub::drop_datagram(protocol::Reason reason, const asio::ip::udp::endpoint& sender) {
+  datagram_rejects_[static_cast<std::size_t>(reason) % datagram_rejects_.size()]->inc();
+  if (spdlog::should_log(spdlog::level::debug)) log_reject("udp", endpoint_text(sender), protocol::to_string(reason), true);
+}
+
+void SessionHub::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
+  if (bytes.size() > datagram_.size()) return drop_datagram(protocol::Reason::oversized, sender);
+  std::memcpy(datagram_.data(), bytes.data(), bytes.size());  // verify_message needs 8-byte alignment
+  const std::span<const std::uint8_t> aligned(datagram_.data(), bytes.size());
+  const protocol::Verified verified = protocol::verify_message(aligned, {protocol::Sender::client, wire::Transport::udp});
+  const wire::Message* message = verified.message;
+  std::uint64_t session_id = 0;
+  if (verified) {
+    switch (message->body_type()) {
+      case wire::Body::UdpHello: session_id = message->body_as_UdpHello()->session_id(); break;
+      case wire::Body::Ack: session_id = message->body_as_Ack()->session_id(); break;
+      case wire::Body::KeyframeRequest: session_id = message->body_as_KeyframeRequest()->session_id(); break;
+      case wire::Body::Ping: session_id = message->body_as_Ping()->session_id(); break;
+      default: break;
+    }
+  }
+  const auto found = sessions_.find(session_id);
+  const bool proven = found != sessions_.end() && found->second->udp == sender;
+  if (!proven) unproven_bytes_in_ += bytes.size();
+  if (!verified) return drop_datagram(verified.reason, sender);
+  if (found == sessions_.end()) return drop_datagram(protocol::Reason::bad_session, sender);
+  Session& session = *found->second;
+  if (message->body_type() == wire::Body::UdpHello) {
+    // Stateless first: the MAC binds the cookie to this IP; then the session's own cookie.
+    const auto* cookie = message->body_as_UdpHello()->cookie();
+    const CookieCheck check = verify_cookie(server_.cookie_key(), std::span<const std::uint8_t>(cookie->data(), cookie->size()),
+                                            cookie_endpoint(sender.address()), unix_ms_now());
+    if (check.status != CookieStatus::ok || check.session_id != session_id) return drop_datagram(protocol::Reason::bad_cookie, sender);
+    if (const protocol::Reason r = protocol::check_udp_sender(*message, session.id, session.cookie); r != protocol::Reason::ok)
+      return drop_datagram(r, sender);
+    const bool moved = session.udp != sender;
+    session.udp = sender;
+    session.last_heard_s = monotonic_s();
+    const protocol::Bytes ready = protocol::encode(protocol::UdpReady{session.id});
+    if (!proven) unproven_bytes_out_ += ready.size();  // always smaller than the padded UdpHello
+    if (ready.size() <= bytes.size()) server_.send_datagram(ready, sender);
+    if (moved) {
+      spdlog::info("udp proven session={} peer={}", session.id, endpoint_text(sender));
+      update_client_gauges();
+    }
+    return;
+  }
+  if (!proven) return drop_datagram(protocol::Reason::bad_session, sender);  // address not proven
+  if (const protocol::Reason r = protocol::check_udp_sender(*message, session.id, session.cookie); r != protocol::Reason::ok)
+    return drop_datagram(r, sender);
+  session.last_heard_s = monotonic_s();
+  switch (message->body_type()) {
+    case wire::Body::Ack:
+      session.baselines.on_ack({message->body_as_Ack()->latest_tick(), message->body_as_Ack()->ack_bits()});
+      break;
+    case wire::Body::KeyframeRequest:
+      session.key_requested = true;
+      break;
+    case wire::Body::Ping: {
+      const wire::Ping& ping = *message->body_as_Ping();
+      const protocol::Bytes pong = protocol::encode(protocol::Pong{ping.seq(), ping.client_time_us(), tick_, unix_ms_now()});
+      server_.send_datagram(pong, sender);
+      break;
+    }
+    default:
+      break;
+  }
+}
+
+}  // namespace ocean::server

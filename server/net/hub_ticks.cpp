@@ -1,0 +1,228 @@
+// SessionHub, per tick: feeds each profile's stream, serves every session a key or a delta
+// (bundled with unacknowledged earlier frames on UDP), keeps the key roots few, and times out
+// the silent.
+#include "session_hub.hpp"
+
+#include "hub_helpers.hpp"
+#include "message_builders.hpp"
+#include "wire_params.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace ocean::server {
+
+void SessionHub::apply_scene_change(const TickFrames& frames) {
+  scene_ = frames.scene;
+  for (auto& stream : streams_) stream->reset(stream_config(stream->profile(), scene_));
+  for (auto& [id, session] : sessions_) {
+    const std::uint32_t request_id = session->scene_request_id.value_or(0);
+    session->scene_request_id.reset();
+    send_control(*session, protocol::encode(protocol::SceneUpdate{request_id, tick_, wire_scene(scene_)}));
+    session->baselines.reset();  // the codec cannot predict across a physics change
+    session->recent_udp.clear();
+    session->need_key = true;
+  }
+}
+
+void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
+  if (stopping_) return;
+  tick_ = static_cast<std::uint32_t>(frames->tick);
+  if (frames->scene_changed && have_tick_) apply_scene_change(*frames);
+  scene_ = frames->scene;
+  have_tick_ = true;
+  for (auto& stream : streams_)
+    for (const ProfileFrame& frame : frames->frames)
+      if (frame.profile == &stream->profile()) stream->add_truth(tick_, frame.frame);
+
+  const double now = monotonic_s();
+  bundles_.clear();  // the bytes of last tick's bundles stay alive while queued
+  std::vector<std::pair<const void*, codec::StateId>> bases;
+  HubTickStats stats;
+  stats.tick = tick_;
+  for (auto& stream : streams_)
+    if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_)) limit_roots(*stream, tick_);
+  for (auto& [id, session] : sessions_) {
+    try {
+      serve(*session, tick_, now, bases);
+    } catch (const std::exception& e) {  // an encoder precondition: a server bug, not the client's
+      spdlog::error("session={} tick={}: {}", id, tick_, e.what());
+      refuse(*session, protocol::Reason::internal_error, "internal_error: the server failed to encode a frame");
+    }
+  }
+  std::sort(bases.begin(), bases.end());
+  stats.sessions_served = bases.size();
+  stats.distinct_baselines = static_cast<std::size_t>(std::unique(bases.begin(), bases.end()) - bases.begin());
+  for (const auto& stream : streams_) {
+    stats.encodes += stream->encodes_this_tick();
+    if (stream->encodes_this_tick() > 0) server_.metrics().encode_seconds.observe(stream->encode_seconds_this_tick());
+  }
+  server_.metrics().encodes.inc(static_cast<double>(stats.encodes));
+  server_.metrics().encodes_last_tick.set(static_cast<double>(stats.encodes));
+  last_tick_ = stats;
+  if (tick_observer_) tick_observer_(stats);
+  sweep_timeouts(now);
+}
+
+void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
+                       std::vector<std::pair<const void*, codec::StateId>>& bases) {
+  ProfileStream& stream = *session.stream;
+  if (!session.link->open() || !stream.is_frame_tick(tick)) return;
+  const bool udp = session.on_udp();
+  const bool key_due = now_s - session.last_key_s >= options_.key_interval_s;
+  std::optional<codec::StateId> base;
+  if (!session.need_key && !(session.key_requested && key_due))
+    base = session.baselines.choose(tick, udp, [&](codec::StateId id) { return stream.has_state(id); });
+  ServerMetrics& metrics = server_.metrics();
+  if (!base) {
+    // A key on TCP, on a key tick (everyone keyed in one tick shares the key and every delta
+    // after it): when required, else (acks missing) at most once per key interval.
+    if ((!session.need_key && !key_due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
+    const SharedFrame& frame = stream.key(tick);
+    bases.emplace_back(&stream, codec::StateId{tick, 0});
+    if (!session.link->has_room(frame.bytes)) {
+      metrics.send_queue_drops.inc();
+      session.need_key = true;
+      return;
+    }
+    for (const SharedBytes& message : frame.messages) session.link->send(message);
+    session.need_key = session.key_requested = false;
+    session.last_key_s = now_s;
+    session.baselines.record_sent(tick, frame.encoded->id, true, true);
+    session.recent_udp.clear();  // nothing from before a key predicts anything after it
+    metrics.keyframes_sent.inc();
+    metrics.frames_sent("tcp").inc();
+    metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
+    if (observer_) observer_(session.id, frame);
+    return;
+  }
+  const SharedFrame& frame = stream.delta(tick, *base);
+  bases.emplace_back(&stream, *base);
+  // UDP only once TCP has flushed: a datagram overtaking the TCP frames before it would leave them
+  // complete but older than what the client already shows.
+  if (udp && session.baselines.is_acked(*base) && session.link->queued_bytes() == 0) {
+    if (!send_udp_frame(session, tick, frame, now_s)) {
+      metrics.frames_skipped_bandwidth.inc();
+      return;
+    }
+    session.baselines.record_sent(tick, frame.encoded->id, false);
+    metrics.frames_sent("udp").inc();
+  } else {
+    // Within the budget the link paces; beyond a quarter second of backlog a frame is skipped.
+    if (session.bytes_per_s > 0.0 && static_cast<double>(session.link->queued_bytes()) > 0.25 * session.bytes_per_s) {
+      metrics.frames_skipped_bandwidth.inc();
+      return;
+    }
+    if (!session.link->has_room(frame.bytes)) {
+      metrics.send_queue_drops.inc();
+      return;  // the baseline stays the last queued frame, or a key once it ages out
+    }
+    for (const SharedBytes& message : frame.messages) session.link->send(message);
+    session.baselines.record_sent(tick, frame.encoded->id, true);
+    metrics.frames_sent("tcp").inc();
+    metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
+  }
+  if (observer_) observer_(session.id, frame);
+}
+
+// A single-chunk frame goes out with copies of the session's earlier UDP frames that it has not
+// acked yet (newest udp_redundancy of them), oldest first, as one FrameBundle datagram; sessions
+// with the same history share the bundle's bytes. Copies are dropped first when the bandwidth
+// budget or the datagram size cannot hold them.
+bool SessionHub::send_udp_frame(Session& session, std::uint32_t tick, const SharedFrame& frame, double now_s) {
+  ServerMetrics& metrics = server_.metrics();
+  const std::size_t redundancy = static_cast<std::size_t>(server_.config().udp_redundancy);
+  std::vector<const SharedBytes*> parts;
+  if (frame.messages.size() == 1 && redundancy > 0) {
+    const auto acked = session.baselines.newest_acked();
+    for (const RecentFrame& r : session.recent_udp)
+      if (!acked || r.tick > *acked) parts.push_back(&r.message);
+    if (parts.size() > redundancy) parts.erase(parts.begin(), parts.end() - static_cast<std::ptrdiff_t>(redundancy));
+  }
+  SharedBytes bundle;
+  while (!parts.empty()) {
+    bundle = bundle_of(parts, frame.messages.front());
+    if (bundle->size() <= protocol::kMaxDatagram && session.udp_bucket.try_take(bundle->size(), now_s)) break;
+    bundle.reset();
+    parts.erase(parts.begin());  // the oldest copy goes first
+  }
+  if (bundle) {
+    server_.send_datagram(*bundle, *session.udp);
+    metrics.bytes_sent("udp").inc(static_cast<double>(bundle->size()));
+    metrics.bundled_copies.inc(static_cast<double>(parts.size()));
+  } else {
+    if (!session.udp_bucket.try_take(frame.bytes, now_s)) return false;
+    for (const SharedBytes& message : frame.messages) server_.send_datagram(*message, *session.udp);
+    metrics.bytes_sent("udp").inc(static_cast<double>(frame.bytes));
+  }
+  if (frame.messages.size() == 1) {
+    session.recent_udp.push_back(RecentFrame{tick, frame.messages.front()});
+    while (session.recent_udp.size() > kMaxUdpRedundancy) session.recent_udp.pop_front();
+  } else {
+    session.recent_udp.clear();  // multi-chunk frames are not bundled
+  }
+  return true;
+}
+
+SharedBytes SessionHub::bundle_of(const std::vector<const SharedBytes*>& copies, const SharedBytes& newest) {
+  std::vector<const protocol::Bytes*> key;
+  for (const SharedBytes* copy : copies) key.push_back(copy->get());
+  key.push_back(newest.get());
+  auto [it, fresh] = bundles_.try_emplace(std::move(key));
+  if (fresh) {
+    std::vector<std::span<const std::uint8_t>> messages;
+    for (const protocol::Bytes* bytes : it->first) messages.emplace_back(*bytes);
+    it->second = std::make_shared<const protocol::Bytes>(protocol::encode_bundle(messages));
+  }
+  return it->second;
+}
+
+bool SessionHub::is_key_tick(const ProfileStream& stream, std::uint32_t tick) const {
+  const auto frames = std::max<long>(1, std::lround(options_.key_period_s * stream.profile().rate_hz));
+  return tick % (stream.tick_step() * static_cast<std::uint32_t>(frames)) == 0;
+}
+
+// Sessions keyed at different ticks hold different states forever (a key is lossy), so every
+// root costs its own encodes each tick. Beyond max_roots, the smallest root old enough is keyed
+// again onto the root this key tick starts: one per key tick, so neither the keys' bytes nor the
+// clients' key decodes come in one burst, and a session pays at most one extra key per
+// root_merge_age_s.
+void SessionHub::limit_roots(ProfileStream& stream, std::uint32_t tick) {
+  std::map<std::uint32_t, std::vector<Session*>> roots;
+  for (auto& [id, session] : sessions_)
+    if (session->stream == &stream && !session->need_key)
+      if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
+  if (roots.size() <= options_.max_roots) return;
+  const double min_age_ticks = options_.root_merge_age_s * server_.config().tick_rate_hz;
+  std::uint32_t smallest = 0;
+  std::size_t smallest_size = 0;
+  for (const auto& [root, members] : roots)
+    if (static_cast<double>(tick - root) >= min_age_ticks && (smallest_size == 0 || members.size() < smallest_size)) {
+      smallest = root;
+      smallest_size = members.size();
+    }
+  if (smallest_size == 0) return;
+  for (Session* session : roots[smallest]) session->need_key = true;
+  server_.metrics().root_merges.inc();
+  spdlog::debug("tick {} profile {}: {} key roots; the {} sessions of root {} are keyed again", tick,
+                stream.profile().name, roots.size(), smallest_size, smallest);
+}
+
+void SessionHub::sweep_timeouts(double now_s) {
+  std::vector<std::shared_ptr<Session>> expired;
+  for (const auto& session : handshaking_)
+    if (session->link->open() && now_s - session->opened_s > options_.handshake_timeout_s) expired.push_back(session);
+  for (const auto& session : expired) refuse(*session, protocol::Reason::timeout, "timeout: no Hello within the handshake time");
+  expired.clear();
+  for (const auto& [id, session] : sessions_)
+    if (session->link->open() && now_s - session->last_heard_s > server_.config().idle_timeout_s) expired.push_back(session);
+  for (const auto& session : expired) {
+    server_.metrics().rejects("idle_timeout").inc();
+    end(*session, wire::ByeReason::idle_timeout, "no message for the idle limit (--idle-timeout)");
+  }
+}
+
+}  // namespace ocean::server
