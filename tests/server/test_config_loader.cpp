@@ -261,3 +261,18 @@ TEST_CASE("describe_config shows options but never the admin token", "[config]")
   CHECK(text.find("profiles=mobile,desktop") != std::string::npos);
   CHECK(text.find("top-secret-token") == std::string::npos);
 }
+
+TEST_CASE("config text that is not UTF-8 is refused before the TOML parser sees it", "[config]") {
+  ServerConfig config;
+  // A lone continuation byte, an overlong '/', a surrogate, and a truncated sequence.
+  for (const std::string& bad : {std::string("seed = 1\n\x80"), std::string("seed = 1\n\xC0\xAF"),
+                                std::string("seed = 1\n# \xED\xA0\x80"), std::string("seed = 1\n# \xE2\x82")}) {
+    const std::string error = apply_config_toml(config, bad, "bad.toml");
+    INFO(error);
+    CHECK(error.rfind("bad.toml:2: byte ", 0) == 0);
+    CHECK(error.find("not valid UTF-8") != std::string::npos);
+  }
+  // Valid multi-byte text (a comment in Czech, a 4-byte emoji) still loads.
+  CHECK(apply_config_toml(config, "# vln\xC4\x9B \xF0\x9F\x8C\x8A\nseed = 9\n", "ok.toml").empty());
+  CHECK(config.scene.seed == 9u);
+}
