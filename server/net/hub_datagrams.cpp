@@ -29,16 +29,7 @@ void SessionHub::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip
   const std::span<const std::uint8_t> aligned(datagram_.data(), bytes.size());
   const protocol::Verified verified = protocol::verify_message(aligned, {protocol::Sender::client, wire::Transport::udp});
   const wire::Message* message = verified.message;
-  std::uint64_t session_id = 0;
-  if (verified) {
-    switch (message->body_type()) {
-      case wire::Body::UdpHello: session_id = message->body_as_UdpHello()->session_id(); break;
-      case wire::Body::Ack: session_id = message->body_as_Ack()->session_id(); break;
-      case wire::Body::KeyframeRequest: session_id = message->body_as_KeyframeRequest()->session_id(); break;
-      case wire::Body::Ping: session_id = message->body_as_Ping()->session_id(); break;
-      default: break;
-    }
-  }
+  const std::uint64_t session_id = verified ? hub::named_session(*message) : 0;
   const auto found = sessions_.find(session_id);
   const bool proven = found != sessions_.end() && found->second->udp == sender;
   if (!proven) unproven_bytes_in_ += bytes.size();

@@ -143,6 +143,12 @@ void SessionHub::on_tcp_message(const std::shared_ptr<Session>& session, std::sp
       return refuse(*session, protocol::Reason::unexpected_message, "unexpected_message: expected Hello first");
     return on_hello(session, *message.body_as_Hello());
   }
+  // The connection already names the session: a message naming another one is dropped and
+  // counted (a confused or hostile client), and changes nothing.
+  if (const std::uint64_t named = hub::named_session(message); named != 0 && named != session->id) {
+    server_.metrics().rejects(protocol::to_string(protocol::Reason::bad_session)).inc();
+    return;
+  }
   switch (message.body_type()) {
     case wire::Body::Ack:
       session->baselines.on_ack({message.body_as_Ack()->latest_tick(), message.body_as_Ack()->ack_bits()});

@@ -85,6 +85,7 @@ class SessionTestClient {
       const std::size_t n = udp_.receive_from(asio::buffer(datagram), from, 0, error);
       if (error) break;
       udp_bytes_in += n;
+      if (drop_udp_every && ++udp_datagrams_seen % drop_udp_every == 0) continue;  // a lossy link
       on_message({datagram.data(), n}, wire::Transport::udp);
     }
     return !tcp_closed_;
@@ -109,7 +110,9 @@ class SessionTestClient {
   bool udp_ready = false;
   bool reading_paused = false;
   bool send_acks = true;
-  std::size_t udp_frame_chunks = 0, tcp_frame_chunks = 0, udp_bytes_in = 0, rejected_chunks = 0;
+  std::size_t drop_udp_every = 0;  // > 0: every n-th datagram is dropped unread
+  std::size_t udp_datagrams_seen = 0;
+  std::size_t udp_frame_chunks = 0, tcp_frame_chunks = 0, udp_bytes_in = 0, rejected_chunks = 0, udp_bundles = 0;
   bool closed() const { return tcp_closed_; }
 
  private:
@@ -128,6 +131,10 @@ class SessionTestClient {
       reset_decoder();
     } else if (const auto* chunk = std::get_if<proto::FrameChunk>(&message)) {
       on_chunk(*chunk, transport);
+    } else if (const auto* bundle = std::get_if<proto::FrameBundle>(&message)) {
+      ++udp_bundles;
+      for (const proto::FrameChunk& c : bundle->chunks)
+        if (!decoder_ || !decoder_->is_complete(c.frame.tick)) on_chunk(c, transport);
     } else if (std::get_if<proto::UdpReady>(&message)) {
       udp_ready = true;
     } else if (const auto* e = std::get_if<proto::Error>(&message)) {

@@ -114,6 +114,48 @@ TEST_CASE("the bandwidth budget is respected on UDP") {
   CHECK(bytes > 0);
 }
 
+TEST_CASE("on a lossy UDP link, each lost frame arrives in the next datagram's FrameBundle") {
+  SessionHarness harness(session_test_config());
+  auto client = harness.client();
+  client->hello(hello_for(1, ocean::wire::Transport::udp));
+  REQUIRE(pump_until({client.get()}, [&] { return client->udp_ready && client->udp_frame_chunks > 3; }));
+  client->drop_udp_every = 5;
+  const std::uint32_t from = client->completed_heights.rbegin()->first + 1;
+  REQUIRE(pump_until({client.get()}, [&] { return client->completed_heights.rbegin()->first > from + 60; }));
+  CHECK(client->udp_bundles > 5);
+  // Every 5th datagram was dropped, yet no tick is missing: its copy came in the next one.
+  const std::uint32_t to = client->completed_heights.rbegin()->first;
+  std::vector<std::uint32_t> missing;
+  for (std::uint32_t tick = from; tick <= to; ++tick)
+    if (!client->completed_heights.count(tick)) missing.push_back(tick);
+  INFO("missing ticks: " << missing.size());
+  CHECK(missing.empty());
+  CHECK(client->rejected_chunks == 0);
+  harness.check_reconstructions(*client);
+}
+
+TEST_CASE("an Ack, KeyframeRequest or Ping on TCP naming another session changes nothing") {
+  SessionHarness harness(session_test_config());
+  auto a = harness.client();
+  auto b = harness.client();
+  a->hello(hello_for(1, ocean::wire::Transport::tcp));
+  b->hello(hello_for(1, ocean::wire::Transport::tcp));
+  const std::vector<SessionTestClient*> both{a.get(), b.get()};
+  REQUIRE(pump_until(both, [&] { return a->completed_heights.size() > 3 && b->completed_heights.size() > 3; }));
+  const std::uint64_t other = b->welcome->session_id;
+  // a claims b's session: a KeyframeRequest that would give b (or a) a key must not.
+  for (int i = 0; i < 3; ++i)
+    a->send_tcp(ocean::protocol::encode(ocean::protocol::KeyframeRequest{other, {}, ocean::wire::KeyframeReason::lost_baseline}));
+  a->send_tcp(ocean::protocol::encode(ocean::protocol::Ack{other, {}, 5, 0}));
+  const std::size_t before = a->completed_heights.size();
+  REQUIRE(pump_until(both, [&] { return a->completed_heights.size() > before + 40; }));  // > the 1 s key interval
+  CHECK(a->key_ticks.size() == 1);
+  CHECK(b->key_ticks.size() == 1);
+  CHECK(a->errors.empty());
+  CHECK(!a->closed());
+  harness.check_reconstructions(*a);
+}
+
 TEST_CASE("a silent client is timed out with Bye") {
   ServerConfig config = session_test_config();
   config.idle_timeout_s = 0.5;
