@@ -76,7 +76,8 @@ client::ConnectionLinks make_links(const LinkSpec& spec, std::uint64_t seed) {
 
 // What a client's sessions reported that explains lost frames.
 struct SessionCounts {
-  std::uint64_t codec_rejected = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0;
+  std::uint64_t codec_rejected = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0,
+                frames_recovered = 0;
   std::array<std::uint64_t, client::kChunkErrorCount> codec_by_reason{};
   void add(const client::ClientStats& s) {
     for (std::size_t r = 0; r < codec_by_reason.size(); ++r) codec_by_reason[r] += s.chunks_rejected_by_codec[r];
@@ -84,6 +85,7 @@ struct SessionCounts {
     messages_rejected += s.rejected_total();
     keyframe_requests += s.keyframe_requests_sent;
     transport_fallbacks += s.transport_fallbacks;
+    frames_recovered += s.frames_recovered;
   }
 };
 
@@ -105,14 +107,18 @@ struct SimClient {
   std::uint32_t scene_tick_seen = 0;
   std::uint64_t closed_bytes = 0, closed_keyframes = 0;
   SessionCounts closed;
+  bool session_ended = false;  // the connection keeps its last session after it ended: counted in closed_*
+  const client::ClientSession* live_session() const {
+    return connection && !session_ended ? connection->session() : nullptr;
+  }
   std::uint64_t bytes() const {
     std::uint64_t b = closed_bytes;
-    if (const auto* s = connection ? connection->session() : nullptr) b += s->stats().tcp.bytes_in + s->stats().udp.bytes_in;
+    if (const auto* s = live_session()) b += s->stats().tcp.bytes_in + s->stats().udp.bytes_in;
     return b;
   }
   std::uint64_t keyframes() const {
     std::uint64_t k = closed_keyframes;
-    if (const auto* s = connection ? connection->session() : nullptr) k += s->stats().keyframes_complete;
+    if (const auto* s = live_session()) k += s->stats().keyframes_complete;
     return k;
   }
 };
@@ -163,6 +169,7 @@ class Driver {
         make_links(o_.link, o_.seed + i));
     connection->set_on_welcome([this, i](const protocol::Welcome& w) { on_welcome(i, w); });
     connection->set_on_session_end([this, i](const client::ClientSession& s, const std::string&) {
+      clients_[i].session_ended = true;
       clients_[i].closed_bytes += s.stats().tcp.bytes_in + s.stats().udp.bytes_in;
       clients_[i].closed_keyframes += s.stats().keyframes_complete;
       clients_[i].closed.add(s.stats());
@@ -210,6 +217,7 @@ class Driver {
       truth_->set_scene(w.current_tick, w.scene);
     }
     SimClient& c = clients_[i];
+    c.session_ended = false;  // a new session of this connection
     if (!c.welcome_tick) c.welcome_tick = w.current_tick;
     if (!c.tally) c.tally.emplace(facts_.tick_period_s, facts_.interval_ticks);
     c.scene_tick_seen = 0;
@@ -352,11 +360,12 @@ class Driver {
       client_seconds += std::max(0.0, wall - started);
       s.keyframes += c.keyframes();
       SessionCounts counts = c.closed;
-      if (const auto* session = c.connection ? c.connection->session() : nullptr) counts.add(session->stats());
+      if (const auto* session = c.live_session()) counts.add(session->stats());
       s.chunks_rejected_by_codec += counts.codec_rejected;
       s.messages_rejected += counts.messages_rejected;
       s.keyframe_requests += counts.keyframe_requests;
       s.transport_fallbacks += counts.transport_fallbacks;
+      s.frames_recovered += counts.frames_recovered;
       for (std::size_t r = 0; r < counts.codec_by_reason.size(); ++r)
         if (counts.codec_by_reason[r]) s.codec_rejections[std::string(codec::to_string(static_cast<codec::ChunkError>(r)))] += counts.codec_by_reason[r];
       if (c.connection) {

@@ -70,6 +70,7 @@ std::string to_json(const LoadSummary& s) {
   field("codec_rejections", reasons + "}");
   field("messages_rejected", u(s.messages_rejected));
   field("transport_fallbacks", u(s.transport_fallbacks));
+  field("frames_recovered", u(s.frames_recovered));
   field("interpolation_delay_ms", num(s.interpolation_delay_ms));
   field("duration_s", num(s.duration_s));
   field("profile", json_string(s.profile));
@@ -109,6 +110,8 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   }
   row("messages rejected", std::to_string(s.messages_rejected));
   row("fallbacks to tcp", std::to_string(s.transport_fallbacks));
+  row("frames recovered", std::to_string(s.frames_recovered));
+  row("decodes run / shared", std::to_string(s.decodes_run) + " / " + std::to_string(s.decodes_shared));
   row("kbit/s per client", num(s.kbps_mean));
   row("latency p50/p99/max ms", num(s.latency_p50_ms) + " / " + num(s.latency_p99_ms) + " / " + num(s.latency_max_ms));
   row("interpolation delay ms", num(s.interpolation_delay_ms));

@@ -19,6 +19,7 @@ struct LoadSummary {
   std::uint64_t decodes_run = 0, decodes_shared = 0, truth_checks = 0;
   // Client-side explanations of lost frames, summed over every session.
   std::uint64_t chunks_rejected_by_codec = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0;
+  std::uint64_t frames_recovered = 0;  // completed from a FrameBundle copy after their own datagram was lost
   std::map<std::string, std::uint64_t> codec_rejections;  // by codec::ChunkError name
   double frames_ok_pct = 0.0;    // verified and on time, over frames expected
   double max_err_m = 0.0;
