@@ -1,0 +1,131 @@
+#!/usr/bin/python3
+"""Finds the largest number of clients one ocean-server holds with >= --target % of frames on
+time and none wrong, on this machine: a fresh server per try, N doubled from --start until a try
+fails, then bisected to --resolution. Prints one JSON object per try and a summary last.
+
+  client/loadtest/find_capacity.py --build build --profile mobile --start 250 --max 8000
+
+Each try starts the clients at --join-rate per second, then measures --duration seconds. Passing
+a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every frame)."""
+import argparse
+import json
+import os
+import socket
+import subprocess
+import sys
+import time
+
+
+def free_port():
+    for _ in range(50):
+        t = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+        u = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        try:
+            t.bind(("127.0.0.1", 0))
+            port = t.getsockname()[1]
+            u.bind(("127.0.0.1", port))
+            return port
+        except OSError:
+            continue
+        finally:
+            t.close()
+            u.close()
+    raise RuntimeError("no free loopback port")
+
+
+def wait_listening(server, port):
+    deadline = time.time() + 10
+    while time.time() < deadline:
+        if server.poll() is not None:
+            raise RuntimeError("ocean-server exited: " + server.stdout.read()[-2000:])
+        try:
+            socket.create_connection(("127.0.0.1", port), timeout=0.2).close()
+            return
+        except OSError:
+            time.sleep(0.05)
+    raise RuntimeError("ocean-server did not listen within 10 s")
+
+
+def run_once(args, clients):
+    port = free_port()
+    server = subprocess.Popen(
+        [os.path.join(args.build, "server/ocean-server"), "--listen", f"127.0.0.1:{port}", "--metrics-listen", "off",
+         "--max-clients", str(clients + 16), "--profiles", args.profile, "--log-level", "warn"] + args.server_arg,
+        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    try:
+        wait_listening(server, port)
+        ramp = max(0.5, clients / args.join_rate)
+        cmd = [os.path.join(args.build, "client/loadtest/ocean-loadtest"), "--server", f"127.0.0.1:{port}",
+               "--profile", args.profile, "--transport", args.transport, "--clients", str(clients), "--ramp",
+               f"{ramp:g}", "--duration", str(args.duration), "--json", "--quiet", "--server-pid", str(server.pid)]
+        if args.link:
+            cmd += ["--link", args.link]
+        run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                             timeout=ramp + args.duration + 120)
+        if run.returncode != 0:
+            raise RuntimeError(f"ocean-loadtest exited {run.returncode}: {run.stderr[-2000:]}")
+        summary = json.loads(run.stdout.strip().splitlines()[-1])
+        summary["alive"] = server.poll() is None
+        return summary
+    finally:
+        server.terminate()
+        try:
+            server.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            server.kill()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default="build", help="build tree holding server/ and client/loadtest/")
+    ap.add_argument("--profile", default="mobile")
+    ap.add_argument("--transport", default="udp")
+    ap.add_argument("--link", default="", help="ocean-loadtest --link, e.g. rate=256kbit,delay=80ms,loss=5%%")
+    ap.add_argument("--start", type=int, default=250)
+    ap.add_argument("--max", type=int, default=8000)
+    ap.add_argument("--target", type=float, default=99.0, help="frames_ok_pct a try must reach")
+    ap.add_argument("--duration", type=float, default=20.0, help="measured seconds after the ramp")
+    ap.add_argument("--join-rate", type=float, default=100.0, help="clients started per second")
+    ap.add_argument("--resolution", type=float, default=0.1, help="stop bisecting when hi/lo - 1 is below this")
+    ap.add_argument("--server-arg", action="append", default=[], help="extra ocean-server argument (repeatable)")
+    args = ap.parse_args()
+
+    tries = []
+
+    def attempt(n):
+        s = run_once(args, n)
+        ok = s["alive"] and s["frames_bad"] == 0 and s["frames_ok_pct"] >= args.target
+        row = {"clients": n, "pass": ok, "frames_ok_pct": s["frames_ok_pct"], "frames_bad": s["frames_bad"],
+               "server_cpu_pct": s.get("server_cpu_pct"), "loadtest_cpu_pct": s["loadtest_cpu_pct"],
+               "latency_p99_ms": s["latency_p99_ms"], "kbps_mean": s["kbps_mean"], "keyframes": s["keyframes"],
+               "clients_connected": s["clients_connected"]}
+        print(json.dumps(row), flush=True)
+        tries.append(row)
+        return ok
+
+    lo, hi = 0, None
+    n = args.start
+    while n <= args.max:
+        if attempt(n):
+            lo = n
+            n *= 2
+        else:
+            hi = n
+            break
+    if hi is not None and lo > 0:
+        while hi / lo - 1 > args.resolution:
+            mid = (lo + hi) // 2
+            if attempt(mid):
+                lo = mid
+            else:
+                hi = mid
+    best = next((t for t in tries if t["clients"] == lo), None)
+    print(json.dumps({"largest_passing_clients": lo, "first_failing_clients": hi, "target_pct": args.target,
+                      "profile": args.profile, "transport": args.transport, "link": args.link,
+                      "duration_s": args.duration, "server_cpu_pct_at_largest": best and best["server_cpu_pct"],
+                      "tries": len(tries)}))
+    return 0 if lo > 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
