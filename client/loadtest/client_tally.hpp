@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 
 #include "arrival_clock.hpp"
 
@@ -24,11 +25,17 @@ class ClientTally {
   double tick_period_s() const { return period_; }
   std::uint32_t interval() const { return interval_; }
 
-  // Records a frame's verdict; false when the tick is not newer than the last one (not counted).
+  // Records a frame's verdict; false (not counted) for a tick already recorded, before the
+  // first one, or more than kWindowTicks older than the newest. Frames may come out of order (a
+  // late copy of an older frame): it counts, and is on time if it came before its deadline.
   bool record(std::uint32_t tick, FrameOutcome outcome, double error_m) {
-    if (last_tick_ && tick <= *last_tick_) return false;
+    if (first_tick_ && tick < *first_tick_) return false;
+    if (last_tick_ && tick + kWindowTicks < *last_tick_) return false;
+    if (!seen_.insert(tick).second) return false;
     if (!first_tick_) first_tick_ = tick;
-    last_tick_ = tick;
+    const bool newest = !last_tick_ || tick > *last_tick_;
+    if (newest) last_tick_ = tick;
+    while (seen_.size() > 1 && *seen_.begin() + kWindowTicks < *last_tick_) seen_.erase(seen_.begin());
     ++received_;
     if (error_m > max_error_m_) max_error_m_ = error_m;
     if (!outcome.within_bound) ++bad_;
@@ -36,11 +43,13 @@ class ClientTally {
     if (outcome.within_bound && outcome.on_time) {
       ++ok_;
       // A gap in the on-time sequence: the renderer ran out of frames in between.
-      if (last_on_time_ && tick > *last_on_time_ + interval_) ++stalls_;
-      last_on_time_ = tick;
+      if (newest && last_on_time_ && tick > *last_on_time_ + interval_) ++stalls_;
+      if (!last_on_time_ || tick > *last_on_time_) last_on_time_ = tick;
     }
     return true;
   }
+
+  static constexpr std::uint32_t kWindowTicks = 64;
 
   // The stream's frame ticks in [first frame (or start_tick when none came), end_tick].
   std::uint64_t expected(std::uint32_t start_tick, std::uint32_t end_tick) const {
@@ -64,6 +73,7 @@ class ClientTally {
   double period_;
   std::uint32_t interval_;
   std::optional<std::uint32_t> first_tick_, last_tick_, last_on_time_;
+  std::set<std::uint32_t> seen_;  // recorded ticks within kWindowTicks of the newest
   std::uint64_t received_ = 0, ok_ = 0, late_ = 0, bad_ = 0, stalls_ = 0;
   double max_error_m_ = 0.0;
 };

@@ -10,50 +10,19 @@ a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every fra
 import argparse
 import json
 import os
-import socket
 import subprocess
 import sys
-import time
 
-
-def free_port():
-    for _ in range(50):
-        t = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
-        u = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        try:
-            t.bind(("127.0.0.1", 0))
-            port = t.getsockname()[1]
-            u.bind(("127.0.0.1", port))
-            return port
-        except OSError:
-            continue
-        finally:
-            t.close()
-            u.close()
-    raise RuntimeError("no free loopback port")
-
-
-def wait_listening(server, port):
-    deadline = time.time() + 10
-    while time.time() < deadline:
-        if server.poll() is not None:
-            raise RuntimeError("ocean-server exited: " + server.stdout.read()[-2000:])
-        try:
-            socket.create_connection(("127.0.0.1", port), timeout=0.2).close()
-            return
-        except OSError:
-            time.sleep(0.05)
-    raise RuntimeError("ocean-server did not listen within 10 s")
+import local_server
 
 
 def run_once(args, clients):
-    port = free_port()
-    server = subprocess.Popen(
-        [os.path.join(args.build, "server/ocean-server"), "--listen", f"127.0.0.1:{port}", "--metrics-listen", "off",
-         "--max-clients", str(clients + 16), "--profiles", args.profile, "--log-level", "warn"] + args.server_arg,
-        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    port = local_server.free_port()
+    server = local_server.start(
+        os.path.join(args.build, "server/ocean-server"),
+        ["--listen", f"127.0.0.1:{port}", "--metrics-listen", "off", "--max-clients", str(clients + 16),
+         "--profiles", args.profile, "--log-level", "warn"] + args.server_arg, port)
     try:
-        wait_listening(server, port)
         ramp = max(0.5, clients / args.join_rate)
         cmd = [os.path.join(args.build, "client/loadtest/ocean-loadtest"), "--server", f"127.0.0.1:{port}",
                "--profile", args.profile, "--transport", args.transport, "--clients", str(clients), "--ramp",
@@ -68,11 +37,7 @@ def run_once(args, clients):
         summary["alive"] = server.poll() is None
         return summary
     finally:
-        server.terminate()
-        try:
-            server.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            server.kill()
+        local_server.stop(server)
 
 
 def main():

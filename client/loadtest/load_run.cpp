@@ -254,7 +254,8 @@ class Driver {
     ++second_frames_;
     if (outcome.within_bound && outcome.on_time) ++second_ok_;
     if (!outcome.within_bound) ++second_bad_;
-    if (i == 0 && !record_path_.empty() && record_error_.empty()) {
+    if (i == 0 && !record_path_.empty() && record_error_.empty() && (!recorded_tick_ || tick > *recorded_tick_)) {
+      recorded_tick_ = tick;
       try {
         if (!recorder_) recorder_.emplace(record_path_, facts_.grid, facts_.grid);
         recorder_->append(frame.height);
@@ -418,6 +419,7 @@ class Driver {
   int connected_at_end_ = 0;
   std::string record_path_, record_error_;
   std::optional<codec::NpyWriter> recorder_;
+  std::optional<std::uint32_t> recorded_tick_;  // client 0's file holds frames in tick order
   std::vector<std::unique_ptr<codec::DecodeMemo>> memos_;
   std::map<std::uint64_t, FrameError> verdicts_;  // by ReconstructedFrame::shared_id
   std::uint64_t truth_checks_ = 0;

@@ -233,7 +233,9 @@ bool ClientSession::handle_chunk(const wire::FrameChunk& chunk, double now, bool
   if (!stats_.latest_tick || view.tick > *stats_.latest_tick) stats_.latest_tick = view.tick;
   last_progress_ = now;
   ack_pending_ = true;
-  const codec::ReconstructedFrame* frame = decoder_->latest();
+  // Also a frame older than the one on show (its copy came late): a jitter buffer may still
+  // play it before its time.
+  const codec::ReconstructedFrame* frame = decoder_->just_completed();
   if (frame && frame->tick == view.tick && frame->complete) {
     ++stats_.frames_delivered;
     if (events_.on_frame) events_.on_frame(*frame, view.tick);

@@ -25,7 +25,8 @@ struct ClientSessionEvents {
   std::function<void(std::span<const std::uint8_t>)> send_udp;
   // The Welcome was accepted: open the UDP socket to welcome.udp_port when it is not 0.
   std::function<void(const protocol::Welcome&)> on_welcome;
-  // A frame completed and is the newest on show. Valid during the call only.
+  // A frame completed: normally the newest, but a late copy of an older one too (ticks may come
+  // out of order). Valid during the call only.
   std::function<void(const codec::ReconstructedFrame&, std::uint32_t tick)> on_frame;
   std::function<void(const protocol::SceneUpdate&)> on_scene_update;
   // The session ended (Bye, Error before the Welcome, a bad TCP message, idle timeout).

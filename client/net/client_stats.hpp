@@ -32,7 +32,7 @@ struct ClientStats {
   std::uint64_t chunks_accepted = 0;   // taken by the decoder
   std::uint64_t frames_complete = 0;
   std::uint64_t keyframes_complete = 0;
-  std::uint64_t frames_delivered = 0;  // handed to on_frame (a complete frame overtaken by a newer one is not)
+  std::uint64_t frames_delivered = 0;  // handed to on_frame (late ones, older than the newest, too)
   std::optional<std::uint32_t> latest_tick;  // newest complete tick
 
   std::uint64_t acks_sent = 0;

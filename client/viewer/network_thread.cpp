@@ -27,6 +27,7 @@ std::uint64_t session_bytes(const client::ClientSession& s) { return s.stats().t
 struct NetworkThread::Recording {
   std::optional<codec::NpyWriter> writer;
   int grid = 0;
+  std::optional<std::uint32_t> last_tick;  // the file holds frames in tick order
 };
 
 NetworkThread::NetworkThread(NetworkThreadConfig config) : config_(std::move(config)) {}
@@ -154,7 +155,8 @@ void NetworkThread::on_frame(const codec::ReconstructedFrame& frame, std::uint32
       recording_->writer.emplace(config_.record_path, grid, grid);
       recording_->grid = grid;
     }
-    if (recording_->writer && recording_->grid == grid) {
+    if (recording_->writer && recording_->grid == grid && (!recording_->last_tick || tick > *recording_->last_tick)) {
+      recording_->last_tick = tick;
       recording_->writer->append(frame.height);
       ++stats_.frames_recorded;
     } else {

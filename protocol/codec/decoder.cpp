@@ -58,6 +58,7 @@ ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLa
 }
 
 ChunkError Decoder::accept(const ChunkView& c) {
+  completed_tick_.reset();
   ChunkHeader h;
   std::span<const std::uint8_t> body;
   if (const ChunkError e = parse_payload(c, options_.max_payload, h, body); e != ChunkError::ok) return e;
@@ -124,11 +125,14 @@ bool Decoder::accept_remembered(const ChunkView& c) {
   const DecodeMemo::Result* r = memo->find(states_.at(c.baseline), c.tick, c.payload);
   if (!r) return false;
   states_[c.tick] = r->state;
+  completed_tick_ = c.tick;
   if (!shown_tick_ || c.tick >= *shown_tick_) {
     show(c.tick);
     shown_shared_ = r->frame;
     shown_complete_ = true;
     shown_dirty_ = false;
+  } else {
+    late_shared_ = r->frame;
   }
   evict();
   return true;
@@ -146,6 +150,9 @@ void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint
   const DecodeMemo::State state = memo ? memo->intern(tick, std::move(p.predicted))
                                        : std::make_shared<const ModalState>(std::move(p.predicted));
   const bool shown = !shown_tick_ || tick >= *shown_tick_;
+  completed_tick_ = tick;
+  late_shared_.reset();
+  late_converted_ = false;
   if (memo && !p.key && p.count == 1) {
     ReconstructedFrame frame;
     to_float(p.fields, config_, frame);
@@ -157,13 +164,31 @@ void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint
       shown_shared_ = r.frame;
       shown_complete_ = true;
       shown_dirty_ = false;
+    } else {
+      late_shared_ = r.frame;
     }
   } else if (shown) {
     show(tick);
     shown_fields_ = std::move(p.fields);
     shown_complete_ = true;
+  } else {
+    late_fields_ = std::move(p.fields);
   }
   states_[tick] = state;
+}
+
+const ReconstructedFrame* Decoder::just_completed() {
+  if (!completed_tick_) return nullptr;
+  if (shown_tick_ && *completed_tick_ == *shown_tick_) return latest();
+  if (late_shared_) return late_shared_.get();
+  if (!late_converted_) {
+    to_float(late_fields_, config_, late_);
+    late_.tick = *completed_tick_;
+    late_.complete = true;
+    late_.shared_id = 0;
+    late_converted_ = true;
+  }
+  return &late_;
 }
 
 void Decoder::evict() {

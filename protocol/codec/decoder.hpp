@@ -40,6 +40,11 @@ class Decoder {
   // chunk); nullptr before the first key completes. Valid until the next accept().
   const ReconstructedFrame* latest();
 
+  // The frame the last accept() completed, also when a newer frame is already on show (a copy
+  // that arrived late, which a jitter buffer can still use); nullptr when that accept completed
+  // none. Valid until the next accept().
+  const ReconstructedFrame* just_completed();
+
   bool is_complete(std::uint32_t tick) const { return states_.count(tick) != 0; }
   std::optional<std::uint32_t> newest_complete() const;
   std::vector<std::uint32_t> complete_ticks() const;  // ascending; what the client may ack
@@ -79,6 +84,12 @@ class Decoder {
   ReconstructedFrame shown_;
   DecodeMemo::Frame shown_shared_;              // set instead of shown_ when the memo holds the frame
   bool shown_dirty_ = true;
+  // A frame completed while a newer one was on show (just_completed()).
+  std::optional<std::uint32_t> completed_tick_;
+  SampleFields late_fields_;
+  DecodeMemo::Frame late_shared_;
+  ReconstructedFrame late_;
+  bool late_converted_ = false;
 };
 
 }  // namespace ocean::codec

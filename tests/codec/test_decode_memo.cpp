@@ -113,3 +113,35 @@ TEST_CASE("a memo of another stream configuration is refused") {
   shared.memo = &memo;
   CHECK_THROWS_AS(Decoder(test_config(64, 30), shared), std::invalid_argument);
 }
+
+TEST_CASE("a frame that completes after a newer one is still handed out by just_completed") {
+  const StreamConfig config = test_config(32, 30);
+  const SyntheticOcean ocean(32, 128.0, 120, 11, 0.4);
+  const double dt = 1.0 / config.rate_hz;
+  Encoder enc(config, wide_encoder());
+  for (std::uint32_t t = 0; t <= 4; ++t) enc.add_truth(t, view_of(ocean.at(t * dt)));
+  const auto key = enc.encode_key(1);
+  const auto d3 = enc.encode_delta(3, key->id);
+  const auto d4 = enc.encode_delta(4, key->id);
+  DecodeMemo memo(config);
+  for (DecodeMemo* m : {static_cast<DecodeMemo*>(nullptr), &memo}) {
+    for (int round = 0; round < 2; ++round) {  // with a memo, the second round is answered by it
+      Decoder d(config, wide_decoder(m));
+      for (const Chunk& c : key->chunks) REQUIRE(d.accept(c) == ChunkError::ok);
+      REQUIRE(d.accept(d4->chunks[0]) == ChunkError::ok);
+      REQUIRE(d.just_completed() != nullptr);
+      CHECK(d.just_completed()->tick == 4u);
+      REQUIRE(d.accept(d3->chunks[0]) == ChunkError::ok);  // the late one
+      const ReconstructedFrame* late = d.just_completed();
+      REQUIRE(late != nullptr);
+      CHECK(late->tick == 3u);
+      CHECK(late->complete);
+      CHECK(late->height == d3->reconstruction.height);
+      CHECK(d.latest()->tick == 4u);  // the newest stays on show
+      CHECK(d.latest()->height == d4->reconstruction.height);
+      CHECK(d.accept(d3->chunks[0]) == ChunkError::duplicate_chunk);
+      CHECK(d.just_completed() == nullptr);
+    }
+  }
+  CHECK(memo.counts().hits >= 2);
+}

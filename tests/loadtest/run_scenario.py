@@ -4,13 +4,15 @@ against it and checks the JSON summary: no frame beyond the error bound, and at 
 scenario's on-time share (the floors leave room for the 2-core CI machine, not for bugs)."""
 import argparse
 import json
-import socket
+import os
 import subprocess
 import sys
-import time
 
-# Minimum frames_ok_pct per scenario for 4 clients over 3 s (startup included; desktop-lan 1 client, 6 s). The impaired links
-# lose frames by design; the floor is what the scenario should deliver with margin, see SCENARIOS.md.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../client/loadtest"))
+import local_server  # noqa: E402
+
+# Minimum frames_ok_pct per scenario for 4 clients over 3 s (desktop-lan: 1 client, 6 s), startup
+# included. The impaired links lose frames by design; the floor is what the scenario should deliver with margin, see SCENARIOS.md.
 OK_PCT_FLOOR = {
     "mobile-3g": 95.0,     # measured 100, 100 (5% loss, recovered from FrameBundle copies)
     "lossy-wifi": 95.0,    # measured 100, 100
@@ -18,24 +20,6 @@ OK_PCT_FLOOR = {
     "tcp-fallback": 95.0,  # measured 100, 100
     "flaky-edge": 55.0,    # measured 76.1, 68.9 (15% loss, 128 kbit/s: copies often do not fit)
 }
-
-
-def free_port():
-    # TCP and UDP share the port number: find one free for both.
-    for _ in range(50):
-        t = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
-        t.bind(("127.0.0.1", 0))
-        port = t.getsockname()[1]
-        u = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
-        try:
-            u.bind(("127.0.0.1", port))
-            return port
-        except OSError:
-            continue
-        finally:
-            t.close()
-            u.close()
-    raise RuntimeError("no free loopback port")
 
 
 def main():
@@ -47,26 +31,15 @@ def main():
     ap.add_argument("--duration", default="3")
     args = ap.parse_args()
 
-    port = free_port()
-    server = subprocess.Popen(
-        [args.server_bin, "--listen", f"127.0.0.1:{port}", "--metrics-listen", "off", "--max-clients", "64",
-         "--log-level", "warn"],
-        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)  # warn level: little to buffer
+    port = local_server.free_port()
     try:
-        # Wait until the port accepts connections.
-        deadline = time.time() + 10
-        while True:
-            if server.poll() is not None:
-                print("ocean-server exited early:", server.stdout.read(), file=sys.stderr)
-                return 1
-            try:
-                socket.create_connection(("127.0.0.1", port), timeout=0.2).close()
-                break
-            except OSError:
-                if time.time() > deadline:
-                    print("ocean-server did not start listening in 10 s", file=sys.stderr)
-                    return 1
-                time.sleep(0.05)
+        # warn level: little output to buffer
+        server = local_server.start(args.server_bin, ["--listen", f"127.0.0.1:{port}", "--metrics-listen", "off",
+                                                      "--max-clients", "64", "--log-level", "warn"], port)
+    except RuntimeError as e:
+        print(e, file=sys.stderr)
+        return 1
+    try:
         cmd = [args.loadtest_bin, "--server", f"127.0.0.1:{port}", "--scenario", args.scenario, "--clients",
                args.clients, "--ramp", "0.5", "--duration", args.duration, "--json", "--quiet",
                "--server-pid", str(server.pid)]
@@ -94,11 +67,7 @@ def main():
             print("FAIL:", f, file=sys.stderr)
         return 1 if failures else 0
     finally:
-        server.terminate()
-        try:
-            server.wait(timeout=5)
-        except subprocess.TimeoutExpired:
-            server.kill()
+        local_server.stop(server)
 
 
 if __name__ == "__main__":

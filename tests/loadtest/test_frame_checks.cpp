@@ -95,6 +95,18 @@ TEST_CASE("client tally: late, bad, stalls, and expected vs received") {
   CHECK(tally.max_error_m() == Approx(0.02));
   CHECK(tally.expected(0, 16) == 7);  // ticks 10..16, counted from the first frame
 
+  // A late copy of an older frame counts once, on time or not; older than the first, not at all.
+  CHECK(tally.record(15, {true, true}, 0.0));
+  CHECK_FALSE(tally.record(15, {true, true}, 0.0));
+  CHECK(tally.record(14, {true, false}, 0.0));
+  CHECK_FALSE(tally.record(9, {true, true}, 0.0));
+  CHECK(tally.received() == 7);
+  CHECK(tally.ok() == 4);
+  CHECK(tally.late() == 2);
+  CHECK(tally.stalls() == 2);  // only a newer frame after a gap is a stall
+  CHECK(tally.record(16 + ClientTally::kWindowTicks + 1, {true, true}, 0.0));
+  CHECK_FALSE(tally.record(16, {true, true}, 0.0));  // out of the window: forgotten, not recounted
+
   ClientTally every_other(1.0 / 30, 2);
   CHECK(every_other.expected(7, 15) == 4);  // 8, 10, 12, 14 from the Welcome when no frame came
   CHECK(every_other.expected(20, 15) == 0);
