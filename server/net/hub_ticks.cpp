@@ -62,6 +62,7 @@ void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
   }
   server_.metrics().encodes.inc(static_cast<double>(stats.encodes));
   server_.metrics().encodes_last_tick.set(static_cast<double>(stats.encodes));
+  server_.metrics().send_queue_max_bytes.set(static_cast<double>(max_queued_bytes()));
   last_tick_ = stats;
   if (tick_observer_) tick_observer_(stats);
   sweep_timeouts(now);

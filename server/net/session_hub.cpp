@@ -109,6 +109,14 @@ void SessionHub::on_connection(asio::ip::tcp::socket socket) {
 }
 
 void SessionHub::send_control(Session& session, protocol::Bytes bytes) {
+  if (!session.link->open()) return;
+  if (!session.link->has_control_room(bytes.size())) {
+    // It keeps asking (Pings, bad ParamChanges) but reads nothing: memory stays bounded.
+    server_.metrics().rejects("send_queue_full").inc();
+    log_reject("tcp", session.peer, "send_queue_full");
+    session.link->close("send_queue_full");
+    return;
+  }
   session.link->send(share(std::move(bytes)));
 }
 
@@ -158,7 +166,12 @@ void SessionHub::on_tcp_message(const std::shared_ptr<Session>& session, std::sp
       break;
     case wire::Body::SetTransport:
       session->wants_udp = message.body_as_SetTransport()->transport() == wire::Transport::udp;
-      if (!session->wants_udp) session->need_key = true;  // PROTOCOL.md 5.6: a key, then TCP only
+      // PROTOCOL.md 5.6: a key, then TCP only; at most one key per key interval, so switching
+      // back and forth cannot ask for keys faster than KeyframeRequests can.
+      if (!session->wants_udp) {
+        if (monotonic_s() - session->last_key_s >= options_.key_interval_s) session->need_key = true;
+        else session->key_requested = true;
+      }
       update_client_gauges();
       break;
     case wire::Body::ParamChange:

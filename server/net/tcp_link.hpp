@@ -25,12 +25,19 @@ class TcpLink : public std::enable_shared_from_this<TcpLink> {
   using MessageHandler = std::function<void(std::span<const std::uint8_t>)>;
   using CloseHandler = std::function<void(const std::string& reason)>;
 
-  // max_queue_bytes bounds the frames waiting to be written (control messages may exceed it).
+  // max_queue_bytes bounds the frames waiting to be written; control messages (Pong, Error,
+  // SceneUpdate, Bye) may use kControlHeadroomBytes more, and nothing ever goes beyond that.
   TcpLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes);
   void start(MessageHandler on_message, CloseHandler on_close);
 
+  static constexpr std::size_t kControlHeadroomBytes = 64 * 1024;
   // A frame message: queued only if the bound leaves room for `frame_bytes` in all (check first).
   bool has_room(std::size_t frame_bytes) const { return queued_bytes_ + frame_bytes <= max_queue_bytes_; }
+  // A control message: room within the bound plus the headroom. A client that asks for answers
+  // (Pings) but does not read them runs out of it.
+  bool has_control_room(std::size_t bytes) const {
+    return queued_bytes_ + bytes <= max_queue_bytes_ + kControlHeadroomBytes;
+  }
   void send(SharedBytes message);
   // Pacing for everything written from now on (bytes per second, 0 = unlimited).
   void set_rate(double bytes_per_s);

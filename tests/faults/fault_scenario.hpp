@@ -1,0 +1,109 @@
+// FaultScenario: one ocean-server process plus a population of well-behaved clients, and the
+// measurements every fault test makes around its fault: frames on time over the fault's ticks,
+// the server's peak resident memory, its metrics and its health probe. A second, unattacked
+// server with a few clients of its own is measured over the same ticks: it tells a busy machine
+// (both late) from a fault that hurts the attacked server's clients (only they are late).
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "client_population.hpp"
+#include "http_probe.hpp"
+#include "server_process.hpp"
+
+namespace ocean::faults {
+
+inline constexpr int kUdpClients = 10;
+inline constexpr int kTcpClients = 3;
+inline constexpr std::uint8_t kMobile = 1;
+inline constexpr std::uint8_t kDesktop = 2;
+inline constexpr double kOnTimeShare = 0.99;  // what the well-behaved clients must keep
+inline constexpr int kControlClients = 3;
+
+struct FaultMeasure {
+  PopulationWindow window;
+  PopulationWindow control;  // the unattacked server's clients, same ticks
+  std::uint64_t rss_before_kib = 0;
+  std::uint64_t rss_peak_kib = 0;
+  std::uint64_t rss_after_kib = 0;
+  std::vector<std::uint64_t> rss_samples_kib;  // every 100 ms during the fault
+  double seconds = 0.0;
+  std::uint64_t rss_growth_kib() const { return rss_peak_kib > rss_before_kib ? rss_peak_kib - rss_before_kib : 0; }
+};
+
+class FaultScenario {
+ public:
+  explicit FaultScenario(const std::vector<std::string>& server_args)
+      : server_(server_args),
+        control_server_(server_args),
+        population_(server_.tcp_port(), kUdpClients, kTcpClients, kMobile),
+        control_(control_server_.tcp_port(), kControlClients - 1, 1, kMobile) {}
+
+  ServerProcess& server() { return server_; }
+  ClientPopulation& population() { return population_; }
+  ClientPopulation& control() { return control_; }
+  std::uint16_t port() const { return server_.tcp_port(); }
+
+  std::string metrics() {
+    const auto reply = http_get(server_.metrics_port(), "/metrics");
+    return reply && reply->status == 200 ? reply->body : std::string();
+  }
+  bool healthy() {
+    const auto reply = http_get(server_.metrics_port(), "/healthz");
+    return reply && reply->status == 200;
+  }
+
+  // Runs `fault` (which returns when the fault is over) while sampling the server's memory, then
+  // waits for the last frames' render time and judges the frames owed over the fault's ticks.
+  FaultMeasure measure(const std::string& name, const std::function<void()>& fault) {
+    FaultMeasure m;
+    m.rss_before_kib = m.rss_peak_kib = server_.rss_kib().value_or(0);
+    std::atomic<bool> done{false};
+    std::thread sampler([&] {
+      while (!done) {
+        const std::uint64_t rss = server_.rss_kib().value_or(0);
+        m.rss_samples_kib.push_back(rss);
+        m.rss_peak_kib = std::max(m.rss_peak_kib, rss);
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    });
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint32_t first = population_.tick_now() + 1;
+    try {
+      fault();
+    } catch (...) {  // a failed REQUIRE inside the fault: stop sampling before it unwinds
+      done = true;
+      sampler.join();
+      throw;
+    }
+    const std::uint32_t last = population_.tick_now();
+    m.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));  // the last ticks' render time
+    done = true;
+    sampler.join();
+    m.rss_after_kib = server_.rss_kib().value_or(0);
+    m.window = population_.window(first, last);
+    m.control = control_.window(first, last);
+    std::printf("[faults] %-26s %4.1f s  %s  (unattacked server: %.2f%%)  server RSS %llu -> peak %llu KiB (+%llu)\n",
+                name.c_str(), m.seconds, m.window.describe().c_str(), 100.0 * m.control.on_time_share(),
+                static_cast<unsigned long long>(m.rss_before_kib),
+                static_cast<unsigned long long>(m.rss_peak_kib), static_cast<unsigned long long>(m.rss_growth_kib()));
+    std::fflush(stdout);
+    return m;
+  }
+
+ private:
+  ServerProcess server_;
+  ServerProcess control_server_;
+  ClientPopulation population_;
+  ClientPopulation control_;
+};
+
+}  // namespace ocean::faults
