@@ -14,6 +14,11 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+std::vector<ServerEndpoint> server_list(const ClientConnectionConfig& config) {
+  if (!config.servers.empty()) return config.servers;
+  return {ServerEndpoint{config.host, config.port}};
+}
+
 std::chrono::steady_clock::time_point to_time_point(double seconds) {
   return std::chrono::steady_clock::time_point(
       std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds)));
@@ -34,6 +39,7 @@ ClientConnection::ClientConnection(asio::io_context& io, ClientConnectionConfig 
                                    ConnectionLinks links)
     : io_(io),
       config_(std::move(config)),
+      servers_(server_list(config_)),
       on_frame_(std::move(on_frame)),
       links_(std::move(links)),
       resolver_(io),
@@ -61,15 +67,18 @@ void ClientConnection::do_resolve() {
   down_ = false;
   ++counters_.connect_attempts;
   const std::uint64_t generation = ++generation_;
+  const ServerEndpoint& target = server();
   resolver_.async_resolve(
-      config_.host, config_.port,
+      target.host, target.port,
       [self = shared_from_this(), generation](std::error_code ec, asio::ip::tcp::resolver::results_type results) {
         if (generation != self->generation_ || self->stopped_) return;
-        if (ec) return self->teardown("resolve " + self->config_.host + ": " + ec.message());
+        if (ec) return self->teardown("resolve " + self->server().host + ": " + ec.message());
         asio::async_connect(self->tcp_, results,
                             [self, generation](std::error_code ec2, const asio::ip::tcp::endpoint&) {
                               if (generation != self->generation_ || self->stopped_) return;
-                              if (ec2) return self->teardown("connect: " + ec2.message());
+                              if (ec2)
+                                return self->teardown("connect " + self->server().host + ":" + self->server().port +
+                                                      ": " + ec2.message());
                               self->on_connected();
                             });
       });
@@ -293,6 +302,11 @@ void ClientConnection::teardown(const std::string& why) {
   if (was_connected) ++counters_.disconnects;
   if (was_connected && session_ && on_session_end_) on_session_end_(*session_, why);
   if (stopped_ || !config_.reconnect) return;
+  // This server failed or dropped us: the next attempt goes to the next replica.
+  if (servers_.size() > 1) {
+    server_index_ = (server_index_ + 1) % servers_.size();
+    ++counters_.failovers;
+  }
   waiting_reconnect_ = true;
   reconnect_at_ = now_s() + backoff_s_;
   backoff_s_ = std::min(config_.reconnect_max_s, backoff_s_ * 2.0);

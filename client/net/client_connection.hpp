@@ -1,6 +1,7 @@
 // ClientConnection: the Asio edge of one client - TCP connect and framed reads, the UDP socket
 // from the Welcome, one steady_timer driving its ClientSession, optional PacketLinks on every
-// direction, and reconnection with backoff. Many share one io_context and one thread.
+// direction, and reconnection with backoff, round robin over replica servers. Many share one
+// io_context and one thread.
 #pragma once
 
 #include <asio/io_context.hpp>
@@ -20,9 +21,22 @@
 
 namespace ocean::client {
 
+// One server to connect to: a host name or IP literal and its TCP port (a number or service name).
+struct ServerEndpoint {
+  std::string host;
+  std::string port;
+  bool operator==(const ServerEndpoint&) const = default;
+};
+
 struct ClientConnectionConfig {
   std::string host = "127.0.0.1";
   std::string port = "7100";  // the server's TCP port
+  // Replicas (servers started with one config stream identical frames, README-server.md). Empty:
+  // {host, port} is the only server. Otherwise host/port are ignored; the first attempt goes to
+  // servers[0], and after every failed attempt or dropped connection the next attempt goes to
+  // the next entry, round robin, after the usual backoff. A new server means a new session, which
+  // starts from a keyframe.
+  std::vector<ServerEndpoint> servers;
   ClientSessionConfig session;
   bool reconnect = true;
   double reconnect_min_s = 0.25;  // first retry delay; doubles per failure up to reconnect_max_s
@@ -35,6 +49,7 @@ struct ConnectionCounters {
   std::uint64_t connects = 0;     // TCP connections established (each starts a new session)
   std::uint64_t disconnects = 0;
   std::uint64_t udp_receive_errors = 0;
+  std::uint64_t failovers = 0;    // times a failure or drop moved the next attempt to another server
   std::string last_close_reason;
 };
 
@@ -59,6 +74,9 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
   const ConnectionCounters& counters() const { return counters_; }
   const ConnectionLinks& links() const { return links_; }
   bool connected() const { return connected_; }
+  // The server connected to, or being tried (between connections: the next one to try).
+  const ServerEndpoint& server() const { return servers_[server_index_]; }
+  std::size_t server_index() const { return server_index_; }
 
   // The clock every session and link of this library runs on: steady_clock in seconds.
   static double now_s();
@@ -87,6 +105,8 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
 
   asio::io_context& io_;
   ClientConnectionConfig config_;
+  std::vector<ServerEndpoint> servers_;  // config_.servers, or {host, port}; never empty
+  std::size_t server_index_ = 0;
   FrameCallback on_frame_;
   ConnectionLinks links_;
   SessionEndCallback on_session_end_;

@@ -1,0 +1,146 @@
+// FrameRecorder: a raw TCP client of one server, built from the protocol builders and readers
+// only (no decoder, no ClientSession), that asks for one profile on TCP - a keyframe, then deltas
+// each predicted from the frame before - and records every FrameChunk exactly as it arrived.
+#pragma once
+
+#include <asio/connect.hpp>
+#include <asio/io_context.hpp>
+#include <asio/ip/tcp.hpp>
+#include <asio/write.hpp>
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "message_builders.hpp"
+#include "message_readers.hpp"
+#include "tcp_framer.hpp"
+#include "verify_message.hpp"
+
+namespace ocean::replica_test {
+
+// One frame as received: its envelope and every chunk's payload by index.
+struct RecordedFrame {
+  std::uint8_t profile_id = 0;
+  std::uint32_t tick = 0;
+  std::uint32_t baseline = 0;
+  bool key = false;
+  std::uint16_t count = 0;
+  std::map<std::uint16_t, protocol::Bytes> payloads;  // index -> payload bytes
+  bool complete() const { return payloads.size() == count; }
+};
+
+class FrameRecorder {
+ public:
+  // Connects at once (blocking); the Hello waits for send_hello(), so a test can time it.
+  FrameRecorder(asio::io_context& io, std::uint16_t port, std::uint8_t profile_id)
+      : socket_(io), profile_id_(profile_id) {
+    socket_.connect({asio::ip::address_v4::loopback(), port});
+    socket_.set_option(asio::ip::tcp::no_delay(true));
+    do_read();
+  }
+  // A read completion already queued still runs after close() (cancel cannot recall it): the
+  // shared flag tells it the recorder is gone.
+  ~FrameRecorder() { *alive_ = false; }
+  FrameRecorder(const FrameRecorder&) = delete;
+  FrameRecorder& operator=(const FrameRecorder&) = delete;
+
+  void send_hello() {
+    const protocol::Bytes hello =
+        protocol::encode(protocol::Hello{profile_id_, 0, wire::Transport::tcp, "replica-test"});
+    asio::write(socket_, asio::buffer(hello));
+  }
+
+  // Stops recording; what was recorded stays.
+  void close() {
+    *alive_ = false;
+    std::error_code ec;
+    socket_.close(ec);
+  }
+
+  // Frames by tick, in arrival order of their first chunk.
+  const std::map<std::uint32_t, RecordedFrame>& frames() const { return frames_; }
+  const std::optional<protocol::Welcome>& welcome() const { return welcome_; }
+  std::optional<std::uint32_t> first_key_tick() const { return first_key_tick_; }
+  std::optional<std::uint32_t> newest_tick() const {
+    return frames_.empty() ? std::nullopt : std::optional<std::uint32_t>(frames_.rbegin()->first);
+  }
+  // Chunks that contradict the frame they belong to (envelope differs, index repeated), and
+  // every other refusal: a server of this project sends none.
+  const std::vector<std::string>& faults() const { return faults_; }
+  bool closed() const { return closed_; }
+
+ private:
+  void do_read() {
+    socket_.async_read_some(asio::buffer(buffer_), [this, alive = alive_](std::error_code ec, std::size_t n) {
+      if (!*alive || ec == asio::error::operation_aborted) return;  // closed or destroyed: touch nothing
+      if (ec) {
+        closed_ = true;
+        return;
+      }
+      std::span<const std::uint8_t> rest(buffer_.data(), n);
+      while (!rest.empty()) {
+        const protocol::TcpFramer::Result r = framer_.feed(rest);
+        rest = rest.subspan(r.consumed);
+        if (r.status == protocol::TcpFramer::Status::bad) {
+          faults_.push_back("TCP framing: " + std::string(protocol::to_string(r.reason)));
+          closed_ = true;
+          return;
+        }
+        if (r.status == protocol::TcpFramer::Status::need_more) break;
+        on_message(framer_.message());
+      }
+      do_read();
+    });
+  }
+
+  void on_message(std::span<const std::uint8_t> bytes) {
+    const std::size_t limit = welcome_ ? welcome_->max_message_bytes : protocol::kDefaultMaxMessageBytes;
+    const protocol::Verified v = protocol::verify_message(bytes, {protocol::Sender::server, wire::Transport::tcp, limit});
+    if (!v) {
+      faults_.push_back("refused message: " + protocol::describe(v));
+      return;
+    }
+    const protocol::AnyMessage message = protocol::decode(*v.message);
+    if (const auto* w = std::get_if<protocol::Welcome>(&message)) {
+      welcome_ = *w;
+      framer_.set_max_message_bytes(w->max_message_bytes);
+    } else if (const auto* c = std::get_if<protocol::FrameChunk>(&message)) {
+      record(*c);
+    } else if (const auto* e = std::get_if<protocol::Error>(&message)) {
+      faults_.push_back("Error: " + e->text);
+    }
+  }
+
+  void record(const protocol::FrameChunk& c) {
+    auto [it, fresh] = frames_.try_emplace(c.frame.tick);
+    RecordedFrame& f = it->second;
+    if (fresh) {
+      f = RecordedFrame{c.frame.profile_id, c.frame.tick, c.frame.baseline, c.frame.key, c.count, {}};
+      if (c.frame.key && !first_key_tick_) first_key_tick_ = c.frame.tick;
+    } else if (f.profile_id != c.frame.profile_id || f.baseline != c.frame.baseline || f.key != c.frame.key ||
+               f.count != c.count) {
+      faults_.push_back("tick " + std::to_string(c.frame.tick) + ": chunk envelope differs from its frame's");
+      return;
+    }
+    if (!f.payloads.emplace(c.index, c.payload).second)
+      faults_.push_back("tick " + std::to_string(c.frame.tick) + ": chunk " + std::to_string(c.index) + " twice");
+  }
+
+  std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
+  asio::ip::tcp::socket socket_;
+  std::uint8_t profile_id_;
+  protocol::TcpFramer framer_;
+  std::array<std::uint8_t, 16384> buffer_{};
+  std::optional<protocol::Welcome> welcome_;
+  std::map<std::uint32_t, RecordedFrame> frames_;
+  std::optional<std::uint32_t> first_key_tick_;
+  std::vector<std::string> faults_;
+  bool closed_ = false;
+};
+
+}  // namespace ocean::replica_test
