@@ -13,6 +13,12 @@ std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
   return h;
 }
 
+std::uint64_t key_hash(std::uint32_t tick, const DecodeMemo::Payloads& chunks) {
+  std::uint64_t h = fnv1a({}) ^ tick;
+  for (const auto& c : chunks) h = (h * 1099511628211ull) ^ fnv1a(c);
+  return h;
+}
+
 }  // namespace
 
 std::size_t DecodeMemo::KeyHash::operator()(const Key& k) const {
@@ -30,6 +36,27 @@ void DecodeMemo::saw_tick(std::uint32_t tick) {
   const std::uint32_t oldest = newest_ - window_;
   while (!states_.empty() && states_.begin()->first < oldest) states_.erase(states_.begin());
   std::erase_if(deltas_, [oldest](const auto& item) { return item.first.tick < oldest; });
+  std::erase_if(keys_, [oldest](const auto& item) { return item.second.tick < oldest; });
+}
+
+const DecodeMemo::Result* DecodeMemo::find_key(std::uint32_t tick, const Payloads& chunks) {
+  const auto [begin, end] = keys_.equal_range(key_hash(tick, chunks));
+  for (auto it = begin; it != end; ++it)
+    if (it->second.tick == tick && it->second.chunks == chunks) {
+      ++counts_.hits;
+      return &it->second.result;
+    }
+  ++counts_.misses;
+  return nullptr;
+}
+
+
+const DecodeMemo::Result& DecodeMemo::remember_key(std::uint32_t tick, const Payloads& chunks, State state,
+                                                   ReconstructedFrame&& frame) {
+  saw_tick(tick);
+  frame.shared_id = ++frame_ids_;
+  KeyEntry entry{tick, chunks, Result{std::move(state), std::make_shared<const ReconstructedFrame>(std::move(frame))}};
+  return keys_.emplace(key_hash(tick, chunks), std::move(entry))->second.result;
 }
 
 DecodeMemo::State DecodeMemo::intern(std::uint32_t tick, ModalState&& state) {

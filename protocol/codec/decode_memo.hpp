@@ -2,7 +2,7 @@
 // interned by content, so equal states are one object; a single-chunk delta decoded from an
 // interned state is remembered by (that object, tick, payload bytes), and a decoder that gets the
 // same bytes on the same baseline object takes the remembered state and frame instead of
-// decoding again. A hit needs identical inputs, so it changes no result: a load test's hundreds
+// decoding again; keys are remembered by the bytes of all their chunks. A hit needs identical inputs, so it changes no result: a load test's hundreds
 // of clients of one stream decode each distinct frame once. One memo per thread (not locked).
 #pragma once
 
@@ -45,6 +45,11 @@ class DecodeMemo {
   const Result& remember(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload,
                          State state, ReconstructedFrame&& frame);
 
+  // Keys, by the payloads of all their chunks in index order.
+  using Payloads = std::vector<std::vector<std::uint8_t>>;
+  const Result* find_key(std::uint32_t tick, const Payloads& chunks);
+  const Result& remember_key(std::uint32_t tick, const Payloads& chunks, State state, ReconstructedFrame&& frame);
+
  private:
   struct Key {
     const ModalState* baseline;
@@ -61,6 +66,12 @@ class DecodeMemo {
     Result result;
   };
 
+  struct KeyEntry {
+    std::uint32_t tick;
+    Payloads chunks;
+    Result result;
+  };
+
   void saw_tick(std::uint32_t tick);
 
   StreamConfig config_;
@@ -68,6 +79,7 @@ class DecodeMemo {
   std::uint32_t newest_ = 0;
   std::uint64_t frame_ids_ = 0;
   std::unordered_map<Key, std::vector<Entry>, KeyHash> deltas_;
+  std::multimap<std::uint64_t, KeyEntry> keys_;  // by content hash
   std::map<std::uint32_t, std::unordered_multimap<std::uint64_t, State>> states_;  // tick -> content hash -> state
   Counts counts_;
 };

@@ -81,6 +81,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
     p.count = c.count;
     p.got.assign(c.count, false);
     if (c.key) {
+      if (options_.memo) p.key_payloads.resize(c.count);
       p.key_coefficients.resize(layout.spectral_items);
       p.pos_shift = h.pos_shift;
       p.vel_shift = h.vel_shift;
@@ -91,6 +92,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
     }
   }
   p.got[c.index] = true;
+  if (!p.key_payloads.empty()) p.key_payloads[c.index].assign(c.payload.begin(), c.payload.end());
   ++p.received;
   p.ranges.emplace_back(h.item_begin, h.item_end);
   for (std::size_t i = 0; i < decoded.key.size(); ++i) p.key_coefficients[h.item_begin + i] = decoded.key[i];
@@ -124,21 +126,21 @@ bool Decoder::accept_remembered(const ChunkView& c) {
   if (!memo || c.key || c.count != 1) return false;
   const DecodeMemo::Result* r = memo->find(states_.at(c.baseline), c.tick, c.payload);
   if (!r) return false;
-  states_[c.tick] = r->state;
-  completed_tick_ = c.tick;
-  if (!shown_tick_ || c.tick >= *shown_tick_) {
-    show(c.tick);
-    shown_shared_ = r->frame;
-    shown_complete_ = true;
-    shown_dirty_ = false;
-  } else {
-    late_shared_ = r->frame;
-  }
+  complete_shared(c.tick, *r);
   evict();
   return true;
 }
 
 void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint8_t> payload) {
+  DecodeMemo* memo = options_.memo;
+  // The memo takes single-chunk deltas and keys, by their bytes.
+  const bool memo_key = memo && p.key;
+  if (memo_key) {
+    if (const DecodeMemo::Result* r = memo->find_key(tick, p.key_payloads)) {
+      complete_shared(tick, *r);
+      return;
+    }
+  }
   if (p.key) {
     p.predicted = key_state(model_, p.key_coefficients, p.pos_shift, p.vel_shift);
     model_.synthesize(p.predicted.cur, p.fields);
@@ -146,28 +148,24 @@ void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint
   }
   if (!p.corrections.height.empty())
     model_.add_correction(p.predicted, height_correction_field(model_.n(), p.corrections.height));
-  DecodeMemo* memo = options_.memo;
   const DecodeMemo::State state = memo ? memo->intern(tick, std::move(p.predicted))
                                        : std::make_shared<const ModalState>(std::move(p.predicted));
   const bool shown = !shown_tick_ || tick >= *shown_tick_;
   completed_tick_ = tick;
   late_shared_.reset();
   late_converted_ = false;
-  if (memo && !p.key && p.count == 1) {
+  if (memo_key || (memo && !p.key && p.count == 1)) {
     ReconstructedFrame frame;
     to_float(p.fields, config_, frame);
     frame.tick = tick;
     frame.complete = true;
-    const DecodeMemo::Result& r = memo->remember(states_.at(p.baseline), tick, payload, state, std::move(frame));
-    if (shown) {
-      show(tick);
-      shown_shared_ = r.frame;
-      shown_complete_ = true;
-      shown_dirty_ = false;
-    } else {
-      late_shared_ = r.frame;
-    }
-  } else if (shown) {
+    const DecodeMemo::Result& r =
+        p.key ? memo->remember_key(tick, p.key_payloads, state, std::move(frame))
+              : memo->remember(states_.at(p.baseline), tick, payload, state, std::move(frame));
+    complete_shared(tick, r);
+    return;
+  }
+  if (shown) {
     show(tick);
     shown_fields_ = std::move(p.fields);
     shown_complete_ = true;
@@ -175,6 +173,22 @@ void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint
     late_fields_ = std::move(p.fields);
   }
   states_[tick] = state;
+}
+
+// A complete frame whose state and shown frame the memo holds.
+void Decoder::complete_shared(std::uint32_t tick, const DecodeMemo::Result& r) {
+  completed_tick_ = tick;
+  late_converted_ = false;
+  states_[tick] = r.state;
+  if (!shown_tick_ || tick >= *shown_tick_) {
+    show(tick);
+    shown_shared_ = r.frame;
+    shown_complete_ = true;
+    shown_dirty_ = false;
+    late_shared_.reset();
+  } else {
+    late_shared_ = r.frame;
+  }
 }
 
 const ReconstructedFrame* Decoder::just_completed() {

@@ -63,12 +63,14 @@ class Decoder {
     std::vector<KeyCoefficient> key_coefficients;  // key: filled as chunks arrive
     std::uint8_t pos_shift = 0, vel_shift = 0;
     Corrections corrections;
+    DecodeMemo::Payloads key_payloads;  // with a memo: the key's chunks by index, to look it up whole
   };
 
   ChunkError check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const;
   // payload: the chunk of a single-chunk delta, remembered in the memo with its result.
   void complete(std::uint32_t tick, Pending& p, std::span<const std::uint8_t> payload);
   bool accept_remembered(const ChunkView& c);
+  void complete_shared(std::uint32_t tick, const DecodeMemo::Result& r);
   void show(std::uint32_t tick);
   void evict();
   void drop_pending(std::map<std::uint32_t, Pending>::iterator it);

@@ -187,9 +187,10 @@ bool SessionHub::is_key_tick(const ProfileStream& stream, std::uint32_t tick) co
 }
 
 // Sessions keyed at different ticks hold different states forever (a key is lossy), so every
-// root costs its own encodes each tick. Beyond max_roots, the smallest root old enough is keyed
-// again onto the root this key tick starts: one per key tick, so neither the keys' bytes nor the
-// clients' key decodes come in one burst, and a session pays at most one extra key per
+// root costs its own encodes each tick. Beyond max_roots, the two smallest roots old enough are
+// keyed again onto the one root this key tick starts: the count drops by one per key tick until
+// it is within the cap, and then nothing more is keyed. Two at a time keeps the keys' bytes and
+// the clients' key decodes from coming in one burst; a session pays at most one extra key per
 // root_merge_age_s.
 void SessionHub::limit_roots(ProfileStream& stream, std::uint32_t tick) {
   std::map<std::uint32_t, std::vector<Session*>> roots;
@@ -198,18 +199,16 @@ void SessionHub::limit_roots(ProfileStream& stream, std::uint32_t tick) {
       if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
   if (roots.size() <= options_.max_roots) return;
   const double min_age_ticks = options_.root_merge_age_s * server_.config().tick_rate_hz;
-  std::uint32_t smallest = 0;
-  std::size_t smallest_size = 0;
+  std::vector<std::pair<std::size_t, std::uint32_t>> old;  // (sessions, root)
   for (const auto& [root, members] : roots)
-    if (static_cast<double>(tick - root) >= min_age_ticks && (smallest_size == 0 || members.size() < smallest_size)) {
-      smallest = root;
-      smallest_size = members.size();
-    }
-  if (smallest_size == 0) return;
-  for (Session* session : roots[smallest]) session->need_key = true;
-  server_.metrics().root_merges.inc();
-  spdlog::debug("tick {} profile {}: {} key roots; the {} sessions of root {} are keyed again", tick,
-                stream.profile().name, roots.size(), smallest_size, smallest);
+    if (static_cast<double>(tick - root) >= min_age_ticks) old.emplace_back(members.size(), root);
+  if (old.size() < 2) return;  // merging one root into a new one would not lower the count
+  std::partial_sort(old.begin(), old.begin() + 2, old.end());
+  for (std::size_t i = 0; i < 2; ++i)
+    for (Session* session : roots[old[i].second]) session->need_key = true;
+  server_.metrics().root_merges.inc(2);
+  spdlog::debug("tick {} profile {}: {} key roots; roots {} and {} ({} and {} sessions) are keyed again", tick,
+                stream.profile().name, roots.size(), old[0].second, old[1].second, old[0].first, old[1].first);
 }
 
 void SessionHub::sweep_timeouts(double now_s) {
