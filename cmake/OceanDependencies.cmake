@@ -16,7 +16,10 @@ find_package(CLI11 CONFIG QUIET)
 find_path(ASIO_INCLUDE_DIR asio.hpp REQUIRED)
 add_library(ocean_asio INTERFACE)
 target_include_directories(ocean_asio SYSTEM INTERFACE ${ASIO_INCLUDE_DIR})
-target_compile_definitions(ocean_asio INTERFACE ASIO_STANDALONE ASIO_NO_DEPRECATED)
+# ASIO_DISABLE_STD_ALIGNED_ALLOC: Asio picks aligned_alloc/free or operator new/delete for its
+# handler memory per translation unit, depending on whether a libstdc++ header came first; inline
+# functions that differ between TUs mix the two (ASan: alloc-dealloc-mismatch). One choice for all.
+target_compile_definitions(ocean_asio INTERFACE ASIO_STANDALONE ASIO_NO_DEPRECATED ASIO_DISABLE_STD_ALIGNED_ALLOC)
 target_link_libraries(ocean_asio INTERFACE Threads::Threads)
 if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
   target_compile_definitions(ocean_asio INTERFACE ASIO_HAS_CO_AWAIT=1 ASIO_HAS_STD_COROUTINE=1)

@@ -30,9 +30,10 @@ if [[ -z "$only" || "$only" == asan ]]; then
   ctest --test-dir build-asan --output-on-failure -j"$(nproc)" --timeout 1800
 fi
 if [[ -z "$only" || "$only" == tsan ]]; then
-  # Only the threaded parts: the server (tick loop, sessions), the client connection, the loadtest.
+  # Only the threaded parts: the server (tick loop, sessions), the client connection, the load
+  # test, and the end-to-end fault and replica tests (their ocean-server runs under TSan too).
   OCEAN_BUILD_DIR=build-tsan ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=thread \
     -DOCEAN_BUILD_CLIENT=OFF \
-    -DOCEAN_DIRS="server/sim;protocol;protocol/codec;server/net;server;client/net;client/loadtest;tests;tests/server;tests/client_net;tests/loadtest"
-  ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" --timeout 1800 -R 'server|client_net|loadtest'
+    -DOCEAN_DIRS="server/sim;protocol;protocol/codec;server/net;server;client/net;client/loadtest;tests;tests/server;tests/client_net;tests/loadtest;tests/faults;tests/replica"
+  ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" --timeout 1800 -R 'server|client_net|loadtest|faults|replica'
 fi
