@@ -19,7 +19,8 @@ if [[ "${OCEAN_SANITIZE:-}" != 1 ]]; then
   exit 0
 fi
 # Findings stop the test: UBSan halts (the build also passes -fno-sanitize-recover=all); LSan may
-# ignore only Mesa/LLVM-internal leaks of the GL tests (tests/sanitizers/lsan.supp, never ours).
+# ignore only Mesa/LLVM-internal leaks (tests/sanitizers/lsan.supp, never ours); the GL test
+# processes skip the leak check (tests/sanitizers/no_leak_check.cpp says why).
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:detect_stack_use_after_return=1:strict_init_order=1}
 export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
