@@ -1,7 +1,7 @@
 #include "config_loader.hpp"
 
 #include "config_options.hpp"
-#include "utf8_check.hpp"
+#include "ascii_text.hpp"
 
 #include <algorithm>
 #include <CLI/CLI.hpp>
@@ -133,11 +133,11 @@ std::string apply_schedule(ServerConfig& config, const toml::node& node, std::st
 }  // namespace
 
 std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, std::string_view source) {
-  if (const auto bad = first_invalid_utf8(toml_text)) {
+  if (const auto bad = first_non_ascii(toml_text)) {
     const std::string_view before = toml_text.substr(0, *bad);
     const std::size_t line = 1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
     return std::string(source) + ":" + std::to_string(line) + ": byte " + std::to_string(*bad) +
-           " is not valid UTF-8 (a TOML file must be UTF-8 text)";
+           " is not ASCII (config files must be ASCII; give non-ASCII paths as flags)";
   }
   toml::parse_result parsed = toml::parse(toml_text, source);
   if (!parsed) {

@@ -262,17 +262,17 @@ TEST_CASE("describe_config shows options but never the admin token", "[config]")
   CHECK(text.find("top-secret-token") == std::string::npos);
 }
 
-TEST_CASE("config text that is not UTF-8 is refused before the TOML parser sees it", "[config]") {
+TEST_CASE("config text that is not ASCII is refused before the TOML parser sees it", "[config]") {
   ServerConfig config;
-  // A lone continuation byte, an overlong '/', a surrogate, and a truncated sequence.
-  for (const std::string& bad : {std::string("seed = 1\n\x80"), std::string("seed = 1\n\xC0\xAF"),
-                                std::string("seed = 1\n# \xED\xA0\x80"), std::string("seed = 1\n# \xE2\x82")}) {
+  // Malformed UTF-8, and valid characters on which toml++ 3.3 reaches TOML_UNREACHABLE (the
+  // second is fuzz_config_toml's finding: U+FEEF before a key).
+  for (const std::string& bad : {std::string("seed = 1\n\x80"), std::string("seed = 1\n\xEF\xBB\xAFl = 1"),
+                                 std::string("seed = 1\n\xC3\xA9 = 2"), std::string("seed = 1\n# vln\xC4\x9B")}) {
     const std::string error = apply_config_toml(config, bad, "bad.toml");
     INFO(error);
     CHECK(error.rfind("bad.toml:2: byte ", 0) == 0);
-    CHECK(error.find("not valid UTF-8") != std::string::npos);
+    CHECK(error.find("not ASCII") != std::string::npos);
   }
-  // Valid multi-byte text (a comment in Czech, a 4-byte emoji) still loads.
-  CHECK(apply_config_toml(config, "# vln\xC4\x9B \xF0\x9F\x8C\x8A\nseed = 9\n", "ok.toml").empty());
+  CHECK(apply_config_toml(config, "# plain\nseed = 9\n", "ok.toml").empty());
   CHECK(config.scene.seed == 9u);
 }
