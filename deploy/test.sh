@@ -32,9 +32,12 @@ if [[ -z "$only" || "$only" == asan ]]; then
 fi
 if [[ -z "$only" || "$only" == tsan ]]; then
   # Only the threaded parts: the server (tick loop, sessions), the client connection, the load
-  # test, and the end-to-end fault and replica tests (their ocean-server runs under TSan too).
+  # test's pieces and the replica tests (their ocean-server processes run under TSan too). Not the
+  # load-test scenarios or tests/faults: they assert on-time shares that a 5-15x slower TSan build
+  # cannot meet (a full TSan run of them on 2026-11-21 reported no race, only missed deadlines).
   OCEAN_BUILD_DIR=build-tsan ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=thread \
     -DOCEAN_BUILD_CLIENT=OFF \
-    -DOCEAN_DIRS="server/sim;protocol;protocol/codec;server/net;server;client/net;client/loadtest;tests;tests/server;tests/client_net;tests/loadtest;tests/faults;tests/replica"
-  ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" --timeout 1800 -R 'server|client_net|loadtest|faults|replica'
+    -DOCEAN_DIRS="server/sim;protocol;protocol/codec;server/net;server;client/net;client/loadtest;tests;tests/server;tests/client_net;tests/loadtest;tests/replica"
+  ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" --timeout 1800 -R 'server|client_net|loadtest|replica' \
+    -E 'loadtest_scenario'
 fi
