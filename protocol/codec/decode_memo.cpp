@@ -27,6 +27,11 @@ std::size_t DecodeMemo::KeyHash::operator()(const Key& k) const {
   return static_cast<std::size_t>(h ^ (h >> 32));
 }
 
+DecodeMemo::Result DecodeMemo::shared_result(State state, ReconstructedFrame&& frame) {
+  frame.shared_id = ++frame_ids_;
+  return Result{std::move(state), std::make_shared<const ReconstructedFrame>(std::move(frame))};
+}
+
 DecodeMemo::DecodeMemo(const StreamConfig& config, std::uint32_t window_ticks) : config_(config), window_(window_ticks) {}
 
 void DecodeMemo::saw_tick(std::uint32_t tick) {
@@ -50,12 +55,10 @@ const DecodeMemo::Result* DecodeMemo::find_key(std::uint32_t tick, const Payload
   return nullptr;
 }
 
-
 const DecodeMemo::Result& DecodeMemo::remember_key(std::uint32_t tick, const Payloads& chunks, State state,
                                                    ReconstructedFrame&& frame) {
   saw_tick(tick);
-  frame.shared_id = ++frame_ids_;
-  KeyEntry entry{tick, chunks, Result{std::move(state), std::make_shared<const ReconstructedFrame>(std::move(frame))}};
+  KeyEntry entry{tick, chunks, shared_result(std::move(state), std::move(frame))};
   return keys_.emplace(key_hash(tick, chunks), std::move(entry))->second.result;
 }
 
@@ -93,9 +96,8 @@ const DecodeMemo::Result* DecodeMemo::find(const State& baseline, std::uint32_t 
 const DecodeMemo::Result& DecodeMemo::remember(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload,
                                                State state, ReconstructedFrame&& frame) {
   saw_tick(tick);
-  frame.shared_id = ++frame_ids_;
   Entry entry{baseline, std::vector<std::uint8_t>(payload.begin(), payload.end()),
-              Result{std::move(state), std::make_shared<const ReconstructedFrame>(std::move(frame))}};
+              shared_result(std::move(state), std::move(frame))};
   auto& bucket = deltas_[Key{baseline.get(), tick, fnv1a(payload)}];
   bucket.push_back(std::move(entry));
   return bucket.back().result;

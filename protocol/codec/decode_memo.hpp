@@ -73,6 +73,7 @@ class DecodeMemo {
   };
 
   void saw_tick(std::uint32_t tick);
+  Result shared_result(State state, ReconstructedFrame&& frame);  // frame gets a fresh shared_id
 
   StreamConfig config_;
   std::uint32_t window_;

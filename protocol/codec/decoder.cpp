@@ -133,9 +133,8 @@ bool Decoder::accept_remembered(const ChunkView& c) {
 
 void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint8_t> payload) {
   DecodeMemo* memo = options_.memo;
-  // The memo takes single-chunk deltas and keys, by their bytes.
-  const bool memo_key = memo && p.key;
-  if (memo_key) {
+  // The memo takes keys and single-chunk deltas, by their bytes.
+  if (memo && p.key) {
     if (const DecodeMemo::Result* r = memo->find_key(tick, p.key_payloads)) {
       complete_shared(tick, *r);
       return;
@@ -154,7 +153,7 @@ void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint
   completed_tick_ = tick;
   late_shared_.reset();
   late_converted_ = false;
-  if (memo_key || (memo && !p.key && p.count == 1)) {
+  if (memo && (p.key || p.count == 1)) {
     ReconstructedFrame frame;
     to_float(p.fields, config_, frame);
     frame.tick = tick;
