@@ -1,18 +1,43 @@
-// Deterministic elementary functions for the codec's coefficient tables: built from + - * / and
-// sqrt in double only (all correctly rounded by IEEE 754), evaluated in a fixed order, so every
-// CPU and compiler gets the same bits (compile with -ffp-contract=off). Not for hot loops.
+// Deterministic elementary functions for the codec's coefficient tables and its scene model: built
+// from + - * / and sqrt in double only (all correctly rounded by IEEE 754), plus exact operations
+// (floor, frexp, ldexp, comparisons), evaluated in a fixed order with fixed loop counts, so every
+// CPU, compiler and language gets the same bits (compile with -ffp-contract=off). The exact
+// operation order is normative: CODEC.md section 3 and scene_model_spec.md. Not for hot loops
+// (det_cos_sin is the batched form for the scene model's per-tick phases).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace ocean::codec {
 
 inline constexpr double kTwoPi = 6.283185307179586;  // nearest double to 2 pi
+inline constexpr double kPi = 3.141592653589793;     // nearest double to pi (= kTwoPi / 2 exactly)
 
 double det_cos(double x);
 double det_sin(double x);
 double det_exp_neg(double y);  // e^-y for y >= 0
 double det_tanh(double x);     // x >= 0
+
+// cos_out[i] = det_cos(x[i]), sin_out[i] = det_sin(x[i]) bit for bit; written so the series loops
+// vectorise across elements.
+void det_cos_sin(const double* x, std::size_t count, double* cos_out, double* sin_out);
+
+// x - m kTwoPi in [-kPi, kPi], exactly (fmod is exact): IEEE remainder(x, kTwoPi) as the sim wraps
+// angles, except that a tie (|result| = kPi) keeps fmod's sign.
+double det_wrap_angle(double x);
+
+// Natural logarithm, x > 0 (0 -> -inf, inf -> inf, negative or NaN -> NaN).
+double det_log(double x);
+// e^x for any x: above 710 inf, below -746 0; NaN stays NaN.
+double det_exp(double x);
+// x^y = det_exp(y det_log(x)) for x > 0; relative error grows with |y ln x| (about |y ln x| 2^-52).
+double det_pow(double x, double y);
+// atan2 for finite arguments; (0, 0) and signed zeros give +0 / +pi rather than libm's signed results.
+double det_atan2(double y, double x);
+// ln Gamma(x), x > 0: shifted up to at least 16, then Stirling's series.
+double det_log_gamma(double x);
+double det_cosh(double x);
 
 // w = sqrt(g k tanh(k depth)); depth_m <= 0 means deep water (tanh = 1).
 double det_angular_frequency(double k, double gravity, double depth_m);

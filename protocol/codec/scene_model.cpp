@@ -1,0 +1,118 @@
+// The scene's mode table (h0 pairs scaled to spectrum units, w as ModalModel computes it) and its
+// per-tick evaluation h(k, t) = a e^{-iwt} + b e^{+iwt}, as the sim's band evaluator does it.
+#include "scene_model.hpp"
+
+#include "det_math.hpp"
+#include "scene_amplitude.hpp"
+#include "scene_spectrum.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace ocean::codec {
+namespace {
+
+int signed_index(int i, int n) { return i < n / 2 ? i : i - n; }
+
+const SceneModelParams& require_valid(const StreamConfig& stream, const SceneModelParams& scene) {
+  std::string err = validate(stream);
+  if (!err.empty()) throw std::invalid_argument("scene model: stream config: " + err);
+  err = validate(scene);
+  if (!err.empty()) throw std::invalid_argument("scene model: scene: " + err);
+  if (stream.grid > scene.size_x || stream.grid > scene.size_z)
+    throw std::invalid_argument("scene model: stream grid " + std::to_string(stream.grid) +
+                                " exceeds the scene's size " + std::to_string(scene.size_x) + " x " +
+                                std::to_string(scene.size_z));
+  // The recurrence the decoder advances with is built from the stream's physics; a scene with other
+  // physics would predict a different ocean from the one the stream advances.
+  if (stream.patch_x_m != scene.patch_x_m || stream.patch_z_m != scene.patch_z_m ||
+      stream.gravity_mps2 != scene.gravity_mps2 || stream.depth_m != scene.depth_m)
+    throw std::invalid_argument("scene model: the stream's patch, gravity and depth must equal the scene's");
+  return scene;
+}
+
+// Each component of a mode must stay well inside int64 after to_fixed.
+constexpr double kMaxUnits = 0x1.0p62;
+
+}  // namespace
+
+double tick_time_s(std::int64_t tick, int rate_hz) {
+  std::int64_t seconds = tick / rate_hz;
+  if (tick % rate_hz < 0) --seconds;  // floor division
+  return static_cast<double>(seconds) + static_cast<double>(tick - seconds * rate_hz) / rate_hz;
+}
+
+SceneModel::SceneModel(const StreamConfig& stream, const SceneModelParams& scene)
+    : scene_(require_valid(stream, scene)), n_(stream.grid), rate_hz_(stream.effective_tick_rate_hz()) {
+  const SceneSpectrum spectrum(scene_);
+  const int n = n_, hc = n / 2 + 1;
+  const double unit = static_cast<double>(stream.height_step_m) / 65536.0;
+  const double scale = static_cast<double>(n) * static_cast<double>(n) / unit;
+  for (int r = 0; r < n; ++r) {
+    const int kz = signed_index(r, n);
+    if (r == n / 2) continue;  // Nyquist row
+    const double wz = kTwoPi * kz / stream.patch_z_m;
+    for (int c = 0; c < n / 2; ++c) {  // column n/2 is the Nyquist column
+      if (c == 0 && kz <= 0) continue;  // DC, and the kx = 0 partners mirrored in state_at
+      const double wx = kTwoPi * c / stream.patch_x_m;
+      const SceneComplex a = scene_initial_amplitude(scene_, spectrum, c, kz);
+      const SceneComplex h = scene_initial_amplitude(scene_, spectrum, -c, -kz);
+      const SceneComplex b{h.re, -h.im};
+      Mode m;
+      m.index = r * hc + c;
+      m.omega = det_angular_frequency(std::sqrt(wx * wx + wz * wz), stream.gravity_mps2, stream.depth_m);
+      m.sum_re = (a.re + b.re) * scale;
+      m.sum_im = (a.im + b.im) * scale;
+      m.diff_re = (a.re - b.re) * scale;
+      m.diff_im = (a.im - b.im) * scale;
+      if (m.sum_re == 0.0 && m.sum_im == 0.0 && m.diff_re == 0.0 && m.diff_im == 0.0) continue;
+      if (!(std::fabs(m.sum_re) + std::fabs(m.diff_im) < kMaxUnits &&
+            std::fabs(m.sum_im) + std::fabs(m.diff_re) < kMaxUnits))
+        throw std::invalid_argument("scene model: a wave of " + std::to_string(std::hypot(a.re, a.im)) +
+                                    " m is too large for the stream's height step");
+      modes_.push_back(m);
+    }
+  }
+}
+
+void SceneModel::state_at(std::uint64_t tick, ModalState& out) const {
+  const int n = n_, hc = n / 2 + 1;
+  const std::size_t size = static_cast<std::size_t>(n) * hc;
+  for (HalfSpectrum* s : {&out.cur, &out.prev}) {
+    s->re.assign(size, 0);
+    s->im.assign(size, 0);
+  }
+  const std::int64_t signed_tick = static_cast<std::int64_t>(tick);
+  const double t_cur = tick_time_s(signed_tick, rate_hz_);
+  const double t_prev = tick_time_s(signed_tick - 1, rate_hz_);
+
+  // Phases of a block of modes at both times go through the batched det_cos_sin together.
+  constexpr std::size_t kBlock = 64;
+  double phase[2 * kBlock], cos_p[2 * kBlock], sin_p[2 * kBlock];
+  for (std::size_t at = 0; at < modes_.size(); at += kBlock) {
+    const std::size_t count = std::min(kBlock, modes_.size() - at);
+    for (std::size_t i = 0; i < count; ++i) {
+      phase[i] = modes_[at + i].omega * t_cur;
+      phase[kBlock + i] = modes_[at + i].omega * t_prev;
+    }
+    det_cos_sin(phase, count, cos_p, sin_p);
+    det_cos_sin(phase + kBlock, count, cos_p + kBlock, sin_p + kBlock);
+    for (std::size_t i = 0; i < count; ++i) {
+      const Mode& m = modes_[at + i];
+      for (int which = 0; which < 2; ++which) {
+        HalfSpectrum& s = which == 0 ? out.cur : out.prev;
+        const double c = cos_p[which * kBlock + i], sn = sin_p[which * kBlock + i];
+        s.re[m.index] = to_fixed(m.sum_re * c + m.diff_im * sn, 0);
+        s.im[m.index] = to_fixed(m.sum_im * c - m.diff_re * sn, 0);
+      }
+    }
+  }
+  // Column kx = 0 holds k and -k: rows n/2+1..n-1 are exactly the conjugates of rows n - r.
+  for (HalfSpectrum* s : {&out.cur, &out.prev})
+    for (int r = n / 2 + 1; r < n; ++r) {
+      s->re[static_cast<std::size_t>(r) * hc] = s->re[static_cast<std::size_t>(n - r) * hc];
+      s->im[static_cast<std::size_t>(r) * hc] = -s->im[static_cast<std::size_t>(n - r) * hc];
+    }
+}
+
+}  // namespace ocean::codec
