@@ -10,7 +10,6 @@ namespace {
 
 // 2 pi = kTwoPiHi + kTwoPiLo to about 1e-32, so x - n 2pi is accurate for the |x| we meet.
 constexpr double kTwoPiLo = 2.4492935982947064e-16;
-constexpr double kHalfPi = 1.5707963267948966;
 // ln 2 split so that k * kLn2Hi is exact for |k| < 2^11 (kLn2Hi has 32 significant bits).
 constexpr double kLn2Hi = 0.69314718036912382;
 constexpr double kLn2Lo = 1.9082149292705877e-10;
@@ -160,7 +159,7 @@ double det_pow(double x, double y) { return det_exp(y * det_log(x)); }
 double det_atan2(double y, double x) {
   if (x != x || y != y) return std::numeric_limits<double>::quiet_NaN();
   const double ax = std::fabs(x), ay = std::fabs(y);
-  if (ax == 0.0 && ay == 0.0) return x < 0.0 ? kPi : 0.0;
+  if (ax == 0.0 && ay == 0.0) return 0.0;
   const bool swap = ay > ax;
   double a = swap ? ax / ay : ay / ax;  // in [0, 1]
   // atan(a) = 2 atan(a / (1 + sqrt(1 + a^2))), twice: the argument drops to tan(pi/16) < 0.2.

@@ -13,6 +13,7 @@ namespace ocean::codec {
 
 inline constexpr double kTwoPi = 6.283185307179586;  // nearest double to 2 pi
 inline constexpr double kPi = 3.141592653589793;     // nearest double to pi (= kTwoPi / 2 exactly)
+inline constexpr double kHalfPi = 1.5707963267948966;  // nearest double to pi / 2 (= kTwoPi / 4)
 
 double det_cos(double x);
 double det_sin(double x);
@@ -33,7 +34,7 @@ double det_log(double x);
 double det_exp(double x);
 // x^y = det_exp(y det_log(x)) for x > 0; relative error grows with |y ln x| (about |y ln x| 2^-52).
 double det_pow(double x, double y);
-// atan2 for finite arguments; (0, 0) and signed zeros give +0 / +pi rather than libm's signed results.
+// atan2 for finite arguments; (+-0, +-0) gives +0 and y = -0 gives +0 or +pi (libm keeps the signs).
 double det_atan2(double y, double x);
 // ln Gamma(x), x > 0: shifted up to at least 16, then Stirling's series.
 double det_log_gamma(double x);

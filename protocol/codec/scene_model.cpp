@@ -6,8 +6,10 @@
 #include "scene_amplitude.hpp"
 #include "scene_spectrum.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace ocean::codec {
 namespace {
@@ -68,8 +70,8 @@ SceneModel::SceneModel(const StreamConfig& stream, const SceneModelParams& scene
       if (m.sum_re == 0.0 && m.sum_im == 0.0 && m.diff_re == 0.0 && m.diff_im == 0.0) continue;
       if (!(std::fabs(m.sum_re) + std::fabs(m.diff_im) < kMaxUnits &&
             std::fabs(m.sum_im) + std::fabs(m.diff_re) < kMaxUnits))
-        throw std::invalid_argument("scene model: a wave of " + std::to_string(std::hypot(a.re, a.im)) +
-                                    " m is too large for the stream's height step");
+        throw std::invalid_argument("scene model: the wave (" + std::to_string(c) + ", " + std::to_string(kz) +
+                                    ") is too large for the stream's height step (beyond 2^62 units)");
       modes_.push_back(m);
     }
   }

@@ -11,7 +11,6 @@ namespace ocean::codec {
 namespace {
 
 // pi/2 = kHalfPi + kHalfPiLo to about 1e-33.
-constexpr double kHalfPi = 1.5707963267948966;
 constexpr double kHalfPiLo = 6.123233995736766e-17;
 
 }  // namespace

@@ -187,3 +187,20 @@ TEST_CASE("det_wrap_angle is the exact remainder by 2 pi", "[det_math][scene_mod
     REQUIRE(det_wrap_angle(x) == std::remainder(x, kTwoPi));
   }
 }
+
+TEST_CASE("det_ functions reproduce the spec's test vectors bit for bit", "[det_math][scene_model]") {
+  CHECK(det_log(10.0) == 0x1.26bb1bbb55516p+1);
+  CHECK(det_log(0.3) == -0x1.34378fcbda721p+0);
+  CHECK(det_exp(-1.5) == 0x1.c8f87724b5c1dp-3);
+  CHECK(det_exp(700.5) == 0x1.8625c7d4f56c2p+1010);
+  CHECK(det_pow(3.3, 0.7) == 0x1.273c7cfb01256p+1);
+  CHECK(det_pow(0.49, -2.5) == 0x1.7ccb3107ef8ccp+2);
+  CHECK(det_atan2(1.0, -2.0) == 0x1.56c6e7397f5aep+1);
+  CHECK(det_atan2(-3.0, 0.5) == -0x1.67d8863bc99bcp+0);
+  CHECK(det_log_gamma(0.3) == 0x1.188637a6c41bp+0);
+  CHECK(det_log_gamma(150000.5) == 0x1.8fd7f8141209ap+20);
+  CHECK(det_cosh(2.5) == 0x1.88776e4b30aa3p+2);
+  CHECK(det_wrap_angle(100.0) == -0x1.0fdaa22168cp-1);
+  CHECK(det_cos(2e9) == 0x1.9dcefc534b5a6p-2);
+  CHECK(det_sin(2e9) == 0x1.d454ed4068727p-1);
+}
