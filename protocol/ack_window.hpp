@@ -1,35 +1,37 @@
 // AckWindow: the reliable/yojimbo acknowledgement of complete frames - the latest tick plus a
 // bit for each of the 32 ticks before it - built from whatever set of ticks the client holds
-// (ChunkAssembler, or codec::Decoder::complete_ticks()) and read back by the server.
+// (codec::Decoder::complete_ticks()) and read back by the server.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <span>
 
+#include "tick.hpp"
+
 namespace ocean::protocol {
 
 inline constexpr std::uint32_t kAckWindowTicks = 32;
 
 struct AckWindow {
-  std::uint32_t latest_tick = 0;
+  Tick latest_tick = 0;
   std::uint32_t bits = 0;  // bit i (LSB = 0) set: tick latest_tick - 1 - i is complete too
 
   // True when tick is latest_tick or one of the 32 ticks before it with its bit set.
-  bool contains(std::uint32_t tick) const {
+  bool contains(Tick tick) const {
     if (tick > latest_tick) return false;
-    const std::uint32_t age = latest_tick - tick;
+    const Tick age = latest_tick - tick;
     return age == 0 || (age <= kAckWindowTicks && ((bits >> (age - 1)) & 1u));
   }
 
   // The same window after tick completes too (a tick older than the window changes nothing).
-  AckWindow with(std::uint32_t tick) const {
+  AckWindow with(Tick tick) const {
     if (tick > latest_tick) {
-      const std::uint64_t shift = tick - latest_tick;  // 64-bit: a shift of 32 stays defined
+      const Tick shift = tick - latest_tick;
       const std::uint64_t moved = shift > kAckWindowTicks ? 0 : (std::uint64_t{bits} << shift) | (1ull << (shift - 1));
       return AckWindow{tick, static_cast<std::uint32_t>(moved)};
     }
-    const std::uint32_t age = latest_tick - tick;
+    const Tick age = latest_tick - tick;
     if (age == 0 || age > kAckWindowTicks) return *this;
     return AckWindow{latest_tick, bits | (1u << (age - 1))};
   }
@@ -38,10 +40,10 @@ struct AckWindow {
 };
 
 // The window of a set of complete ticks in any order; nullopt when the set is empty.
-inline std::optional<AckWindow> ack_window(std::span<const std::uint32_t> complete_ticks) {
+inline std::optional<AckWindow> ack_window(std::span<const Tick> complete_ticks) {
   if (complete_ticks.empty()) return std::nullopt;
   AckWindow window{complete_ticks.front(), 0};
-  for (std::uint32_t tick : complete_ticks) window = window.with(tick);
+  for (Tick tick : complete_ticks) window = window.with(tick);
   return window;
 }
 

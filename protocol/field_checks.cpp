@@ -172,25 +172,10 @@ Problem check(const wire::UdpReady& m, const wire::Message&, std::size_t, wire::
   return session(m.session_id(), "UdpReady.session_id");
 }
 
-Problem check(const wire::FrameChunk& m, const wire::Message&, std::size_t, wire::Transport) {
-  if (!find_profile(m.profile_id())) return fail(Reason::unknown_profile, "FrameChunk.profile_id", "an id in protocol/profile.hpp");
-  if (m.count() < 1 || m.count() > kMaxChunksPerFrame) return fail(Reason::bad_chunk_index, "FrameChunk.count", "in [1, 4096]");
-  if (m.index() >= m.count()) return fail(Reason::bad_chunk_index, "FrameChunk.index", "index < count");
-  if (m.key() && m.baseline() != m.tick()) return fail(Reason::bad_sequence, "FrameChunk.baseline", "== tick for a keyframe");
-  if (!m.key() && m.baseline() >= m.tick()) return fail(Reason::bad_sequence, "FrameChunk.baseline", "< tick for a delta frame");
-  if (m.tick() - m.baseline() > kMaxBaselineGap) return fail(Reason::bad_sequence, "FrameChunk.baseline", "tick - baseline <= 32");
-  return kOk;
-}
-
-Problem check(const wire::FrameBundle& m, const wire::Message& message, std::size_t size, wire::Transport transport) {
-  const auto* chunks = m.chunks();
-  if (!chunks) return fail(Reason::missing_field, "FrameBundle.chunks", "present");
-  if (chunks->size() < 1 || chunks->size() > kMaxBundleChunks)
-    return fail(Reason::out_of_range, "FrameBundle.chunks", "1..8 chunks");
-  for (const wire::FrameChunk* chunk : *chunks) {
-    if (!chunk) return fail(Reason::missing_field, "FrameBundle.chunks", "no null entries");
-    if (auto p = check(*chunk, message, size, transport)) return p;
-  }
+// The block's own structure is checked where it is parsed (decode_frame_block); here only that
+// there is one.
+Problem check(const wire::FrameData& m, const wire::Message&, std::size_t, wire::Transport) {
+  if (!m.frames() || m.frames()->size() == 0) return fail(Reason::missing_field, "FrameData.frames", "a non-empty block");
   return kOk;
 }
 
@@ -264,7 +249,9 @@ Problem check_body(const wire::Message& message, std::size_t size, wire::Transpo
     case wire::Body::Welcome: return check_as<wire::Welcome>(message, size, transport);
     case wire::Body::UdpHello: return check_as<wire::UdpHello>(message, size, transport);
     case wire::Body::UdpReady: return check_as<wire::UdpReady>(message, size, transport);
-    case wire::Body::FrameChunk: return check_as<wire::FrameChunk>(message, size, transport);
+    case wire::Body::FrameChunk:
+    case wire::Body::FrameBundle:
+      return fail(Reason::unexpected_message, "Message.body_type", "not FrameChunk or FrameBundle (version 1 only)");
     case wire::Body::Ack: return check_as<wire::Ack>(message, size, transport);
     case wire::Body::KeyframeRequest: return check_as<wire::KeyframeRequest>(message, size, transport);
     case wire::Body::SetTransport: return check_as<wire::SetTransport>(message, size, transport);
@@ -274,7 +261,7 @@ Problem check_body(const wire::Message& message, std::size_t size, wire::Transpo
     case wire::Body::Bye: return check_as<wire::Bye>(message, size, transport);
     case wire::Body::Ping: return check_as<wire::Ping>(message, size, transport);
     case wire::Body::Pong: return check_as<wire::Pong>(message, size, transport);
-    case wire::Body::FrameBundle: return check_as<wire::FrameBundle>(message, size, transport);
+    case wire::Body::FrameData: return check_as<wire::FrameData>(message, size, transport);
     case wire::Body::NONE: break;
   }
   return fail(Reason::unknown_message_type, "Message.body_type", "a type defined in ocean.fbs");

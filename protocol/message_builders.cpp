@@ -97,7 +97,8 @@ Bytes encode(const Welcome& m) {
   b.add_scene(scene);
   b.add_offered_profiles(offered);
   b.add_epoch_unix_ms(m.epoch_unix_ms);
-  b.add_current_tick(m.current_tick);
+  b.add_current_tick64(m.current_tick);
+  b.add_scene_serial(m.scene_serial);
   b.add_tick_period_s(m.tick_period_s);
   b.add_udp_port(m.udp_port);
   b.add_udp_cookie(cookie);
@@ -132,58 +133,12 @@ Bytes encode(const UdpReady& m) {
 }
 
 
-namespace {
-
-flatbuffers::Offset<wire::FrameChunk> add_chunk(FlatBufferBuilder& fbb, const FrameHeader& frame, std::uint16_t index,
-                                                std::uint16_t count, std::span<const std::uint8_t> payload) {
-  const auto bytes = fbb.CreateVector(payload.data(), payload.size());
-  wire::FrameChunkBuilder b(fbb);
-  b.add_tick(frame.tick);
-  b.add_baseline(frame.baseline);
-  b.add_key(frame.key);
-  b.add_profile_id(frame.profile_id);
-  b.add_index(index);
-  b.add_count(count);
-  b.add_payload(bytes);
-  return b.Finish();
-}
-
-}  // namespace
-
-Bytes encode(const FrameChunk& m) {
-  FlatBufferBuilder fbb(m.payload.size() + kChunkOverheadBytes);
-  return finish(fbb, wire::Body::FrameChunk, add_chunk(fbb, m.frame, m.index, m.count, m.payload));
-}
-
-Bytes encode(const FrameBundle& m) {
-  std::size_t size = 64;
-  for (const FrameChunk& c : m.chunks) size += c.payload.size() + kChunkOverheadBytes;
-  FlatBufferBuilder fbb(size);
-  std::vector<flatbuffers::Offset<wire::FrameChunk>> chunks;
-  for (const FrameChunk& c : m.chunks) chunks.push_back(add_chunk(fbb, c.frame, c.index, c.count, c.payload));
-  const auto vector = fbb.CreateVector(chunks);
-  wire::FrameBundleBuilder b(fbb);
-  b.add_chunks(vector);
-  return finish(fbb, wire::Body::FrameBundle, b.Finish());
-}
-
-Bytes encode_bundle(std::span<const std::span<const std::uint8_t>> chunk_messages) {
-  std::size_t size = 64;
-  for (const auto& bytes : chunk_messages) size += bytes.size();
-  FlatBufferBuilder fbb(size);
-  std::vector<flatbuffers::Offset<wire::FrameChunk>> chunks;
-  for (const auto& bytes : chunk_messages) {
-    const wire::FrameChunk* c = wire::GetSizePrefixedMessage(bytes.data())->body_as_FrameChunk();
-    if (!c) throw std::invalid_argument("encode_bundle: a message that is not a FrameChunk");
-    const auto* payload = c->payload();
-    chunks.push_back(add_chunk(fbb, FrameHeader{c->tick(), c->baseline(), c->key(), c->profile_id()}, c->index(), c->count(),
-                               payload ? std::span<const std::uint8_t>(payload->data(), payload->size())
-                                       : std::span<const std::uint8_t>()));
-  }
-  const auto vector = fbb.CreateVector(chunks);
-  wire::FrameBundleBuilder b(fbb);
-  b.add_chunks(vector);
-  return finish(fbb, wire::Body::FrameBundle, b.Finish());
+Bytes encode(const FrameData& m) {
+  FlatBufferBuilder fbb(m.frames.size() + 64);
+  const auto frames = fbb.CreateVector(m.frames);  // required: written even when empty
+  wire::FrameDataBuilder b(fbb);
+  b.add_frames(frames);
+  return finish(fbb, wire::Body::FrameData, b.Finish());
 }
 
 Bytes encode(const Ack& m) {
@@ -192,7 +147,7 @@ Bytes encode(const Ack& m) {
   wire::AckBuilder b(fbb);
   b.add_session_id(m.session_id);
   b.add_cookie(cookie);
-  b.add_latest_tick(m.latest_tick);
+  b.add_latest_tick64(m.latest_tick);
   b.add_ack_bits(m.ack_bits);
   return finish(fbb, wire::Body::Ack, b.Finish());
 }
@@ -233,7 +188,8 @@ Bytes encode(const SceneUpdate& m) {
   const auto scene = scene_of(fbb, m.scene);
   wire::SceneUpdateBuilder b(fbb);
   b.add_request_id(m.request_id);
-  b.add_effective_tick(m.effective_tick);
+  b.add_effective_tick64(m.effective_tick);
+  b.add_serial(m.serial);
   b.add_scene(scene);
   return finish(fbb, wire::Body::SceneUpdate, b.Finish());
 }
@@ -272,33 +228,13 @@ Bytes encode(const Pong& m) {
   wire::PongBuilder b(fbb);
   b.add_seq(m.seq);
   b.add_client_time_us(m.client_time_us);
-  b.add_server_tick(m.server_tick);
+  b.add_server_tick64(m.server_tick);
   b.add_server_time_unix_ms(m.server_time_unix_ms);
   return finish(fbb, wire::Body::Pong, b.Finish());
 }
 
 Bytes encode(const AnyMessage& message) {
   return std::visit([](const auto& m) { return encode(m); }, message);
-}
-
-std::vector<Bytes> split_frame(const FrameHeader& header, std::span<const std::uint8_t> payload,
-                               std::size_t max_payload) {
-  if (max_payload == 0) return {};
-  const std::size_t count = std::max<std::size_t>(1, (payload.size() + max_payload - 1) / max_payload);
-  if (count > kMaxChunksPerFrame) return {};
-  std::vector<Bytes> chunks;
-  chunks.reserve(count);
-  FrameChunk chunk;
-  chunk.frame = header;
-  chunk.count = static_cast<std::uint16_t>(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t begin = i * max_payload;
-    const std::size_t end = std::min(payload.size(), begin + max_payload);
-    chunk.index = static_cast<std::uint16_t>(i);
-    chunk.payload.assign(payload.begin() + begin, payload.begin() + end);
-    chunks.push_back(encode(chunk));
-  }
-  return chunks;
 }
 
 bool fits_datagram(std::span<const std::uint8_t> bytes) { return bytes.size() <= kMaxDatagram; }

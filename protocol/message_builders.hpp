@@ -15,7 +15,6 @@ Bytes encode(const Hello& message);
 Bytes encode(const Welcome& message);
 Bytes encode(const UdpHello& message);  // padded to kUdpHelloMinBytes
 Bytes encode(const UdpReady& message);
-Bytes encode(const FrameChunk& message);
 Bytes encode(const Ack& message);
 Bytes encode(const KeyframeRequest& message);
 Bytes encode(const SetTransport& message);
@@ -25,18 +24,8 @@ Bytes encode(const Error& message);
 Bytes encode(const Bye& message);
 Bytes encode(const Ping& message);
 Bytes encode(const Pong& message);
-Bytes encode(const FrameBundle& message);
-// A FrameBundle of FrameChunk messages already encoded (each whole, as encode() made it), oldest
-// first: the server re-sends the exact chunks it sent before without decoding them to structs.
-Bytes encode_bundle(std::span<const std::span<const std::uint8_t>> chunk_messages);
+Bytes encode(const FrameData& message);  // frames: a block of frame_records.hpp
 Bytes encode(const AnyMessage& message);
-
-// One frame of opaque bytes cut into FrameChunk messages of at most max_payload bytes each
-// (kMaxChunkPayloadUdp for UDP, max_chunk_payload(max_message_bytes) for TCP). A codec that
-// makes its own chunks encodes each as a FrameChunk instead. An empty payload gives one empty
-// chunk; no chunks at all if it would take more than kMaxChunksPerFrame.
-std::vector<Bytes> split_frame(const FrameHeader& header, std::span<const std::uint8_t> payload,
-                               std::size_t max_payload);
 
 // True when bytes may be sent as one UDP datagram (size <= kMaxDatagram); check before sending.
 bool fits_datagram(std::span<const std::uint8_t> bytes);

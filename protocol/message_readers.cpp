@@ -65,11 +65,12 @@ Welcome read(const wire::Welcome& m) {
   if (m.scene()) out.scene = read(*m.scene());
   out.offered_profiles = bytes_of(m.offered_profiles());
   out.epoch_unix_ms = m.epoch_unix_ms();
-  out.current_tick = m.current_tick();
+  out.current_tick = m.current_tick64();
   out.tick_period_s = m.tick_period_s();
   out.udp_port = m.udp_port();
   out.udp_cookie = bytes_of(m.udp_cookie());
   out.max_message_bytes = m.max_message_bytes();
+  out.scene_serial = m.scene_serial();
   return out;
 }
 
@@ -77,25 +78,10 @@ UdpHello read(const wire::UdpHello& m) { return UdpHello{m.session_id(), bytes_o
 
 UdpReady read(const wire::UdpReady& m) { return UdpReady{m.session_id()}; }
 
-FrameChunk read(const wire::FrameChunk& m) {
-  FrameChunk out;
-  out.frame = FrameHeader{m.tick(), m.baseline(), m.key(), m.profile_id()};
-  out.index = m.index();
-  out.count = m.count();
-  out.payload = bytes_of(m.payload());
-  return out;
-}
-
-FrameBundle read(const wire::FrameBundle& m) {
-  FrameBundle out;
-  if (const auto* chunks = m.chunks())
-    for (const wire::FrameChunk* c : *chunks)
-      if (c) out.chunks.push_back(read(*c));
-  return out;
-}
+FrameData read(const wire::FrameData& m) { return FrameData{bytes_of(m.frames())}; }
 
 Ack read(const wire::Ack& m) {
-  return Ack{m.session_id(), bytes_of(m.cookie()), m.latest_tick(), m.ack_bits()};
+  return Ack{m.session_id(), bytes_of(m.cookie()), m.latest_tick64(), m.ack_bits()};
 }
 
 KeyframeRequest read(const wire::KeyframeRequest& m) {
@@ -119,8 +105,9 @@ ParamChange read(const wire::ParamChange& m) {
 SceneUpdate read(const wire::SceneUpdate& m) {
   SceneUpdate out;
   out.request_id = m.request_id();
-  out.effective_tick = m.effective_tick();
+  out.effective_tick = m.effective_tick64();
   if (m.scene()) out.scene = read(*m.scene());
+  out.serial = m.serial();
   return out;
 }
 
@@ -133,7 +120,7 @@ Ping read(const wire::Ping& m) {
 }
 
 Pong read(const wire::Pong& m) {
-  return Pong{m.seq(), m.client_time_us(), m.server_tick(), m.server_time_unix_ms()};
+  return Pong{m.seq(), m.client_time_us(), m.server_tick64(), m.server_time_unix_ms()};
 }
 
 AnyMessage decode(const wire::Message& message) {
@@ -142,7 +129,6 @@ AnyMessage decode(const wire::Message& message) {
     case wire::Body::Welcome: return read(*message.body_as_Welcome());
     case wire::Body::UdpHello: return read(*message.body_as_UdpHello());
     case wire::Body::UdpReady: return read(*message.body_as_UdpReady());
-    case wire::Body::FrameChunk: return read(*message.body_as_FrameChunk());
     case wire::Body::Ack: return read(*message.body_as_Ack());
     case wire::Body::KeyframeRequest: return read(*message.body_as_KeyframeRequest());
     case wire::Body::SetTransport: return read(*message.body_as_SetTransport());
@@ -152,7 +138,9 @@ AnyMessage decode(const wire::Message& message) {
     case wire::Body::Bye: return read(*message.body_as_Bye());
     case wire::Body::Ping: return read(*message.body_as_Ping());
     case wire::Body::Pong: return read(*message.body_as_Pong());
-    case wire::Body::FrameBundle: return read(*message.body_as_FrameBundle());
+    case wire::Body::FrameData: return read(*message.body_as_FrameData());
+    case wire::Body::FrameChunk:   // version 1 only: verification refuses them
+    case wire::Body::FrameBundle:
     case wire::Body::NONE: break;
   }
   // verify_message() rejects NONE and unknown types, so this is a caller bug.

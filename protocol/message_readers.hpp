@@ -1,6 +1,6 @@
 // decode(): a verified wire::Message -> its plain value (message_types.hpp). Only call these on
 // a message that verify_message() accepted; they copy, so the value outlives the bytes.
-// Hot paths may read the verified wire::Message directly instead (e.g. FrameChunk payloads).
+// Hot paths may read the verified wire::Message directly instead (e.g. FrameData blocks).
 #pragma once
 
 #include "message_types.hpp"
@@ -15,7 +15,6 @@ Hello read(const wire::Hello& message);
 Welcome read(const wire::Welcome& message);
 UdpHello read(const wire::UdpHello& message);
 UdpReady read(const wire::UdpReady& message);
-FrameChunk read(const wire::FrameChunk& message);
 Ack read(const wire::Ack& message);
 KeyframeRequest read(const wire::KeyframeRequest& message);
 SetTransport read(const wire::SetTransport& message);
@@ -25,6 +24,6 @@ Error read(const wire::Error& message);
 Bye read(const wire::Bye& message);
 Ping read(const wire::Ping& message);
 Pong read(const wire::Pong& message);
-FrameBundle read(const wire::FrameBundle& message);
+FrameData read(const wire::FrameData& message);
 
 }  // namespace ocean::protocol

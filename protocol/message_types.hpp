@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "tick.hpp"
 #include "ocean_generated.h"
 #include "wire_reason.hpp"
 
@@ -66,11 +67,12 @@ struct Welcome {
   SceneParams scene;
   std::vector<std::uint8_t> offered_profiles;
   std::int64_t epoch_unix_ms = 0;
-  std::uint32_t current_tick = 0;
+  Tick current_tick = 0;
   double tick_period_s = 0.0;
   std::uint16_t udp_port = 0;
   Bytes udp_cookie;
   std::uint32_t max_message_bytes = 0;
+  std::uint32_t scene_serial = 0;  // the serial of `scene`; chunks name it mod 256
   bool operator==(const Welcome&) const = default;
 };
 
@@ -85,33 +87,16 @@ struct UdpReady {
   bool operator==(const UdpReady&) const = default;
 };
 
-// Everything of a FrameChunk but its payload: what split_frame() stamps on every chunk.
-struct FrameHeader {
-  std::uint32_t tick = 0;
-  std::uint32_t baseline = 0;  // == tick for a keyframe
-  bool key = false;
-  std::uint8_t profile_id = 0;
-  bool operator==(const FrameHeader&) const = default;
-};
-
-struct FrameChunk {
-  FrameHeader frame;
-  std::uint16_t index = 0;
-  std::uint16_t count = 1;
-  Bytes payload;
-  bool operator==(const FrameChunk&) const = default;
-};
-
-// Frames in one datagram, oldest first (UDP only; PROTOCOL.md 6.4).
-struct FrameBundle {
-  std::vector<FrameChunk> chunks;
-  bool operator==(const FrameBundle&) const = default;
+// Frame records for TCP (version 2): the block of frame_records.hpp.
+struct FrameData {
+  Bytes frames;
+  bool operator==(const FrameData&) const = default;
 };
 
 struct Ack {
   std::uint64_t session_id = 0;
   Bytes cookie;
-  std::uint32_t latest_tick = 0;
+  Tick latest_tick = 0;
   std::uint32_t ack_bits = 0;  // bit i = tick latest_tick - 1 - i received
   bool operator==(const Ack&) const = default;
 };
@@ -141,8 +126,9 @@ struct ParamChange {
 
 struct SceneUpdate {
   std::uint32_t request_id = 0;
-  std::uint32_t effective_tick = 0;
+  Tick effective_tick = 0;
   SceneParams scene;
+  std::uint32_t serial = 0;  // one more than the previous scene's; chunks name it mod 256
   bool operator==(const SceneUpdate&) const = default;
 };
 
@@ -169,14 +155,14 @@ struct Ping {
 struct Pong {
   std::uint32_t seq = 0;
   std::uint64_t client_time_us = 0;
-  std::uint32_t server_tick = 0;
+  Tick server_tick = 0;
   std::int64_t server_time_unix_ms = 0;
   bool operator==(const Pong&) const = default;
 };
 
 // Any one message, as decode() returns it.
-using AnyMessage = std::variant<Hello, Welcome, UdpHello, UdpReady, FrameChunk, Ack,
-                                KeyframeRequest, SetTransport, ParamChange, SceneUpdate, Error, Bye,
-                                Ping, Pong, FrameBundle>;
+// (FrameChunk and FrameBundle are version 1 only: a version-2 peer refuses them.)
+using AnyMessage = std::variant<Hello, Welcome, UdpHello, UdpReady, Ack, KeyframeRequest, SetTransport,
+                                ParamChange, SceneUpdate, Error, Bye, Ping, Pong, FrameData>;
 
 }  // namespace ocean::protocol

@@ -50,14 +50,15 @@ bool may_send(Sender sender, wire::Body type) {
       return sender == Sender::client;
     case wire::Body::Welcome:
     case wire::Body::UdpReady:
-    case wire::Body::FrameChunk:
-    case wire::Body::FrameBundle:
+    case wire::Body::FrameData:
     case wire::Body::SceneUpdate:
     case wire::Body::Pong:
       return sender == Sender::server;
     case wire::Body::Error:
     case wire::Body::Bye:
       return true;
+    case wire::Body::FrameChunk:   // version 1 only
+    case wire::Body::FrameBundle:  // version 1 only
     case wire::Body::NONE:
       break;
   }
@@ -68,9 +69,7 @@ bool may_travel(wire::Transport transport, wire::Body type) {
   switch (type) {
     case wire::Body::UdpHello:
     case wire::Body::UdpReady:
-    case wire::Body::FrameBundle:
       return transport == wire::Transport::udp;
-    case wire::Body::FrameChunk:
     case wire::Body::Ack:
     case wire::Body::KeyframeRequest:
     case wire::Body::Ping:
@@ -92,7 +91,7 @@ Verified verify_message(std::span<const std::uint8_t> bytes, const VerifyOptions
 
   const wire::Message* message = wire::GetSizePrefixedMessage(bytes.data());
   if (message->version() != kProtocolVersion)
-    return reject(Reason::unknown_version, "Message.version", "1");
+    return reject(Reason::unknown_version, "Message.version", "2");
   const wire::Body type = message->body_type();
   if (type == wire::Body::NONE || static_cast<std::uint8_t>(type) > static_cast<std::uint8_t>(wire::Body::MAX))
     return reject(Reason::unknown_message_type, "Message.body_type", "a type defined in ocean.fbs");

@@ -19,8 +19,9 @@ inline constexpr std::size_t kMaxMaxMessageBytes = 4 * 1024 * 1024;
 inline constexpr std::size_t kSizePrefixBytes = 4;
 inline constexpr std::size_t kMinMessageBytes = 12;
 
-// Bytes a FrameChunk message needs besides its payload (measured worst case 87, with the widest
-// field values; tests/protocol checks it), so payload <= max message - this always fits.
+// Bytes a frame record needs besides its payload, in a frames datagram (kind byte, newest tick,
+// record header: at most 37) or a FrameData message (FlatBuffers wrapper too: at most 88, tests/protocol
+// checks both), so payload <= max message - this always fits.
 inline constexpr std::size_t kChunkOverheadBytes = 96;
 inline constexpr std::size_t kMaxChunkPayloadUdp = kMaxDatagram - kChunkOverheadBytes;
 constexpr std::size_t max_chunk_payload(std::size_t max_message_bytes) {
@@ -29,11 +30,14 @@ constexpr std::size_t max_chunk_payload(std::size_t max_message_bytes) {
 
 // Frame sequencing.
 inline constexpr std::uint16_t kMaxChunksPerFrame = 4096;
-// Frames in one FrameBundle datagram: the newest plus up to 7 unacknowledged earlier ones.
+// Records in one frames datagram from ocean-server: the newest plus up to 7 unacknowledged copies.
 inline constexpr std::size_t kMaxBundleChunks = 8;
 // tick - baseline of a delta frame, in ticks: the client keeps the frames of its 32-tick ack
-// window, so a baseline at most this old is one it still holds (PROTOCOL.md section 7).
+// window, so a baseline at most this old is one it still holds (PROTOCOL.md section 7) - except
+// its newest complete frame (a key that arrived late on a thin link), which it keeps however old.
 inline constexpr std::uint32_t kMaxBaselineGap = 32;
+// The largest tick - baseline a record may carry (the decoder advances that many steps).
+inline constexpr std::uint32_t kMaxFrameLag = 1024;
 
 // UdpHello is padded to this size so the server's answer is never larger (no amplification).
 inline constexpr std::size_t kUdpHelloMinBytes = 256;

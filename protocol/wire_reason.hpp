@@ -28,10 +28,9 @@ enum class Reason : std::uint8_t {
   // --- meaning of the fields
   unknown_profile = 12,   // a profile id not in protocol/profile.hpp (0 allowed only in Hello)
   bad_dimensions = 13,    // sizes disagree: grid vs profile, grid vs scene, a vector's length
-  bad_sequence = 14,      // tick/baseline inconsistent: baseline > tick, key with baseline != tick,
-                          // delta with baseline == tick, or tick - baseline > kMaxBaselineGap
-  bad_chunk_index = 15,   // count 0 or > kMaxChunksPerFrame, index >= count, or a count that
-                          // disagrees with an earlier chunk of the same frame
+  bad_sequence = 14,      // a frame record's tick offset beyond the block's newest tick, or its
+                          // lag beyond kMaxFrameLag or its own tick
+  bad_chunk_index = 15,   // a frame record's count 0 or > kMaxChunksPerFrame, or index >= count
   non_finite_value = 16,  // a float or double is NaN or infinite
   out_of_range = 17,      // a finite number outside its documented range (PROTOCOL.md names each)
   bad_enum = 18,          // an enum value this version does not define
@@ -39,7 +38,8 @@ enum class Reason : std::uint8_t {
   bad_cookie = 20,        // UDP cookie missing, of a length outside 8..64, or not the session's
   bad_session = 21,       // session id 0 or not the receiver's session
   unpadded_udp_hello = 22,  // UdpHello smaller than kUdpHelloMinBytes (256): answering could amplify
-  stale_tick = 23,        // a chunk of a frame the receiver already completed or dropped as too old
+  stale_tick = 23,        // version 1: a chunk of a frame already completed or too old (the codec's
+                          // own stale_tick refusal covers this in version 2)
   // --- refusals a server sends in Error; verification never produces these
   profile_unavailable = 24,  // the wanted profile is valid but not offered by this server
   server_full = 25,          // no room for another session

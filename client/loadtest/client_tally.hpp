@@ -2,6 +2,8 @@
 // stalls - and the frames its stream schedule owed it, so lost = expected - received. Pure.
 #pragma once
 
+#include "tick.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <set>
@@ -18,7 +20,7 @@ struct FrameOutcome {
 class ClientTally {
  public:
   // frame_interval_ticks: ticks between the stream's frames (tick rate / stream rate).
-  ClientTally(double tick_period_s, std::uint32_t frame_interval_ticks)
+  ClientTally(double tick_period_s, Tick frame_interval_ticks)
       : clock_(tick_period_s, 64), period_(tick_period_s), interval_(frame_interval_ticks ? frame_interval_ticks : 1) {}
 
   client::ArrivalClock& clock() { return clock_; }
@@ -28,7 +30,7 @@ class ClientTally {
   // Records a frame's verdict; false (not counted) for a tick already recorded, before the
   // first one, or more than kWindowTicks older than the newest. Frames may come out of order (a
   // late copy of an older frame): it counts, and is on time if it came before its deadline.
-  bool record(std::uint32_t tick, FrameOutcome outcome, double error_m) {
+  bool record(Tick tick, FrameOutcome outcome, double error_m) {
     if (first_tick_ && tick < *first_tick_) return false;
     if (last_tick_ && tick + kWindowTicks < *last_tick_) return false;
     if (!seen_.insert(tick).second) return false;
@@ -52,7 +54,7 @@ class ClientTally {
   static constexpr std::uint32_t kWindowTicks = 64;
 
   // The stream's frame ticks in [first frame (or start_tick when none came), end_tick].
-  std::uint64_t expected(std::uint32_t start_tick, std::uint32_t end_tick) const {
+  std::uint64_t expected(Tick start_tick, Tick end_tick) const {
     const std::uint32_t from = first_tick_.value_or(start_tick);
     if (end_tick < from) return 0;
     const std::uint64_t first = (static_cast<std::uint64_t>(from) + interval_ - 1) / interval_;
@@ -66,13 +68,13 @@ class ClientTally {
   std::uint64_t bad() const { return bad_; }
   std::uint64_t stalls() const { return stalls_; }
   double max_error_m() const { return max_error_m_; }
-  std::optional<std::uint32_t> first_tick() const { return first_tick_; }
+  std::optional<Tick> first_tick() const { return first_tick_; }
 
  private:
   client::ArrivalClock clock_;
   double period_;
   std::uint32_t interval_;
-  std::optional<std::uint32_t> first_tick_, last_tick_, last_on_time_;
+  std::optional<Tick> first_tick_, last_tick_, last_on_time_;
   std::set<std::uint32_t> seen_;  // recorded ticks within kWindowTicks of the newest
   std::uint64_t received_ = 0, ok_ = 0, late_ = 0, bad_ = 0, stalls_ = 0;
   double max_error_m_ = 0.0;

@@ -30,7 +30,7 @@ bool within_bounds(const FrameError& error, const ErrorBounds& bounds) {
   return bounds.slope <= 0.0 || error.slope <= bounds.slope + kTruthSlack;
 }
 
-bool arrived_on_time(double arrival_s, std::uint32_t tick, double clock_offset_s, double tick_period_s,
+bool arrived_on_time(double arrival_s, Tick tick, double clock_offset_s, double tick_period_s,
                      double interpolation_delay_s) {
   const double render_time = clock_offset_s + static_cast<double>(tick) * tick_period_s + interpolation_delay_s;
   return arrival_s <= render_time;

@@ -2,6 +2,8 @@
 // profile's quantization bound of the ground truth, and did it arrive before its render time.
 #pragma once
 
+#include "tick.hpp"
+
 #include <cstdint>
 #include <span>
 
@@ -32,7 +34,7 @@ bool within_bounds(const FrameError& error, const ErrorBounds& bounds);
 // On time when the frame arrived by its render time: the client's estimate of when tick 0 arrives
 // (ArrivalClock offset: server clock plus the fastest one-way delay), plus tick * period, plus
 // the interpolation delay the renderer stays behind.
-bool arrived_on_time(double arrival_s, std::uint32_t tick, double clock_offset_s, double tick_period_s,
+bool arrived_on_time(double arrival_s, Tick tick, double clock_offset_s, double tick_period_s,
                      double interpolation_delay_s);
 
 }  // namespace ocean::loadtest

@@ -32,7 +32,7 @@ GroundTruth::GroundTruth(int tick_rate_hz, std::size_t cache_frames)
   if (tick_rate_hz < 1) throw std::invalid_argument("GroundTruth: tick_rate_hz must be >= 1, got " + std::to_string(tick_rate_hz));
 }
 
-void GroundTruth::set_scene(std::uint32_t effective_tick, const protocol::SceneParams& scene) {
+void GroundTruth::set_scene(Tick effective_tick, const protocol::SceneParams& scene) {
   // Already in force at that tick (the usual case: every client reports the same Welcome).
   if (const SceneEntry* current = scene_for(effective_tick); current && current->wire == scene) return;
   auto it = std::find_if(scenes_.begin(), scenes_.end(), [&](const SceneEntry& e) { return e.effective_tick >= effective_tick; });
@@ -47,7 +47,7 @@ void GroundTruth::set_scene(std::uint32_t effective_tick, const protocol::SceneP
     c = (c->first >> 16) >= effective_tick ? cache_.erase(c) : std::next(c);
 }
 
-GroundTruth::SceneEntry* GroundTruth::scene_for(std::uint32_t tick) {
+GroundTruth::SceneEntry* GroundTruth::scene_for(Tick tick) {
   SceneEntry* found = nullptr;
   for (SceneEntry& e : scenes_)
     if (e.effective_tick <= tick) found = &e;
@@ -56,12 +56,12 @@ GroundTruth::SceneEntry* GroundTruth::scene_for(std::uint32_t tick) {
   return found;
 }
 
-double GroundTruth::time_of(std::uint32_t tick) const {
-  const std::uint32_t seconds = tick / static_cast<std::uint32_t>(rate_hz_);
+double GroundTruth::time_of(Tick tick) const {
+  const Tick seconds = tick / static_cast<Tick>(rate_hz_);
   return static_cast<double>(seconds) + static_cast<double>(tick - seconds * rate_hz_) / rate_hz_;
 }
 
-const sim::Frame& GroundTruth::at(std::uint32_t tick, int grid) {
+const sim::Frame& GroundTruth::at(Tick tick, int grid) {
   const std::uint64_t key = std::uint64_t{tick} << 16 | static_cast<std::uint16_t>(grid);
   if (auto it = cache_.find(key); it != cache_.end()) return it->second;
   SceneEntry* scene = scene_for(tick);

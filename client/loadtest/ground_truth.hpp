@@ -3,6 +3,8 @@
 // sim the server runs, and shared by every simulated client.
 #pragma once
 
+#include "tick.hpp"
+
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -23,23 +25,23 @@ class GroundTruth {
 
   // The scene in force from effective_tick on. Re-announcing a known scene changes nothing, so
   // every client may report the Welcome and SceneUpdates it sees.
-  void set_scene(std::uint32_t effective_tick, const protocol::SceneParams& scene);
+  void set_scene(Tick effective_tick, const protocol::SceneParams& scene);
 
   // The grid x grid band (heights and slopes) at tick; valid until the next call.
-  const sim::Frame& at(std::uint32_t tick, int grid);
+  const sim::Frame& at(Tick tick, int grid);
 
   // Server time of a tick as the server computes it (whole seconds and the fraction apart).
-  double time_of(std::uint32_t tick) const;
+  double time_of(Tick tick) const;
   std::uint64_t evaluations() const { return evaluations_; }
   std::size_t scenes() const { return scenes_.size(); }
 
  private:
   struct SceneEntry {
-    std::uint32_t effective_tick;
+    Tick effective_tick;
     protocol::SceneParams wire;
     std::unique_ptr<sim::Ocean> ocean;
   };
-  SceneEntry* scene_for(std::uint32_t tick);
+  SceneEntry* scene_for(Tick tick);
 
   int rate_hz_;
   std::size_t cache_frames_;

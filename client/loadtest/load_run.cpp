@@ -93,7 +93,7 @@ struct SessionCounts {
 struct StreamFacts {
   double tick_period_s = 0.0;
   int tick_rate_hz = 0;
-  std::uint32_t interval_ticks = 1;
+  Tick interval_ticks = 1;
   int grid = 0;
   ErrorBounds bounds{0.0, 0.0};
   double epoch_s = 0.0;  // unix seconds of tick 0
@@ -103,8 +103,7 @@ struct StreamFacts {
 struct SimClient {
   std::shared_ptr<client::ClientConnection> connection;
   std::optional<ClientTally> tally;
-  std::optional<std::uint32_t> welcome_tick;
-  std::uint32_t scene_tick_seen = 0;
+  std::optional<Tick> welcome_tick;
   std::uint64_t closed_bytes = 0, closed_keyframes = 0;
   SessionCounts closed;
   bool session_ended = false;  // the connection keeps its last session after it ended: counted in closed_*
@@ -165,9 +164,13 @@ class Driver {
     if (o_.shared_decode) config.session.decode_memo = [this](const codec::StreamConfig& c) { return memo_for(c); };
     auto connection = client::ClientConnection::create(
         io_, config,
-        [this, i](const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) { on_frame(i, frame, tick, arrival_s); },
+        [this, i](const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) { on_frame(i, frame, tick, arrival_s); },
         make_links(o_.link, o_.seed + i));
     connection->set_on_welcome([this, i](const protocol::Welcome& w) { on_welcome(i, w); });
+    // Scenes arrive ahead of their tick; the truth switches at the same tick as the codec.
+    connection->set_on_scene_update([this](const protocol::SceneUpdate& u) {
+      if (truth_) truth_->set_scene(u.effective_tick, u.scene);
+    });
     connection->set_on_session_end([this, i](const client::ClientSession& s, const std::string&) {
       clients_[i].session_ended = true;
       clients_[i].closed_bytes += s.stats().tcp.bytes_in + s.stats().udp.bytes_in;
@@ -186,7 +189,7 @@ class Driver {
   }
 
   // A frame shown by many clients (same shared_id) is compared with the truth once.
-  FrameError checked_error(const codec::ReconstructedFrame& frame, std::uint32_t tick) {
+  FrameError checked_error(const codec::ReconstructedFrame& frame, Tick tick) {
     if (frame.shared_id != 0)
       if (const auto found = verdicts_.find(frame.shared_id); found != verdicts_.end()) return found->second;
     const sim::Frame& truth = truth_->at(tick, facts_.grid);
@@ -220,26 +223,21 @@ class Driver {
     c.session_ended = false;  // a new session of this connection
     if (!c.welcome_tick) c.welcome_tick = w.current_tick;
     if (!c.tally) c.tally.emplace(facts_.tick_period_s, facts_.interval_ticks);
-    c.scene_tick_seen = 0;
   }
 
-  std::uint32_t end_tick() const { return tick_at_unix(start_unix_ + o_.ramp_s + o_.duration_s - 1.0); }
+  Tick end_tick() const { return tick_at_unix(start_unix_ + o_.ramp_s + o_.duration_s - 1.0); }
 
-  std::uint32_t tick_at_unix(double unix_s) const {
+  Tick tick_at_unix(double unix_s) const {
     const double ticks = (unix_s - facts_.epoch_s) / facts_.tick_period_s;
-    return ticks <= 0 ? 0u : static_cast<std::uint32_t>(std::floor(ticks));
+    return ticks <= 0 ? 0u : static_cast<Tick>(std::floor(ticks));
   }
 
-  void on_frame(std::size_t i, const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
+  void on_frame(std::size_t i, const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
     SimClient& c = clients_[i];
     if (!truth_ || !c.tally || measuring_done_) return;
     // The schedule owes frames up to one second before the end; later ones may still be in flight.
     if (tick > end_tick()) return;
     const double now_unix = unix_now_s();
-    if (const client::ClientSession* s = c.connection->session(); s && s->scene_effective_tick() != c.scene_tick_seen) {
-      c.scene_tick_seen = s->scene_effective_tick();
-      truth_->set_scene(c.scene_tick_seen, s->scene());
-    }
     const FrameError error = checked_error(frame, tick);
     ClientTally& tally = *c.tally;
     tally.clock().observe(tick, arrival_s);
@@ -353,7 +351,7 @@ class Driver {
     if (server_cpu_start_ && server_cpu_end_ && wall > 0) s.server_cpu_pct = 100.0 * (*server_cpu_end_ - *server_cpu_start_) / wall;
     s.error_bound_m = facts_.bounds.height_m;
     s.interpolation_delay_ms = facts_.interpolation_delay_s * 1e3;
-    const std::uint32_t last_tick = truth_ ? end_tick() : 0;
+    const Tick last_tick = truth_ ? end_tick() : 0;
     double client_seconds = 0.0;
     for (std::size_t i = 0; i < clients_.size(); ++i) {
       const SimClient& c = clients_[i];
@@ -374,7 +372,7 @@ class Driver {
         if (k.connects > 1) s.reconnects += k.connects - 1;
       }
       if (!truth_) continue;
-      const std::uint32_t start_tick = c.welcome_tick.value_or(tick_at_unix(start_unix_ + started));
+      const Tick start_tick = c.welcome_tick.value_or(tick_at_unix(start_unix_ + started));
       ClientTally empty(facts_.tick_period_s, facts_.interval_ticks);
       const ClientTally& t = c.tally ? *c.tally : empty;
       const std::uint64_t expected = t.expected(start_tick, last_tick);
@@ -419,7 +417,7 @@ class Driver {
   int connected_at_end_ = 0;
   std::string record_path_, record_error_;
   std::optional<codec::NpyWriter> recorder_;
-  std::optional<std::uint32_t> recorded_tick_;  // client 0's file holds frames in tick order
+  std::optional<Tick> recorded_tick_;  // client 0's file holds frames in tick order
   std::vector<std::unique_ptr<codec::DecodeMemo>> memos_;
   std::map<std::uint64_t, FrameError> verdicts_;  // by ReconstructedFrame::shared_id
   std::uint64_t truth_checks_ = 0;

@@ -11,7 +11,7 @@ ArrivalClock::ArrivalClock(double tick_period_s, std::size_t window) : period_(t
   if (window == 0) throw std::invalid_argument("ArrivalClock: window must be >= 1 arrival");
 }
 
-void ArrivalClock::observe(std::uint32_t tick, double arrival_s) {
+void ArrivalClock::observe(Tick tick, double arrival_s) {
   offsets_[next_] = arrival_s - static_cast<double>(tick) * period_;
   next_ = (next_ + 1) % offsets_.size();
   filled_ = std::min(filled_ + 1, offsets_.size());

@@ -3,6 +3,8 @@
 // is the least-delayed frame, which rides out jitter (queueing only ever adds delay). Pure.
 #pragma once
 
+#include "tick.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -15,7 +17,7 @@ class ArrivalClock {
   // window: how many recent arrivals the minimum is taken over (>= 1).
   ArrivalClock(double tick_period_s, std::size_t window);
 
-  void observe(std::uint32_t tick, double arrival_s);
+  void observe(Tick tick, double arrival_s);
   // Client time of tick 0 (the server clock offset plus the fastest one-way delay); nullopt
   // before the first arrival.
   std::optional<double> offset_s() const { return offset_; }

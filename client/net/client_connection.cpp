@@ -93,7 +93,10 @@ ClientSessionEvents ClientConnection::session_events() {
     if (welcome.udp_port != 0 && config_.session.transport == wire::Transport::udp) open_udp(welcome);
     if (on_welcome_) on_welcome_(welcome);
   };
-  events.on_frame = [this](const codec::ReconstructedFrame& frame, std::uint32_t tick) {
+  events.on_scene_update = [this](const protocol::SceneUpdate& update) {
+    if (on_scene_update_) on_scene_update_(update);
+  };
+  events.on_frame = [this](const codec::ReconstructedFrame& frame, Tick tick) {
     backoff_s_ = config_.reconnect_min_s;  // this server works: the next failure retries quickly
     if (on_frame_) on_frame_(frame, tick, now_s());
   };

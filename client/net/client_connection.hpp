@@ -4,6 +4,8 @@
 // io_context and one thread.
 #pragma once
 
+#include "tick.hpp"
+
 #include <asio/io_context.hpp>
 #include <asio/ip/tcp.hpp>
 #include <asio/ip/udp.hpp>
@@ -55,7 +57,7 @@ struct ConnectionCounters {
 
 class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
  public:
-  using FrameCallback = std::function<void(const codec::ReconstructedFrame&, std::uint32_t tick, double arrival_s)>;
+  using FrameCallback = std::function<void(const codec::ReconstructedFrame&, Tick tick, double arrival_s)>;
   // Called when a session ends, before it is replaced, so its stats can be read.
   using SessionEndCallback = std::function<void(const ClientSession&, const std::string& why)>;
 
@@ -68,6 +70,10 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
 
   void set_on_session_end(SessionEndCallback callback) { on_session_end_ = std::move(callback); }
   void set_on_welcome(std::function<void(const protocol::Welcome&)> callback) { on_welcome_ = std::move(callback); }
+  // Every SceneUpdate, as it arrives (ahead of its effective tick).
+  void set_on_scene_update(std::function<void(const protocol::SceneUpdate&)> callback) {
+    on_scene_update_ = std::move(callback);
+  }
 
   // The current (or, between connections, the last) session; null before the first connect.
   const ClientSession* session() const { return session_.get(); }
@@ -111,6 +117,7 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
   ConnectionLinks links_;
   SessionEndCallback on_session_end_;
   std::function<void(const protocol::Welcome&)> on_welcome_;
+  std::function<void(const protocol::SceneUpdate&)> on_scene_update_;
 
   asio::ip::tcp::resolver resolver_;
   asio::ip::tcp::socket tcp_;

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "ack_window.hpp"
-#include "decoder_config.hpp"
+#include "stream_wire.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
 #include "stream_config.hpp"
@@ -73,8 +73,20 @@ void ClientSession::on_tcp_message(std::span<const std::uint8_t> bytes, double n
 void ClientSession::on_udp_datagram(std::span<const std::uint8_t> bytes, double now) {
   if (state_ != State::streaming) return;
   stats_.udp.bytes_in += bytes.size();
-  const protocol::Verified result =
-      protocol::verify_message(aligned(bytes), {protocol::Sender::server, wire::Transport::udp, protocol::kMaxDatagram});
+  // Server datagrams start with their kind (PROTOCOL.md 3): frame records, or a message.
+  if (bytes.empty() || bytes.size() > protocol::kMaxDatagram || bytes[0] > 1) {
+    count_rejection(bytes.empty() ? protocol::Reason::empty
+                    : bytes.size() > protocol::kMaxDatagram ? protocol::Reason::oversized
+                                                             : protocol::Reason::unknown_message_type);
+    ++stats_.udp.rejected;
+    return;
+  }
+  if (bytes[0] == static_cast<std::uint8_t>(protocol::DatagramKind::frames)) {
+    ++stats_.udp.messages_in;
+    return handle_frames(bytes.subspan(1), wire::Transport::udp, now);
+  }
+  const protocol::Verified result = protocol::verify_message(
+      aligned(bytes.subspan(1)), {protocol::Sender::server, wire::Transport::udp, protocol::kMaxDatagram});
   if (!result) return reject(result, wire::Transport::udp, now);
   ++stats_.udp.messages_in;
   last_rx_ = now;
@@ -111,16 +123,16 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
       path_ = Path::udp;  // a repeated UdpReady changes nothing
       return;
     }
-    case wire::Body::FrameChunk:
+    case wire::Body::FrameData: {
       if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
-      handle_chunk(*message.body_as_FrameChunk(), now);
-      return;
-    case wire::Body::FrameBundle:
-      if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
-      return handle_bundle(*message.body_as_FrameBundle(), now);
+      const auto* frames = message.body_as_FrameData()->frames();  // required and non-empty (verified)
+      return handle_frames({frames->data(), frames->size()}, transport, now);
+    }
     case wire::Body::SceneUpdate: {
       if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
       const protocol::SceneUpdate update = protocol::read(*message.body_as_SceneUpdate());
+      add_scene(update.effective_tick, update.serial, update.scene);
+      if (state_ != State::streaming) return;
       scene_ = update.scene;
       scene_effective_tick_ = update.effective_tick;
       if (events_.on_scene_update) events_.on_scene_update(update);
@@ -148,7 +160,7 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
 }
 
 void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now) {
-  const codec::StreamConfig config = decoder_config(welcome);
+  const codec::StreamConfig config = codec::decoder_config(welcome);
   if (const std::string problem = codec::validate(config); !problem.empty()) {
     ++stats_.rejected_by_reason[static_cast<std::size_t>(protocol::Reason::out_of_range)];
     return close("Welcome.stream is not decodable by this client's codec: " + problem);
@@ -164,6 +176,8 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
     return close(std::string("cannot build the decoder for Welcome.stream: ") + e.what());
   }
   welcome_ = welcome;
+  add_scene(0, welcome.scene_serial, welcome.scene);  // in force since before any frame it will get
+  if (state_ == State::closed) return;
   scene_ = welcome.scene;
   scene_effective_tick_ = welcome.current_tick;
   max_message_bytes_ = welcome.max_message_bytes;
@@ -184,20 +198,42 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   send_ping(now);
 }
 
+void ClientSession::add_scene(Tick from, std::uint32_t serial, const protocol::SceneParams& scene) {
+  try {
+    decoder_->add_scene(from, static_cast<std::uint8_t>(serial), codec::scene_model_params(scene));
+  } catch (const std::invalid_argument& e) {
+    close(std::string("the server's scene does not fit the stream: ") + e.what());
+  }
+}
+
 // Oldest first: a copy of a frame whose own datagram was lost completes before the newest frame,
 // so each is delivered in order; copies of frames already held are skipped, not refused.
-void ClientSession::handle_bundle(const wire::FrameBundle& bundle, double now) {
+void ClientSession::handle_frames(std::span<const std::uint8_t> block, wire::Transport transport, double now) {
+  const protocol::FrameBlockResult parsed = protocol::decode_frame_block(block, records_);
+  if (!parsed) {
+    count_rejection(parsed.reason);
+    if (transport == wire::Transport::tcp) {
+      ++stats_.tcp.rejected;
+      if (config_.close_on_bad_tcp_message) close("bad FrameData from the server: " + parsed.rule);
+    } else {
+      ++stats_.udp.rejected;
+    }
+    return;
+  }
+  if (transport == wire::Transport::udp) {
+    last_rx_ = now;
+    last_udp_rx_ = now;
+  }
   bool completed = false;
-  const auto& chunks = *bundle.chunks();  // verify_message requires 1..8 non-null chunks
-  for (flatbuffers::uoffset_t i = 0; i < chunks.size() && state_ == State::streaming; ++i) {
-    const wire::FrameChunk& chunk = *chunks.Get(i);
-    const bool last = i + 1 == chunks.size();
-    if (!last && decoder_->is_complete(chunk.tick())) {
+  for (std::size_t i = 0; i < records_.size() && state_ == State::streaming; ++i) {
+    const protocol::FrameRecord& record = records_[i];
+    const bool last = i + 1 == records_.size();
+    if (!last && decoder_->is_complete(record.tick)) {
       ++stats_.chunks_received;
       ++stats_.chunks_redundant;
       continue;
     }
-    if (handle_chunk(chunk, now, false)) {
+    if (handle_record(record, now)) {
       completed = true;
       if (!last) ++stats_.frames_recovered;
     }
@@ -205,19 +241,9 @@ void ClientSession::handle_bundle(const wire::FrameBundle& bundle, double now) {
   if (completed && state_ == State::streaming) send_ack(now);
 }
 
-bool ClientSession::handle_chunk(const wire::FrameChunk& chunk, double now, bool ack) {
+bool ClientSession::handle_record(const protocol::FrameRecord& record, double now) {
   ++stats_.chunks_received;
-  if (chunk.profile_id() != welcome_->stream.profile_id) {
-    count_rejection(protocol::Reason::unknown_profile);
-    return false;
-  }
-  codec::ChunkView view;
-  view.tick = chunk.tick();
-  view.baseline = chunk.baseline();
-  view.key = chunk.key();
-  view.index = chunk.index();
-  view.count = chunk.count();
-  if (const auto* payload = chunk.payload()) view.payload = {payload->data(), payload->size()};
+  const codec::ChunkView view{record.tick, record.baseline, record.key, record.index, record.count, record.payload};
   const bool was_complete = decoder_->is_complete(view.tick);
   const codec::ChunkError error = decoder_->accept(view);
   if (error != codec::ChunkError::ok) {
@@ -240,7 +266,6 @@ bool ClientSession::handle_chunk(const wire::FrameChunk& chunk, double now, bool
     ++stats_.frames_delivered;
     if (events_.on_frame) events_.on_frame(*frame, view.tick);
   }
-  if (ack && state_ == State::streaming) send_ack(now);
   return true;
 }
 
@@ -271,7 +296,7 @@ void ClientSession::send(const protocol::Bytes& bytes, wire::Transport transport
 }
 
 void ClientSession::send_ack(double now) {
-  const std::vector<std::uint32_t> ticks = decoder_->complete_ticks();
+  const std::vector<Tick> ticks = decoder_->complete_ticks();
   const auto window = protocol::ack_window(ticks);
   next_ack_ = now + config_.ack_interval_s;
   if (!window) return;

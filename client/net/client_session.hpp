@@ -3,6 +3,8 @@
 // It owns the handshake, UDP proof and TCP fallback, the codec Decoder, acks, keyframe requests, pings.
 #pragma once
 
+#include "tick.hpp"
+
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -14,6 +16,7 @@
 #include "client_session_config.hpp"
 #include "client_stats.hpp"
 #include "decoder.hpp"
+#include "frame_records.hpp"
 #include "message_types.hpp"
 #include "verify_message.hpp"
 
@@ -27,7 +30,7 @@ struct ClientSessionEvents {
   std::function<void(const protocol::Welcome&)> on_welcome;
   // A frame completed: normally the newest, but a late copy of an older one too (ticks may come
   // out of order). Valid during the call only.
-  std::function<void(const codec::ReconstructedFrame&, std::uint32_t tick)> on_frame;
+  std::function<void(const codec::ReconstructedFrame&, Tick tick)> on_frame;
   std::function<void(const protocol::SceneUpdate&)> on_scene_update;
   // The session ended (Bye, Error before the Welcome, a bad TCP message, idle timeout).
   std::function<void(const std::string& why)> on_closed;
@@ -60,16 +63,18 @@ class ClientSession {
   // Valid once streaming: the Welcome, the current scene (after SceneUpdates) and the decoder.
   const std::optional<protocol::Welcome>& welcome() const { return welcome_; }
   const protocol::SceneParams& scene() const { return scene_; }
-  std::uint32_t scene_effective_tick() const { return scene_effective_tick_; }
+  Tick scene_effective_tick() const { return scene_effective_tick_; }
   const codec::Decoder* decoder() const { return decoder_.get(); }
   const ClientSessionConfig& config() const { return config_; }
 
  private:
   void handle(const wire::Message& message, wire::Transport transport, double now);
   void handle_welcome(const protocol::Welcome& welcome, double now);
-  // Returns true when the chunk completed a frame; acks then (unless the caller acks for a bundle).
-  bool handle_chunk(const wire::FrameChunk& chunk, double now, bool ack = true);
-  void handle_bundle(const wire::FrameBundle& bundle, double now);
+  // A block of frame records (a frames datagram or a FrameData message), oldest first.
+  void handle_frames(std::span<const std::uint8_t> block, wire::Transport transport, double now);
+  // Returns true when the record completed a frame.
+  bool handle_record(const protocol::FrameRecord& record, double now);
+  void add_scene(Tick from, std::uint32_t serial, const protocol::SceneParams& scene);
   void handle_pong(const protocol::Pong& pong, double now);
   void reject(const protocol::Verified& result, wire::Transport transport, double now);
   void count_rejection(protocol::Reason reason);
@@ -92,10 +97,11 @@ class ClientSession {
   std::string last_error_;
   std::optional<protocol::Welcome> welcome_;
   protocol::SceneParams scene_;
-  std::uint32_t scene_effective_tick_ = 0;
+  Tick scene_effective_tick_ = 0;
   std::unique_ptr<codec::Decoder> decoder_;
   std::size_t max_message_bytes_;
   std::vector<std::uint8_t> scratch_;  // aligned copy of a misaligned input
+  std::vector<protocol::FrameRecord> records_;  // scratch of handle_frames
 
   // Timers (absolute times in the caller's clock, seconds).
   double last_rx_ = 0.0;              // any verified message

@@ -2,6 +2,8 @@
 // reason (protocol verification and codec), frames, keyframes, acks, and the round-trip estimate.
 #pragma once
 
+#include "tick.hpp"
+
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -11,7 +13,7 @@
 
 namespace ocean::client {
 
-inline constexpr std::size_t kChunkErrorCount = static_cast<std::size_t>(codec::ChunkError::coverage_mismatch) + 1;
+inline constexpr std::size_t kChunkErrorCount = static_cast<std::size_t>(codec::ChunkError::unknown_scene) + 1;
 
 struct TransportCounters {
   std::uint64_t messages_in = 0;   // verified
@@ -33,7 +35,7 @@ struct ClientStats {
   std::uint64_t frames_complete = 0;
   std::uint64_t keyframes_complete = 0;
   std::uint64_t frames_delivered = 0;  // handed to on_frame (late ones, older than the newest, too)
-  std::optional<std::uint32_t> latest_tick;  // newest complete tick
+  std::optional<Tick> latest_tick;  // newest complete tick
 
   std::uint64_t acks_sent = 0;
   std::uint64_t keyframe_requests_sent = 0;
@@ -42,7 +44,7 @@ struct ClientStats {
   std::uint64_t pings_sent = 0;
   std::uint64_t pongs_received = 0;
   std::uint64_t errors_received = 0;      // Error messages from the server
-  std::optional<std::uint32_t> last_pong_server_tick;
+  std::optional<Tick> last_pong_server_tick;
 
   double rtt_s = 0.0;         // last Pong
   double rtt_smoothed_s = 0.0;  // EWMA, 1/8 gain (RFC 6298 style); 0 until the first Pong

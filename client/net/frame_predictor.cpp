@@ -1,4 +1,4 @@
-// FramePredictor: advance + synthesize (CODEC.md 7.2) on a copy of a decoder state.
+// FramePredictor: advance (across scene changes, CODEC.md 7.5) + synthesize on a copy of a decoder state.
 #include "frame_predictor.hpp"
 
 
@@ -7,15 +7,16 @@ namespace ocean::client {
 FramePredictor::FramePredictor(const codec::StreamConfig& config, std::uint32_t max_ticks_ahead)
     : config_(config), max_ticks_ahead_(max_ticks_ahead), model_(config) {}
 
-bool FramePredictor::predict(const codec::Decoder& decoder, std::uint32_t tick, codec::ReconstructedFrame& out) {
+bool FramePredictor::predict(const codec::Decoder& decoder, Tick tick, codec::ReconstructedFrame& out) {
   // The newest complete tick at or before `tick` (usually simply the newest).
   bool found = false;
-  std::uint32_t base = 0;
-  for (std::uint32_t t : decoder.complete_ticks())
+  Tick base = 0;
+  for (Tick t : decoder.complete_ticks())
     if (t <= tick) found = true, base = t;
   if (!found || tick - base > max_ticks_ahead_) return false;
   state_ = *decoder.state(base);
-  model_.advance(state_, tick - base);
+  // Through the decoder's scenes: a weather change announced ahead is predicted exactly too.
+  decoder.scenes().advance(state_, base, tick);
   model_.synthesize(state_.cur, fields_);
   codec::to_float(fields_, config_, out);
   out.tick = tick;

@@ -3,6 +3,8 @@
 // prediction a delta frame would correct), so a starved FrameTimeline keeps the sea moving.
 #pragma once
 
+#include "tick.hpp"
+
 #include <cstdint>
 
 #include "decoder.hpp"
@@ -17,7 +19,7 @@ class FramePredictor {
 
   // out = the frame of `tick` predicted from the newest complete state at or before it, marked
   // incomplete. False when there is none, or it is more than max_ticks_ahead behind.
-  bool predict(const codec::Decoder& decoder, std::uint32_t tick, codec::ReconstructedFrame& out);
+  bool predict(const codec::Decoder& decoder, Tick tick, codec::ReconstructedFrame& out);
 
  private:
   codec::StreamConfig config_;

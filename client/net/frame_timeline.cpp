@@ -29,7 +29,7 @@ void FrameTimeline::clear() {
   starved_ = false;
 }
 
-TimelineFrame* FrameTimeline::slot_for(std::uint32_t tick) {
+TimelineFrame* FrameTimeline::slot_for(Tick tick) {
   std::size_t oldest = frames_.size();
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     if (!used_[i]) return &frames_[i];
@@ -40,7 +40,7 @@ TimelineFrame* FrameTimeline::slot_for(std::uint32_t tick) {
   return &frames_[oldest];
 }
 
-void FrameTimeline::push(const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
+void FrameTimeline::push(const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
   // A tick far behind what is held means the server restarted its clock: start over.
   for (std::size_t i = 0; i < frames_.size(); ++i)
     if (used_[i] && frames_[i].tick > tick &&
@@ -59,7 +59,7 @@ void FrameTimeline::push(const codec::ReconstructedFrame& frame, std::uint32_t t
   fill(*slot, frame, tick, arrival_s, false);
 }
 
-void FrameTimeline::fill(TimelineFrame& slot, const codec::ReconstructedFrame& frame, std::uint32_t tick,
+void FrameTimeline::fill(TimelineFrame& slot, const codec::ReconstructedFrame& frame, Tick tick,
                          double arrival_s, bool predicted) {
   slot.tick = tick;
   slot.arrival_s = arrival_s;
@@ -130,7 +130,7 @@ TimelineSample FrameTimeline::sample(double now) {
     out.status = TimelineSample::Status::holding;
     out.a = out.b = a;
     // Starved: ask for the next tick's predicted frame and keep interpolating towards it.
-    const auto want = static_cast<std::uint32_t>(std::floor(render_tick)) + 1;
+    const auto want = static_cast<Tick>(std::floor(render_tick)) + 1;
     if (extrapolator_ && extrapolator_(want, predicted_)) {
       if (TimelineFrame* slot = slot_for(want); slot && slot != a) {
         fill(*slot, predicted_, want, now, true);

@@ -3,6 +3,8 @@
 // and for a render time names the two frames to blend, a fixed delay behind. Pure: time is an argument.
 #pragma once
 
+#include "tick.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -26,7 +28,7 @@ struct FrameTimelineConfig {
 };
 
 struct TimelineFrame {
-  std::uint32_t tick = 0;
+  Tick tick = 0;
   double arrival_s = 0.0;
   bool predicted = false;  // made by the extrapolator; a real frame of its tick replaces it
   std::vector<float> height, slope_x, slope_z;
@@ -61,7 +63,7 @@ class FrameTimeline {
  public:
   // Fills out with the frame of a tick no frame has arrived for yet (e.g. FramePredictor); false
   // when it cannot.
-  using Extrapolator = std::function<bool(std::uint32_t tick, codec::ReconstructedFrame& out)>;
+  using Extrapolator = std::function<bool(Tick tick, codec::ReconstructedFrame& out)>;
 
   explicit FrameTimeline(FrameTimelineConfig config = {});
 
@@ -69,7 +71,7 @@ class FrameTimeline {
   void set_extrapolator(Extrapolator extrapolator) { extrapolator_ = std::move(extrapolator); }
 
   // Copies the frame into a reused buffer (no allocation once the buffers have grown).
-  void push(const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s);
+  void push(const codec::ReconstructedFrame& frame, Tick tick, double arrival_s);
   // What to show at client time now; now must not decrease between calls. The pointers stay
   // valid until the next push() or sample().
   TimelineSample sample(double now);
@@ -84,8 +86,8 @@ class FrameTimeline {
   void clear();
 
  private:
-  TimelineFrame* slot_for(std::uint32_t tick);
-  void fill(TimelineFrame& slot, const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s,
+  TimelineFrame* slot_for(Tick tick);
+  void fill(TimelineFrame& slot, const codec::ReconstructedFrame& frame, Tick tick, double arrival_s,
             bool predicted);
 
   FrameTimelineConfig config_;

@@ -3,6 +3,8 @@
 // The one place in this library where two threads meet; everything else is single-threaded.
 #pragma once
 
+#include "tick.hpp"
+
 #include <mutex>
 #include <vector>
 
@@ -13,7 +15,7 @@ namespace ocean::client {
 struct RenderedFrame {
   TimelineSample::Status status = TimelineSample::Status::empty;
   double render_tick = 0.0;
-  std::uint32_t tick_a = 0, tick_b = 0;
+  Tick tick_a = 0, tick_b = 0;
   float weight = 0.0f;
 };
 
@@ -27,7 +29,7 @@ class SharedTimeline {
     timeline_ = FrameTimeline(config);
   }
 
-  void push(const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
+  void push(const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
     std::lock_guard lock(mutex_);
     timeline_.push(frame, tick, arrival_s);
   }

@@ -27,7 +27,7 @@ std::uint64_t session_bytes(const client::ClientSession& s) { return s.stats().t
 struct NetworkThread::Recording {
   std::optional<codec::NpyWriter> writer;
   int grid = 0;
-  std::optional<std::uint32_t> last_tick;  // the file holds frames in tick order
+  std::optional<Tick> last_tick;  // the file holds frames in tick order
 };
 
 NetworkThread::NetworkThread(NetworkThreadConfig config) : config_(std::move(config)) {}
@@ -71,7 +71,7 @@ void NetworkThread::run() {
   asio::io_context io;
   auto connection = client::ClientConnection::create(
       io, config_.connection,
-      [this](const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
+      [this](const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
         timeline_.push(frame, tick, arrival_s);
         on_frame(frame, tick);
       });
@@ -140,7 +140,7 @@ void NetworkThread::on_welcome(const protocol::Welcome& welcome) {
   stream_.send_interval_s = send_interval;
 }
 
-void NetworkThread::on_frame(const codec::ReconstructedFrame& frame, std::uint32_t tick) {
+void NetworkThread::on_frame(const codec::ReconstructedFrame& frame, Tick tick) {
   frames_received_.fetch_add(1);
   if (!session_ticks_.any) session_ticks_ = {true, tick, tick, 0};
   session_ticks_.first = std::min(session_ticks_.first, tick);

@@ -4,6 +4,8 @@
 // current stream's shape (per Welcome) under a mutex.
 #pragma once
 
+#include "tick.hpp"
+
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -72,7 +74,7 @@ class NetworkThread {
  private:
   void run();
   void on_welcome(const protocol::Welcome& welcome);
-  void on_frame(const codec::ReconstructedFrame& frame, std::uint32_t tick);
+  void on_frame(const codec::ReconstructedFrame& frame, Tick tick);
   void publish(const client::ClientConnection& connection, double now);
 
   NetworkThreadConfig config_;
@@ -84,7 +86,7 @@ class NetworkThread {
   // Network-thread state.
   struct SessionTicks {
     bool any = false;
-    std::uint32_t first = 0, last = 0;
+    Tick first = 0, last = 0;
     std::uint64_t received = 0;
   } session_ticks_;
   double expected_done_ = 0.0, received_done_ = 0.0;  // frames of ended sessions (for loss)

@@ -6,7 +6,11 @@ namespace {
 
 constexpr std::uint8_t kFlagKey = 1u << 0;
 constexpr std::uint8_t kFlagNormals = 1u << 1;
-constexpr std::size_t kCrcOffset = 3;
+constexpr std::uint8_t kFlagModeled = 1u << 2;
+constexpr std::uint8_t kFlagWhole = 1u << 3;
+constexpr std::uint8_t kKnownFlags = kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole;
+constexpr std::size_t kCrcOffset = 1;
+constexpr std::size_t kFixedHeaderBytes = 4;  // flags, CRC (2), scene tag
 
 void put_varint(std::vector<std::uint8_t>& out, std::uint32_t v) {
   while (v >= 0x80) {
@@ -35,15 +39,18 @@ bool get_varint(std::span<const std::uint8_t> in, std::size_t& pos, std::uint32_
   return false;
 }
 
-std::uint16_t chunk_crc(const ChunkView& e, std::span<const std::uint8_t> payload) {
-  std::uint8_t pseudo[13];
-  for (int i = 0; i < 4; ++i) pseudo[i] = static_cast<std::uint8_t>(e.tick >> (8 * i));
-  for (int i = 0; i < 4; ++i) pseudo[4 + i] = static_cast<std::uint8_t>(e.baseline >> (8 * i));
-  pseudo[8] = e.key ? 1 : 0;
-  pseudo[9] = static_cast<std::uint8_t>(e.index);
-  pseudo[10] = static_cast<std::uint8_t>(e.index >> 8);
-  pseudo[11] = static_cast<std::uint8_t>(e.count);
-  pseudo[12] = static_cast<std::uint8_t>(e.count >> 8);
+// The pseudo header binds a payload to its envelope and to the stream's grid, so a chunk moved to
+// another tick, baseline, index or stream fails the CRC before anything is decoded.
+std::uint16_t chunk_crc(const ChunkView& e, int grid_log2, std::span<const std::uint8_t> payload) {
+  std::uint8_t pseudo[22];
+  for (int i = 0; i < 8; ++i) pseudo[i] = static_cast<std::uint8_t>(e.tick >> (8 * i));
+  for (int i = 0; i < 8; ++i) pseudo[8 + i] = static_cast<std::uint8_t>(e.baseline >> (8 * i));
+  pseudo[16] = e.key ? 1 : 0;
+  pseudo[17] = static_cast<std::uint8_t>(e.index);
+  pseudo[18] = static_cast<std::uint8_t>(e.index >> 8);
+  pseudo[19] = static_cast<std::uint8_t>(e.count);
+  pseudo[20] = static_cast<std::uint8_t>(e.count >> 8);
+  pseudo[21] = static_cast<std::uint8_t>(grid_log2);
   std::uint16_t crc = crc16_ccitt(0xFFFF, pseudo);
   crc = crc16_ccitt(crc, payload.subspan(0, kCrcOffset));
   return crc16_ccitt(crc, payload.subspan(kCrcOffset + 2));
@@ -71,6 +78,7 @@ std::string_view to_string(ChunkError e) {
     case ChunkError::duplicate_chunk: return "duplicate_chunk";
     case ChunkError::overlapping_range: return "overlapping_range";
     case ChunkError::coverage_mismatch: return "coverage_mismatch";
+    case ChunkError::unknown_scene: return "unknown_scene";
   }
   return "unknown";
 }
@@ -84,57 +92,58 @@ std::uint16_t crc16_ccitt(std::uint16_t crc, std::span<const std::uint8_t> bytes
   return crc;
 }
 
-std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& e, std::span<const std::uint8_t> body) {
+std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& e, int grid_log2,
+                                        std::span<const std::uint8_t> body) {
   std::vector<std::uint8_t> out;
   out.reserve(16 + body.size());
-  out.push_back(h.version);
-  out.push_back(static_cast<std::uint8_t>((h.key ? kFlagKey : 0) | (h.normals ? kFlagNormals : 0)));
-  out.push_back(h.grid_log2);
+  const bool explicit_key = h.key && !h.modeled;
+  out.push_back(static_cast<std::uint8_t>((h.key ? kFlagKey : 0) | (h.normals ? kFlagNormals : 0) |
+                                          (h.key && h.modeled ? kFlagModeled : 0) | (h.whole ? kFlagWhole : 0)));
   out.push_back(0);
   out.push_back(0);  // CRC placeholder
-  put_varint(out, h.item_begin);
-  put_varint(out, h.item_end);
-  if (h.key) {
+  out.push_back(h.scene_tag);
+  if (!h.whole) {
+    put_varint(out, h.item_begin);
+    put_varint(out, h.item_end);
+  }
+  if (explicit_key) {
     out.push_back(h.pos_shift);
     out.push_back(h.vel_shift);
   }
-  put_varint(out, static_cast<std::uint32_t>(body.size()));
   out.insert(out.end(), body.begin(), body.end());
-  const std::uint16_t crc = chunk_crc(e, out);
+  const std::uint16_t crc = chunk_crc(e, grid_log2, out);
   out[kCrcOffset] = static_cast<std::uint8_t>(crc);
   out[kCrcOffset + 1] = static_cast<std::uint8_t>(crc >> 8);
   return out;
 }
 
-ChunkError parse_payload(const ChunkView& c, std::size_t max_payload, ChunkHeader& h,
+ChunkError parse_payload(const ChunkView& c, std::size_t max_payload, int grid_log2, ChunkHeader& h,
                          std::span<const std::uint8_t>& body) {
   const auto p = c.payload;
   if (p.size() > max_payload) return ChunkError::oversized;
-  if (p.empty()) return ChunkError::truncated;
-  if (p[0] != kCodecVersion) return ChunkError::unknown_version;
-  if (p.size() < kCrcOffset + 2) return ChunkError::truncated;
-  h.version = p[0];
-  if (p[1] & ~(kFlagKey | kFlagNormals)) return ChunkError::bad_flags;
-  h.key = (p[1] & kFlagKey) != 0;
-  h.normals = (p[1] & kFlagNormals) != 0;
-  if (h.key != c.key) return ChunkError::bad_flags;
-  h.grid_log2 = p[2];
-  std::size_t pos = kCrcOffset + 2;
+  if (p.size() < kFixedHeaderBytes) return ChunkError::truncated;
+  const std::uint8_t flags = p[0];
+  if (flags & ~kKnownFlags) return ChunkError::bad_flags;
+  h.key = (flags & kFlagKey) != 0;
+  h.normals = (flags & kFlagNormals) != 0;
+  h.modeled = (flags & kFlagModeled) != 0;
+  h.whole = (flags & kFlagWhole) != 0;
+  if (h.key != c.key || (h.modeled && !h.key)) return ChunkError::bad_flags;
+  h.scene_tag = p[3];
+  std::size_t pos = kFixedHeaderBytes;
   bool truncated = false;
-  std::uint32_t body_len = 0;
-  if (!get_varint(p, pos, h.item_begin, truncated) || !get_varint(p, pos, h.item_end, truncated))
-    return truncated ? ChunkError::truncated : ChunkError::bad_range;
-  if (h.key) {
+  if (!h.whole) {
+    if (!get_varint(p, pos, h.item_begin, truncated) || !get_varint(p, pos, h.item_end, truncated))
+      return truncated ? ChunkError::truncated : ChunkError::bad_range;
+  }
+  if (h.key && !h.modeled) {
     if (pos + 2 > p.size()) return ChunkError::truncated;
     h.pos_shift = p[pos++];
     h.vel_shift = p[pos++];
   }
-  if (!get_varint(p, pos, body_len, truncated)) return truncated ? ChunkError::truncated : ChunkError::oversized;
-  if (body_len > p.size() - pos) return ChunkError::truncated;
-  if (body_len < p.size() - pos) return ChunkError::oversized;
   const std::uint16_t crc = static_cast<std::uint16_t>(p[kCrcOffset] | (p[kCrcOffset + 1] << 8));
-  if (crc != chunk_crc(c, p)) return ChunkError::checksum_mismatch;
-  body = p.subspan(pos, body_len);
+  if (crc != chunk_crc(c, grid_log2, p)) return ChunkError::checksum_mismatch;
+  body = p.subspan(pos);
   return ChunkError::ok;
 }
 

@@ -1,6 +1,9 @@
-// Chunk wire format: the envelope fields the protocol carries (FrameChunk), the payload header
-// this codec writes inside FrameChunk.payload, its CRC, and the reasons a chunk is refused.
+// Chunk wire format: the envelope fields every chunk travels with (PROTOCOL.md's frame record),
+// the payload header this codec writes inside the record's payload, its CRC, and the reasons a
+// chunk is refused.
 #pragma once
+
+#include "tick.hpp"
 
 #include <cstdint>
 #include <span>
@@ -9,17 +12,18 @@
 
 namespace ocean::codec {
 
-inline constexpr std::uint8_t kCodecVersion = 1;
+inline constexpr std::uint8_t kCodecVersion = 2;
 inline constexpr std::size_t kDefaultMaxPayload = 1100;
-// Bytes a FrameChunk message adds around the payload on the wire (size prefix, Message wrapper,
-// union, vtable, fields, vector length): the protocol measures at most 87 (wire_limits.hpp); the
-// bench charges this per chunk.
-inline constexpr std::size_t kEnvelopeOverheadBytes = 88;
+// Bytes a frame record adds around the payload in a lean UDP datagram (PROTOCOL.md 7): lag,
+// count, length and its share of the datagram's kind byte and tick; the bench charges this per
+// chunk, plus kIpUdpHeaderBytes per datagram.
+inline constexpr std::size_t kEnvelopeOverheadBytes = 9;
+inline constexpr std::size_t kIpUdpHeaderBytes = 28;
 
-// One datagram's worth of a frame, exactly the protocol's FrameChunk minus profile_id.
+// One datagram's worth of a frame: the envelope of a frame record plus the codec payload.
 struct Chunk {
-  std::uint32_t tick = 0;
-  std::uint32_t baseline = 0;  // tick of the acknowledged frame this one is predicted from; = tick for keys
+  Tick tick = 0;
+  Tick baseline = 0;           // tick of the acknowledged frame this one is predicted from; = tick for keys
   bool key = false;
   std::uint16_t index = 0;     // 0 .. count-1
   std::uint16_t count = 0;     // chunks in this frame
@@ -27,8 +31,8 @@ struct Chunk {
 };
 
 struct ChunkView {
-  std::uint32_t tick = 0;
-  std::uint32_t baseline = 0;
+  Tick tick = 0;
+  Tick baseline = 0;
   bool key = false;
   std::uint16_t index = 0;
   std::uint16_t count = 0;
@@ -39,9 +43,9 @@ inline ChunkView view(const Chunk& c) { return {c.tick, c.baseline, c.key, c.ind
 // Why a chunk was refused; the decoder's state is unchanged whenever this is not `ok`.
 enum class ChunkError : std::uint8_t {
   ok = 0,
-  truncated,           // payload shorter than its header or than the body length it declares
-  oversized,           // payload longer than max_payload, or bytes after the declared body
-  unknown_version,     // payload byte 0 is not kCodecVersion
+  truncated,           // payload shorter than its header
+  oversized,           // payload longer than max_payload
+  unknown_version,     // not produced by codec version 2 (the version is the stream's, not per chunk)
   bad_flags,           // reserved flag bits set, or key flag differs from the envelope
   wrong_dimensions,    // grid or channel set differs from the stream configuration
   bad_range,           // item range empty or outside the frame
@@ -56,6 +60,7 @@ enum class ChunkError : std::uint8_t {
   duplicate_chunk,     // this index of this tick was already accepted
   overlapping_range,   // item range overlaps a chunk already accepted for this tick
   coverage_mismatch,   // all chunks present but their ranges do not cover the frame exactly
+  unknown_scene,       // the chunk's scene tag is not the scene the decoder knows for its tick
 };
 std::string_view to_string(ChunkError e);
 
@@ -63,23 +68,24 @@ inline constexpr std::uint16_t kMaxChunksPerFrame = 4096;
 
 // Parsed payload header (CODEC.md 5).
 struct ChunkHeader {
-  std::uint8_t version = kCodecVersion;
   bool key = false;
   bool normals = false;
-  std::uint8_t grid_log2 = 0;
+  bool modeled = false;        // key only: the state comes from the scene model, not coefficients
+  bool whole = false;          // the chunk covers every item of its frame; no range is written
+  std::uint8_t scene_tag = 0;  // the scene in force at the chunk's tick (SceneUpdate.serial mod 256)
   std::uint32_t item_begin = 0;
   std::uint32_t item_end = 0;
-  std::uint8_t pos_shift = 0;  // key only: X(t) = coefficient << pos_shift
-  std::uint8_t vel_shift = 0;  // key only: X(t) - X(t-1) = coefficient << vel_shift
+  std::uint8_t pos_shift = 0;  // explicit key only: X(t) = coefficient << pos_shift
+  std::uint8_t vel_shift = 0;  // explicit key only: X(t) - X(t-1) = coefficient << vel_shift
 };
 
-// header || body with the CRC filled in.
-std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& envelope_fields,
+// header || body with the CRC filled in; grid_log2 is bound by the CRC, not written.
+std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& envelope_fields, int grid_log2,
                                         std::span<const std::uint8_t> body);
 
 // Checks the header, lengths and CRC (not the meaning against a stream); on success `body`
-// views the body inside payload.
-ChunkError parse_payload(const ChunkView& chunk, std::size_t max_payload, ChunkHeader& h,
+// views the body inside payload. A `whole` header leaves the item range for the caller to set.
+ChunkError parse_payload(const ChunkView& chunk, std::size_t max_payload, int grid_log2, ChunkHeader& h,
                          std::span<const std::uint8_t>& body);
 
 std::uint16_t crc16_ccitt(std::uint16_t crc, std::span<const std::uint8_t> bytes);

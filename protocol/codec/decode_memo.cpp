@@ -13,7 +13,7 @@ std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
   return h;
 }
 
-std::uint64_t key_hash(std::uint32_t tick, const DecodeMemo::Payloads& chunks) {
+std::uint64_t key_hash(Tick tick, const DecodeMemo::Payloads& chunks) {
   std::uint64_t h = fnv1a({}) ^ tick;
   for (const auto& c : chunks) h = (h * 1099511628211ull) ^ fnv1a(c);
   return h;
@@ -23,7 +23,7 @@ std::uint64_t key_hash(std::uint32_t tick, const DecodeMemo::Payloads& chunks) {
 
 std::size_t DecodeMemo::KeyHash::operator()(const Key& k) const {
   std::uint64_t h = k.payload_hash ^ (reinterpret_cast<std::uintptr_t>(k.baseline) * 0x9E3779B97F4A7C15ull);
-  h ^= (h >> 29) ^ (std::uint64_t{k.tick} * 0xBF58476D1CE4E5B9ull);
+  h ^= (h >> 29) ^ (k.tick * 0xBF58476D1CE4E5B9ull);
   return static_cast<std::size_t>(h ^ (h >> 32));
 }
 
@@ -34,17 +34,17 @@ DecodeMemo::Result DecodeMemo::shared_result(State state, ReconstructedFrame&& f
 
 DecodeMemo::DecodeMemo(const StreamConfig& config, std::uint32_t window_ticks) : config_(config), window_(window_ticks) {}
 
-void DecodeMemo::saw_tick(std::uint32_t tick) {
+void DecodeMemo::saw_tick(Tick tick) {
   if (tick <= newest_) return;
   newest_ = tick;
   if (newest_ < window_) return;
-  const std::uint32_t oldest = newest_ - window_;
+  const Tick oldest = newest_ - window_;
   while (!states_.empty() && states_.begin()->first < oldest) states_.erase(states_.begin());
   std::erase_if(deltas_, [oldest](const auto& item) { return item.first.tick < oldest; });
   std::erase_if(keys_, [oldest](const auto& item) { return item.second.tick < oldest; });
 }
 
-const DecodeMemo::Result* DecodeMemo::find_key(std::uint32_t tick, const Payloads& chunks) {
+const DecodeMemo::Result* DecodeMemo::find_key(Tick tick, const Payloads& chunks) {
   const auto [begin, end] = keys_.equal_range(key_hash(tick, chunks));
   for (auto it = begin; it != end; ++it)
     if (it->second.tick == tick && it->second.chunks == chunks) {
@@ -55,14 +55,14 @@ const DecodeMemo::Result* DecodeMemo::find_key(std::uint32_t tick, const Payload
   return nullptr;
 }
 
-const DecodeMemo::Result& DecodeMemo::remember_key(std::uint32_t tick, const Payloads& chunks, State state,
+const DecodeMemo::Result& DecodeMemo::remember_key(Tick tick, const Payloads& chunks, State state,
                                                    ReconstructedFrame&& frame) {
   saw_tick(tick);
   KeyEntry entry{tick, chunks, shared_result(std::move(state), std::move(frame))};
   return keys_.emplace(key_hash(tick, chunks), std::move(entry))->second.result;
 }
 
-DecodeMemo::State DecodeMemo::intern(std::uint32_t tick, ModalState&& state) {
+DecodeMemo::State DecodeMemo::intern(Tick tick, ModalState&& state) {
   saw_tick(tick);
   auto& same_tick = states_[tick];
   const std::uint64_t hash = hash_state(state);
@@ -79,7 +79,7 @@ DecodeMemo::State DecodeMemo::intern(std::uint32_t tick, ModalState&& state) {
   return shared;
 }
 
-const DecodeMemo::Result* DecodeMemo::find(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload) {
+const DecodeMemo::Result* DecodeMemo::find(const State& baseline, Tick tick, std::span<const std::uint8_t> payload) {
   const auto found = deltas_.find(Key{baseline.get(), tick, fnv1a(payload)});
   if (found != deltas_.end()) {
     for (const Entry& e : found->second) {
@@ -93,7 +93,7 @@ const DecodeMemo::Result* DecodeMemo::find(const State& baseline, std::uint32_t 
   return nullptr;
 }
 
-const DecodeMemo::Result& DecodeMemo::remember(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload,
+const DecodeMemo::Result& DecodeMemo::remember(const State& baseline, Tick tick, std::span<const std::uint8_t> payload,
                                                State state, ReconstructedFrame&& frame) {
   saw_tick(tick);
   Entry entry{baseline, std::vector<std::uint8_t>(payload.begin(), payload.end()),

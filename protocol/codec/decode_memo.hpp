@@ -9,6 +9,7 @@
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
 #include "stream_config.hpp"
+#include "tick.hpp"
 
 #include <cstdint>
 #include <map>
@@ -38,22 +39,22 @@ class DecodeMemo {
   const Counts& counts() const { return counts_; }
 
   // The one object holding a state equal to `state` at `tick`.
-  State intern(std::uint32_t tick, ModalState&& state);
+  State intern(Tick tick, ModalState&& state);
 
-  const Result* find(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload);
+  const Result* find(const State& baseline, Tick tick, std::span<const std::uint8_t> payload);
   // `frame` gets a fresh shared_id; returns the stored result.
-  const Result& remember(const State& baseline, std::uint32_t tick, std::span<const std::uint8_t> payload,
+  const Result& remember(const State& baseline, Tick tick, std::span<const std::uint8_t> payload,
                          State state, ReconstructedFrame&& frame);
 
   // Keys, by the payloads of all their chunks in index order.
   using Payloads = std::vector<std::vector<std::uint8_t>>;
-  const Result* find_key(std::uint32_t tick, const Payloads& chunks);
-  const Result& remember_key(std::uint32_t tick, const Payloads& chunks, State state, ReconstructedFrame&& frame);
+  const Result* find_key(Tick tick, const Payloads& chunks);
+  const Result& remember_key(Tick tick, const Payloads& chunks, State state, ReconstructedFrame&& frame);
 
  private:
   struct Key {
     const ModalState* baseline;
-    std::uint32_t tick;
+    Tick tick;
     std::uint64_t payload_hash;
     bool operator==(const Key&) const = default;
   };
@@ -67,21 +68,21 @@ class DecodeMemo {
   };
 
   struct KeyEntry {
-    std::uint32_t tick;
+    Tick tick;
     Payloads chunks;
     Result result;
   };
 
-  void saw_tick(std::uint32_t tick);
+  void saw_tick(Tick tick);
   Result shared_result(State state, ReconstructedFrame&& frame);  // frame gets a fresh shared_id
 
   StreamConfig config_;
   std::uint32_t window_;
-  std::uint32_t newest_ = 0;
+  Tick newest_ = 0;
   std::uint64_t frame_ids_ = 0;
   std::unordered_map<Key, std::vector<Entry>, KeyHash> deltas_;
   std::multimap<std::uint64_t, KeyEntry> keys_;  // by content hash
-  std::map<std::uint32_t, std::unordered_multimap<std::uint64_t, State>> states_;  // tick -> content hash -> state
+  std::map<Tick, std::unordered_multimap<std::uint64_t, State>> states_;  // tick -> content hash -> state
   Counts counts_;
 };
 

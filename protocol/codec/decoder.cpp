@@ -7,43 +7,46 @@
 namespace ocean::codec {
 
 Decoder::Decoder(const StreamConfig& config, DecoderOptions options)
-    : config_(config), options_(options), model_(config) {
+    : config_(config), options_(options), model_(config), scenes_(config) {
   if (options.history_ticks < 1 || options.max_lag < 1 || options.max_pending < 1)
     throw std::invalid_argument("DecoderOptions: history_ticks, max_lag and max_pending must be >= 1");
   if (options.memo && !(options.memo->config() == config))
     throw std::invalid_argument("DecoderOptions: the memo belongs to another stream configuration");
 }
 
-std::optional<std::uint32_t> Decoder::newest_complete() const {
+std::optional<Tick> Decoder::newest_complete() const {
   if (states_.empty()) return std::nullopt;
   return states_.rbegin()->first;
 }
 
-std::vector<std::uint32_t> Decoder::complete_ticks() const {
-  std::vector<std::uint32_t> v;
+std::vector<Tick> Decoder::complete_ticks() const {
+  std::vector<Tick> v;
   for (const auto& [t, s] : states_) v.push_back(t);
   return v;
 }
 
-const ModalState* Decoder::state(std::uint32_t tick) const {
+const ModalState* Decoder::state(Tick tick) const {
   auto it = states_.find(tick);
   return it == states_.end() ? nullptr : it->second.get();
 }
 
 ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const {
-  if (h.grid_log2 != config_.grid_log2() || h.normals != config_.normals) return ChunkError::wrong_dimensions;
+  if (h.normals != config_.normals) return ChunkError::wrong_dimensions;
   if (h.item_begin >= h.item_end || h.item_end > layout.total()) return ChunkError::bad_range;
-  if (h.key && (h.pos_shift > 40 || h.vel_shift > 40)) return ChunkError::bad_value;
+  if (h.key && !h.modeled && (h.pos_shift > 40 || h.vel_shift > 40)) return ChunkError::bad_value;
   if (c.count == 0 || c.count > kMaxChunksPerFrame || c.index >= c.count) return ChunkError::bad_index;
   if (c.key ? c.baseline != c.tick : c.baseline >= c.tick) return ChunkError::bad_baseline;
   if (!c.key && c.tick - c.baseline > options_.max_lag) return ChunkError::lag_too_large;
+  if (const SceneTimeline::Entry* scene = scenes_.at(c.tick); !scene || scene->tag != h.scene_tag)
+    return ChunkError::unknown_scene;
   if (const auto newest = newest_complete(); newest && c.tick <= *newest && *newest - c.tick >= options_.history_ticks)
     return ChunkError::stale_tick;
   if (states_.count(c.tick)) return ChunkError::duplicate_chunk;
   if (!c.key && !states_.count(c.baseline)) return ChunkError::unknown_baseline;
   if (auto it = pending_.find(c.tick); it != pending_.end()) {
     const Pending& p = it->second;
-    if (p.key != c.key || p.baseline != c.baseline || p.count != c.count) return ChunkError::inconsistent_frame;
+    if (p.key != c.key || p.modeled != h.modeled || p.baseline != c.baseline || p.count != c.count)
+      return ChunkError::inconsistent_frame;
     if (p.got[c.index]) return ChunkError::duplicate_chunk;
     std::uint64_t covered = h.item_end - h.item_begin;
     for (const auto& [b, e] : p.ranges) {
@@ -51,7 +54,7 @@ ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLa
       covered += e - b;
     }
     if (p.received + 1 == p.count && covered != layout.total()) return ChunkError::coverage_mismatch;
-  } else if (c.count == 1 && (h.item_begin != 0 || h.item_end != layout.total())) {
+  } else if (c.count == 1 && !h.whole) {
     return ChunkError::coverage_mismatch;
   }
   return ChunkError::ok;
@@ -61,12 +64,17 @@ ChunkError Decoder::accept(const ChunkView& c) {
   completed_tick_.reset();
   ChunkHeader h;
   std::span<const std::uint8_t> body;
-  if (const ChunkError e = parse_payload(c, options_.max_payload, h, body); e != ChunkError::ok) return e;
+  if (const ChunkError e = parse_payload(c, options_.max_payload, config_.grid_log2(), h, body); e != ChunkError::ok)
+    return e;
   const int n = model_.n();
   BodyLayout layout;
-  layout.spectral_items = h.key ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
+  layout.spectral_items = h.key && !h.modeled ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
   layout.samples = static_cast<std::uint32_t>(n) * n;
   layout.normals = config_.normals;
+  if (h.whole) {
+    h.item_begin = 0;
+    h.item_end = layout.total();
+  }
   if (const ChunkError e = check(c, h, layout); e != ChunkError::ok) return e;
   if (accept_remembered(c)) return ChunkError::ok;
   DecodedBody decoded;
@@ -78,16 +86,21 @@ ChunkError Decoder::accept(const ChunkView& c) {
   if (fresh) {
     p.baseline = c.baseline;
     p.key = c.key;
+    p.modeled = h.modeled;
     p.count = c.count;
     p.got.assign(c.count, false);
-    if (c.key) {
-      if (options_.memo) p.key_payloads.resize(c.count);
+    if (c.key && options_.memo) p.key_payloads.resize(c.count);
+    if (c.key && !h.modeled) {
       p.key_coefficients.resize(layout.spectral_items);
       p.pos_shift = h.pos_shift;
       p.vel_shift = h.vel_shift;
     } else {
-      p.predicted = *states_.at(c.baseline);
-      model_.advance(p.predicted, c.tick - c.baseline);
+      if (c.key) {
+        scenes_.model_state(c.tick, p.predicted);
+      } else {
+        p.predicted = *states_.at(c.baseline);
+        scenes_.advance(p.predicted, c.baseline, c.tick);
+      }
       model_.synthesize(p.predicted.cur, p.fields);
     }
   }
@@ -96,7 +109,8 @@ ChunkError Decoder::accept(const ChunkView& c) {
   ++p.received;
   p.ranges.emplace_back(h.item_begin, h.item_end);
   for (std::size_t i = 0; i < decoded.key.size(); ++i) p.key_coefficients[h.item_begin + i] = decoded.key[i];
-  if (!c.key) apply_corrections(p.fields, decoded.corrections);
+  const bool predicted = !c.key || h.modeled;  // fields hold a prediction to correct and show
+  if (predicted) apply_corrections(p.fields, decoded.corrections);
   auto append = [](std::vector<Correction>& to, const std::vector<Correction>& from) {
     to.insert(to.end(), from.begin(), from.end());
   };
@@ -104,7 +118,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
   append(p.corrections.slope_x, decoded.corrections.slope_x);
   append(p.corrections.slope_z, decoded.corrections.slope_z);
 
-  if (!c.key && (!shown_tick_ || c.tick >= *shown_tick_)) show(c.tick);
+  if (predicted && (!shown_tick_ || c.tick >= *shown_tick_)) show(c.tick);
   if (p.received == p.count) {
     complete(c.tick, p, c.payload);
     pending_.erase(c.tick);
@@ -114,7 +128,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
   return ChunkError::ok;
 }
 
-void Decoder::show(std::uint32_t tick) {
+void Decoder::show(Tick tick) {
   shown_tick_ = tick;
   shown_dirty_ = true;
   shown_shared_.reset();
@@ -131,7 +145,7 @@ bool Decoder::accept_remembered(const ChunkView& c) {
   return true;
 }
 
-void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint8_t> payload) {
+void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payload) {
   DecodeMemo* memo = options_.memo;
   // The memo takes keys and single-chunk deltas, by their bytes.
   if (memo && p.key) {
@@ -140,7 +154,7 @@ void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint
       return;
     }
   }
-  if (p.key) {
+  if (p.key && !p.modeled) {
     p.predicted = key_state(model_, p.key_coefficients, p.pos_shift, p.vel_shift);
     model_.synthesize(p.predicted.cur, p.fields);
     apply_corrections(p.fields, p.corrections);
@@ -175,7 +189,7 @@ void Decoder::complete(std::uint32_t tick, Pending& p, std::span<const std::uint
 }
 
 // A complete frame whose state and shown frame the memo holds.
-void Decoder::complete_shared(std::uint32_t tick, const DecodeMemo::Result& r) {
+void Decoder::complete_shared(Tick tick, const DecodeMemo::Result& r) {
   completed_tick_ = tick;
   late_converted_ = false;
   states_[tick] = r.state;
@@ -207,12 +221,13 @@ const ReconstructedFrame* Decoder::just_completed() {
 void Decoder::evict() {
   const auto newest = newest_complete();
   if (!newest || *newest < options_.history_ticks) return;
-  const std::uint32_t oldest = *newest - options_.history_ticks;
+  const Tick oldest = *newest - options_.history_ticks;
   while (!states_.empty() && states_.begin()->first < oldest) states_.erase(states_.begin());
   while (!pending_.empty() && pending_.begin()->first < oldest) drop_pending(pending_.begin());
+  scenes_.forget_before(states_.empty() ? oldest : std::min(oldest, states_.begin()->first));
 }
 
-void Decoder::drop_pending(std::map<std::uint32_t, Pending>::iterator it) {
+void Decoder::drop_pending(std::map<Tick, Pending>::iterator it) {
   // The frame on show keeps showing what it had, still marked incomplete.
   if (shown_tick_ && it->first == *shown_tick_) {
     show(it->first);

@@ -8,7 +8,9 @@
 #include "chunk_format.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
+#include "scene_timeline.hpp"
 #include "stream_config.hpp"
+#include "tick.hpp"
 
 #include <cstdint>
 #include <map>
@@ -20,7 +22,9 @@ namespace ocean::codec {
 struct DecoderOptions {
   std::size_t max_payload = kDefaultMaxPayload;  // larger payloads are refused as oversized
   std::uint32_t history_ticks = 32;  // complete states older than newest complete - this are dropped
-  std::uint32_t max_lag = 64;        // largest tick - baseline accepted (the advance costs lag steps)
+  // Largest tick - baseline accepted: the advance costs one step of the recurrence per tick, and a
+  // key that took seconds to arrive on a thin link is still a baseline (30 s at 30 Hz).
+  std::uint32_t max_lag = 1024;
   std::size_t max_pending = 8;       // incomplete frames kept; the oldest is dropped beyond this
   DecodeMemo* memo = nullptr;        // shared with other decoders of the same stream (same thread)
 };
@@ -31,6 +35,12 @@ class Decoder {
   explicit Decoder(const StreamConfig& config, DecoderOptions options = {});
 
   const StreamConfig& config() const { return config_; }
+
+  // The scene in force from tick `from` on (the Welcome's and every SceneUpdate's, with the
+  // update's serial mod 256 as tag). Chunks of ticks with no known scene, or naming another tag,
+  // are refused as unknown_scene. Throws std::invalid_argument when the scene does not fit.
+  void add_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene) { scenes_.add(from, tag, scene); }
+  const SceneTimeline& scenes() const { return scenes_; }
 
   // Takes one chunk; on any error nothing inside the decoder changes.
   ChunkError accept(const ChunkView& chunk);
@@ -45,21 +55,22 @@ class Decoder {
   // none. Valid until the next accept().
   const ReconstructedFrame* just_completed();
 
-  bool is_complete(std::uint32_t tick) const { return states_.count(tick) != 0; }
-  std::optional<std::uint32_t> newest_complete() const;
-  std::vector<std::uint32_t> complete_ticks() const;  // ascending; what the client may ack
-  const ModalState* state(std::uint32_t tick) const;
+  bool is_complete(Tick tick) const { return states_.count(tick) != 0; }
+  std::optional<Tick> newest_complete() const;
+  std::vector<Tick> complete_ticks() const;  // ascending; what the client may ack
+  const ModalState* state(Tick tick) const;
 
  private:
   struct Pending {
-    std::uint32_t baseline = 0;
+    Tick baseline = 0;
     bool key = false;
+    bool modeled = false;
     std::uint16_t count = 0;
     std::vector<bool> got;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
     std::uint16_t received = 0;
-    ModalState predicted;                  // delta: advanced baseline state
-    SampleFields fields;                   // delta: prediction + corrections received so far
+    ModalState predicted;                  // delta: advanced baseline state; modeled key: the model's
+    SampleFields fields;                   // delta, modeled key: prediction + corrections so far
     std::vector<KeyCoefficient> key_coefficients;  // key: filled as chunks arrive
     std::uint8_t pos_shift = 0, vel_shift = 0;
     Corrections corrections;
@@ -68,26 +79,27 @@ class Decoder {
 
   ChunkError check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const;
   // payload: the chunk of a single-chunk delta, remembered in the memo with its result.
-  void complete(std::uint32_t tick, Pending& p, std::span<const std::uint8_t> payload);
+  void complete(Tick tick, Pending& p, std::span<const std::uint8_t> payload);
   bool accept_remembered(const ChunkView& c);
-  void complete_shared(std::uint32_t tick, const DecodeMemo::Result& r);
-  void show(std::uint32_t tick);
+  void complete_shared(Tick tick, const DecodeMemo::Result& r);
+  void show(Tick tick);
   void evict();
-  void drop_pending(std::map<std::uint32_t, Pending>::iterator it);
+  void drop_pending(std::map<Tick, Pending>::iterator it);
 
   StreamConfig config_;
   DecoderOptions options_;
   ModalModel model_;
-  std::map<std::uint32_t, DecodeMemo::State> states_;  // complete frames (interned when memo is set)
-  std::map<std::uint32_t, Pending> pending_;
-  std::optional<std::uint32_t> shown_tick_;     // newest tick with something to show
+  SceneTimeline scenes_;
+  std::map<Tick, DecodeMemo::State> states_;  // complete frames (interned when memo is set)
+  std::map<Tick, Pending> pending_;
+  std::optional<Tick> shown_tick_;              // newest tick with something to show
   SampleFields shown_fields_;                   // its fields once it left pending_
   bool shown_complete_ = false;
   ReconstructedFrame shown_;
   DecodeMemo::Frame shown_shared_;              // set instead of shown_ when the memo holds the frame
   bool shown_dirty_ = true;
   // A frame completed while a newer one was on show (just_completed()).
-  std::optional<std::uint32_t> completed_tick_;
+  std::optional<Tick> completed_tick_;
   SampleFields late_fields_;
   DecodeMemo::Frame late_shared_;
   ReconstructedFrame late_;

@@ -36,7 +36,7 @@ void correct_channel(std::vector<std::int64_t>& pred, std::span<const float> tru
 }  // namespace
 
 Encoder::Encoder(const StreamConfig& config, EncoderOptions options)
-    : config_(config), options_(options), model_(config) {
+    : config_(config), options_(options), model_(config), scenes_(config) {
   if (options.max_payload < 64 || options.max_payload > 65000)
     throw std::invalid_argument("EncoderOptions.max_payload = " + std::to_string(options.max_payload) +
                                 ": must be in [64, 65000]");
@@ -49,7 +49,9 @@ Encoder::Encoder(const StreamConfig& config, EncoderOptions options)
     throw std::invalid_argument("EncoderOptions.key_velocity_extra_bits must be in [0, 16]");
 }
 
-void Encoder::add_truth(std::uint32_t tick, const TruthView& truth) {
+void Encoder::set_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene) { scenes_.add(from, tag, scene); }
+
+void Encoder::add_truth(Tick tick, const TruthView& truth) {
   const std::size_t nn = static_cast<std::size_t>(model_.n()) * model_.n();
   if (truth.height.size() != nn)
     throw std::invalid_argument("Encoder::add_truth: height has " + std::to_string(truth.height.size()) +
@@ -83,11 +85,20 @@ void Encoder::add_truth(std::uint32_t tick, const TruthView& truth) {
 
 void Encoder::evict() {
   if (newest_ < options_.history_ticks) return;
-  const std::uint32_t oldest = newest_ - options_.history_ticks;
+  const Tick oldest = newest_ - options_.history_ticks;
+  const Tick key_span = std::max(options_.history_ticks, options_.key_history_ticks);
+  const Tick oldest_key = newest_ > key_span ? newest_ - key_span : 0;
   while (!truth_.empty() && truth_.begin()->first < oldest) truth_.erase(truth_.begin());
-  while (!states_.empty() && states_.begin()->first.tick < oldest) states_.erase(states_.begin());
-  while (!keys_.empty() && keys_.begin()->first < oldest) keys_.erase(keys_.begin());
+  std::erase_if(states_, [&](const auto& item) {
+    const StateId id = item.first;
+    if (id.tick >= oldest) return false;
+    if (id.tick < oldest_key) return true;
+    const auto key = keys_.find(id.tick);
+    return key == keys_.end() || key->second->id != id;
+  });
+  while (!keys_.empty() && keys_.begin()->first < oldest_key) keys_.erase(keys_.begin());
   while (!deltas_.empty() && deltas_.begin()->first.first < oldest) deltas_.erase(deltas_.begin());
+  scenes_.forget_before(states_.empty() ? oldest : std::min(oldest, states_.begin()->first.tick));
 }
 
 const ModalState* Encoder::state(StateId id) const {
@@ -95,45 +106,64 @@ const ModalState* Encoder::state(StateId id) const {
   return it == states_.end() ? nullptr : &it->second;
 }
 
-std::shared_ptr<const EncodedFrame> Encoder::encode_key(std::uint32_t tick) {
+std::shared_ptr<const EncodedFrame> Encoder::encode_key(Tick tick) {
   if (auto it = keys_.find(tick); it != keys_.end()) return it->second;
-  auto t1 = truth_.find(tick);
-  auto t0 = tick > 0 ? truth_.find(tick - 1) : truth_.end();
-  if (t1 == truth_.end() || t0 == truth_.end())
-    throw std::invalid_argument("Encoder::encode_key(" + std::to_string(tick) +
-                                "): needs the truth of this tick and the previous one (add_truth both)");
+  if (truth_.find(tick) == truth_.end())
+    throw std::invalid_argument("Encoder::encode_key(" + std::to_string(tick) + "): no truth for this tick");
+  if (!scenes_.at(tick))
+    throw std::invalid_argument("Encoder::encode_key(" + std::to_string(tick) + "): no scene set for this tick");
+  ModalState predicted;
+  scenes_.model_state(tick, predicted);
+  const Corrections corrections = correct(tick, predicted);
+  const double samples = static_cast<double>(model_.n()) * model_.n() * (config_.normals ? 3 : 1);
+  if (static_cast<double>(corrections.total()) > options_.modeled_key_max_correction_share * samples &&
+      tick > 0 && truth_.count(tick - 1) != 0)
+    return explicit_key(tick);
+  const KeyCoding coding;
+  auto frame = finish_frame(tick, std::move(predicted), corrections, &coding, {});
+  keys_[tick] = frame;
+  return frame;
+}
+
+// The codec version 1 key: spectra of the truth at tick and tick - 1, quantized (CODEC.md 7.3).
+std::shared_ptr<const EncodedFrame> Encoder::explicit_key(Tick tick) {
+  const auto& t1 = truth_.at(tick);
+  const auto& t0 = truth_.at(tick - 1);
   const int n = model_.n();
   const std::size_t nn = static_cast<std::size_t>(n) * n;
   const double step = static_cast<double>(config_.height_step_m);
   std::vector<std::int64_t> f1(nn), f0(nn);
   for (std::size_t i = 0; i < nn; ++i) {
-    f1[i] = to_fixed(static_cast<double>(t1->second.height[i]) / step, kHeightFracBits);
-    f0[i] = to_fixed(static_cast<double>(t0->second.height[i]) / step, kHeightFracBits);
+    f1[i] = to_fixed(static_cast<double>(t1.height[i]) / step, kHeightFracBits);
+    f0[i] = to_fixed(static_cast<double>(t0.height[i]) / step, kHeightFracBits);
   }
   HalfSpectrum s1, s0;
   model_.spectrum_of(f1.data(), s1);
   model_.spectrum_of(f0.data(), s0);
   // Spectral quantization error 2^p per coefficient gives spatial rms about 2^p / (n sqrt 6):
   // choose p for an rms of step * 2^-key_precision_bits.
-  const int pos_shift = std::max(0, kHeightFracBits - options_.key_precision_bits + config_.grid_log2() + 1);
-  const int vel_shift = std::max(0, pos_shift - options_.key_velocity_extra_bits);
+  KeyCoding coding;
+  coding.modeled = false;
+  coding.pos_shift = std::max(0, kHeightFracBits - options_.key_precision_bits + config_.grid_log2() + 1);
+  coding.vel_shift = std::max(0, coding.pos_shift - options_.key_velocity_extra_bits);
   const auto& modes = model_.key_modes();
-  std::vector<KeyCoefficient> coeffs(modes.size());
+  coding.coefficients.resize(modes.size());
   for (std::size_t i = 0; i < modes.size(); ++i) {
     const std::int32_t at = modes[i];
-    KeyCoefficient& k = coeffs[i];
-    k.xr = shift_round(s1.re[at], pos_shift);
-    k.xi = shift_round(s1.im[at], pos_shift);
-    k.vr = shift_round(s1.re[at] - s0.re[at], vel_shift);
-    k.vi = shift_round(s1.im[at] - s0.im[at], vel_shift);
+    KeyCoefficient& k = coding.coefficients[i];
+    k.xr = shift_round(s1.re[at], coding.pos_shift);
+    k.xi = shift_round(s1.im[at], coding.pos_shift);
+    k.vr = shift_round(s1.re[at] - s0.re[at], coding.vel_shift);
+    k.vi = shift_round(s1.im[at] - s0.im[at], coding.vel_shift);
   }
-  ModalState predicted = key_state(model_, coeffs, pos_shift, vel_shift);
-  auto frame = finish_frame(tick, std::move(predicted), true, coeffs, pos_shift, vel_shift, {});
+  ModalState predicted = key_state(model_, coding.coefficients, coding.pos_shift, coding.vel_shift);
+  const Corrections corrections = correct(tick, predicted);
+  auto frame = finish_frame(tick, std::move(predicted), corrections, &coding, {});
   keys_[tick] = frame;
   return frame;
 }
 
-std::shared_ptr<const EncodedFrame> Encoder::encode_delta(std::uint32_t tick, StateId baseline) {
+std::shared_ptr<const EncodedFrame> Encoder::encode_delta(Tick tick, StateId baseline) {
   const auto cache_key = std::make_pair(tick, baseline);
   if (auto it = deltas_.find(cache_key); it != deltas_.end()) return it->second;
   if (baseline.tick >= tick)
@@ -145,16 +175,19 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_delta(std::uint32_t tick, St
                                 std::to_string(baseline.serial) + "} is not held (evicted or never encoded)");
   if (truth_.find(tick) == truth_.end())
     throw std::invalid_argument("Encoder::encode_delta: no truth for tick " + std::to_string(tick));
+  if (!scenes_.at(baseline.tick))
+    throw std::invalid_argument("Encoder::encode_delta: no scene set for tick " + std::to_string(baseline.tick));
   ModalState predicted = st->second;
-  model_.advance(predicted, tick - baseline.tick);
-  auto frame = finish_frame(tick, std::move(predicted), false, {}, 0, 0, baseline);
+  scenes_.advance(predicted, baseline.tick, tick);
+  const Corrections corrections = correct(tick, predicted);
+  auto frame = finish_frame(tick, std::move(predicted), corrections, nullptr, baseline);
   deltas_[cache_key] = frame;
   return frame;
 }
 
-std::shared_ptr<EncodedFrame> Encoder::finish_frame(std::uint32_t tick, ModalState predicted, bool key,
-                                                    const std::vector<KeyCoefficient>& key_coefficients,
-                                                    int pos_shift, int vel_shift, StateId base) {
+// Synthesizes the prediction into fields_ and returns the corrections that bring every sample
+// within half a step of the truth (fields_ then holds exactly what the decoder shows).
+Corrections Encoder::correct(Tick tick, const ModalState& predicted) {
   const TruthFrame& truth = truth_.at(tick);
   model_.synthesize(predicted.cur, fields_);
   Corrections corr;
@@ -165,8 +198,14 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(std::uint32_t tick, ModalSta
     correct_channel(fields_.slope_x, truth.slope_x, sunit, config_.slope_step, kSlopeQuantumShift, corr.slope_x);
     correct_channel(fields_.slope_z, truth.slope_z, sunit, config_.slope_step, kSlopeQuantumShift, corr.slope_z);
   }
+  return corr;
+}
+
+// key == nullptr: a delta from `base`. fields_ holds the corrected prediction (correct()).
+std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predicted, const Corrections& corr,
+                                                    const KeyCoding* key, StateId base) {
   auto frame = std::make_shared<EncodedFrame>();
-  frame->key = key;
+  frame->key = key != nullptr;
   frame->id = {tick, next_serial_++};
   frame->base = key ? frame->id : base;
   frame->stats.corrections_height = corr.height.size();
@@ -176,17 +215,20 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(std::uint32_t tick, ModalSta
   to_float(fields_, config_, frame->reconstruction);
 
   const int n = model_.n();
+  const bool explicit_key = key && !key->modeled;
   BodyLayout layout;
-  layout.spectral_items = key ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
+  layout.spectral_items = explicit_key ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
   layout.samples = static_cast<std::uint32_t>(n) * n;
   layout.normals = config_.normals;
   ChunkHeader proto;
-  proto.key = key;
+  proto.key = key != nullptr;
+  proto.modeled = key && key->modeled;
   proto.normals = config_.normals;
-  proto.grid_log2 = static_cast<std::uint8_t>(config_.grid_log2());
-  proto.pos_shift = static_cast<std::uint8_t>(pos_shift);
-  proto.vel_shift = static_cast<std::uint8_t>(vel_shift);
-  chunk_frame(*frame, layout, proto, key_coefficients, corr);
+  proto.scene_tag = scenes_.at(tick)->tag;
+  proto.pos_shift = static_cast<std::uint8_t>(explicit_key ? key->pos_shift : 0);
+  proto.vel_shift = static_cast<std::uint8_t>(explicit_key ? key->vel_shift : 0);
+  static const std::vector<KeyCoefficient> kNoCoefficients;
+  chunk_frame(*frame, layout, proto, explicit_key ? key->coefficients : kNoCoefficients, corr);
 
   if (!corr.height.empty()) model_.add_correction(predicted, height_correction_field(n, corr.height));
   // Deltas of one tick from different baselines often land on the same state (without
@@ -219,10 +261,13 @@ void Encoder::chunk_frame(EncodedFrame& frame, const BodyLayout& layout, const C
     ChunkHeader h = proto;
     h.item_begin = b;
     h.item_end = e;
-    return write_payload(h, env, body).size();
+    h.whole = b == 0 && e == total;
+    return write_payload(h, env, config_.grid_log2(), body).size();
   };
   std::uint32_t begin = 0;
   std::uint32_t guess = layout.spectral_items ? 64 : total;
+  // A single chunk covering the frame writes no range (ChunkHeader::whole): trials of the whole
+  // range measure it that way too.
   while (begin < total) {
     // Largest end in (begin, total] whose payload fits: grow geometrically, then bisect.
     // Sizes are (nearly) monotone in the end; whatever is chosen was checked to fit.
@@ -274,7 +319,8 @@ void Encoder::chunk_frame(EncodedFrame& frame, const BodyLayout& layout, const C
     ChunkHeader h = proto;
     h.item_begin = pieces[i].begin;
     h.item_end = pieces[i].end;
-    c.payload = write_payload(h, view(c), pieces[i].body);
+    h.whole = count == 1;
+    c.payload = write_payload(h, view(c), config_.grid_log2(), pieces[i].body);
     frame.stats.payload_bytes += c.payload.size();
     frame.chunks.push_back(std::move(c));
   }

@@ -1,13 +1,16 @@
-// Encoder: the server side of a stream. Holds recent truth frames and the decoder states it has
-// produced (keyed by StateId), and encodes a tick as a key or as a delta from any held state,
-// predicting from exactly the state the decoder will hold (closed loop). Results are cached per
-// (tick, baseline) so one encoding serves every client sharing that baseline.
+// Encoder: the server side of a stream. Holds recent truth frames, the scenes announced to its
+// clients and the decoder states it has produced (keyed by StateId), and encodes a tick as a key
+// (the scene model's state plus corrections, or explicit coefficients when the model is far from
+// the truth) or as a delta from any held state, predicting from exactly the state the decoder will
+// hold (closed loop). Results are cached per (tick, baseline) so one encoding serves every client
+// sharing that baseline.
 #pragma once
 
 #include "chunk_body.hpp"
 #include "chunk_format.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
+#include "scene_timeline.hpp"
 #include "state_hash.hpp"
 #include "stream_config.hpp"
 
@@ -22,8 +25,14 @@ namespace ocean::codec {
 struct EncoderOptions {
   std::size_t max_payload = kDefaultMaxPayload;  // payload bytes per chunk, 64..65000
   std::uint32_t history_ticks = 32;  // truth and states older than newest truth - this are dropped
+  // ... except the states of keys, kept this long: a key that reaches a client late on a thin link
+  // is still its baseline (0 = as history_ticks).
+  std::uint32_t key_history_ticks = 0;
   int key_precision_bits = 6;        // key position error about step * 2^-bits rms (0..16)
   int key_velocity_extra_bits = 3;   // key velocity this many bits finer than position (0..16)
+  // A modeled key with more corrections than this share of its samples falls back to explicit
+  // coefficients (the sim then differs from the scene model the decoder runs).
+  double modeled_key_max_correction_share = 0.02;
 };
 
 // A view of one sim frame (row-major z * n + x); slopes required when the stream has normals.
@@ -54,18 +63,23 @@ class Encoder {
   const StreamConfig& config() const { return config_; }
   const EncoderOptions& options() const { return options_; }
 
+  // The scene in force from tick `from` on, as the clients learn it (SceneUpdate): needed before the
+  // first encode, and announced to the decoders before any frame of its ticks reaches them.
+  void set_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene);
+  const SceneTimeline& scenes() const { return scenes_; }
+
   // Stores the truth for a tick (copied). Ticks older than newest - history_ticks are evicted
   // together with their states.
-  void add_truth(std::uint32_t tick, const TruthView& truth);
+  void add_truth(Tick tick, const TruthView& truth);
 
-  // A key needs the truth of tick and tick - 1 (its velocity). Throws std::invalid_argument when
-  // the truth is missing.
-  std::shared_ptr<const EncodedFrame> encode_key(std::uint32_t tick);
+  // A key needs the truth of its tick (and of tick - 1 when the scene model misses the truth and
+  // explicit coefficients are sent). Throws std::invalid_argument when the truth is missing.
+  std::shared_ptr<const EncodedFrame> encode_key(Tick tick);
 
   // A delta for `tick` predicted from `baseline` (a state this encoder produced, baseline.tick <
   // tick). Its id is that of an earlier delta of `tick` when both leave the very same state.
   // Throws std::invalid_argument when the truth or the baseline state is gone.
-  std::shared_ptr<const EncodedFrame> encode_delta(std::uint32_t tick, StateId baseline);
+  std::shared_ptr<const EncodedFrame> encode_delta(Tick tick, StateId baseline);
 
   bool has_state(StateId id) const { return states_.count(id) != 0; }
   const ModalState* state(StateId id) const;
@@ -74,9 +88,15 @@ class Encoder {
   struct TruthFrame {
     std::vector<float> height, slope_x, slope_z;
   };
-  std::shared_ptr<EncodedFrame> finish_frame(std::uint32_t tick, ModalState predicted, bool key,
-                                             const std::vector<KeyCoefficient>& key_coefficients,
-                                             int pos_shift, int vel_shift, StateId base);
+  struct KeyCoding {
+    bool modeled = true;
+    std::vector<KeyCoefficient> coefficients;  // explicit keys only
+    int pos_shift = 0, vel_shift = 0;
+  };
+  Corrections correct(Tick tick, const ModalState& predicted);
+  std::shared_ptr<const EncodedFrame> explicit_key(Tick tick);
+  std::shared_ptr<EncodedFrame> finish_frame(Tick tick, ModalState predicted, const Corrections& corrections,
+                                             const KeyCoding* key, StateId base);
   void chunk_frame(EncodedFrame& frame, const BodyLayout& layout, const ChunkHeader& proto,
                    const std::vector<KeyCoefficient>& key_coefficients, const Corrections& corrections);
   void evict();
@@ -84,12 +104,13 @@ class Encoder {
   StreamConfig config_;
   EncoderOptions options_;
   ModalModel model_;
-  std::map<std::uint32_t, TruthFrame> truth_;
+  SceneTimeline scenes_;
+  std::map<Tick, TruthFrame> truth_;
   std::map<StateId, ModalState> states_;
-  std::map<std::uint32_t, std::shared_ptr<const EncodedFrame>> keys_;
-  std::map<std::pair<std::uint32_t, StateId>, std::shared_ptr<const EncodedFrame>> deltas_;
+  std::map<Tick, std::shared_ptr<const EncodedFrame>> keys_;
+  std::map<std::pair<Tick, StateId>, std::shared_ptr<const EncodedFrame>> deltas_;
   std::uint32_t next_serial_ = 1;
-  std::uint32_t newest_ = 0;
+  Tick newest_ = 0;
   bool have_truth_ = false;
   SampleFields fields_;  // scratch
 };

@@ -5,6 +5,7 @@
 #include "chunk_body.hpp"
 #include "modal_model.hpp"
 #include "stream_config.hpp"
+#include "tick.hpp"
 
 #include <cstdint>
 #include <span>
@@ -14,7 +15,7 @@ namespace ocean::codec {
 
 // What a client renders: floats in metres (height) and dimensionless slopes, row-major z * n + x.
 struct ReconstructedFrame {
-  std::uint32_t tick = 0;
+  Tick tick = 0;
   bool complete = false;  // all chunks arrived (only complete frames can be baselines)
   std::uint64_t shared_id = 0;  // nonzero: this very frame is shown by every decoder of a DecodeMemo that got it
   std::vector<float> height, slope_x, slope_z;

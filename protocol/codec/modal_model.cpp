@@ -78,8 +78,8 @@ void ModalModel::advance(ModalState& s) const {
   std::swap(s.prev, s.cur);
 }
 
-void ModalModel::advance(ModalState& s, std::uint32_t steps) const {
-  for (std::uint32_t i = 0; i < steps; ++i) advance(s);
+void ModalModel::advance(ModalState& s, std::uint64_t steps) const {
+  for (std::uint64_t i = 0; i < steps; ++i) advance(s);
 }
 
 void ModalModel::synthesize(const HalfSpectrum& cur, SampleFields& out) {

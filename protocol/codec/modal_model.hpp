@@ -51,7 +51,7 @@ class ModalModel {
 
   // One tick forward, and `steps` ticks forward.
   void advance(ModalState& state) const;
-  void advance(ModalState& state, std::uint32_t steps) const;
+  void advance(ModalState& state, std::uint64_t steps) const;
 
   // Heights (and slopes when streamed) of the field whose spectrum is `cur`.
   void synthesize(const HalfSpectrum& cur, SampleFields& out);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "modal_model.hpp"
+#include "tick.hpp"
 
 #include <cstdint>
 
@@ -11,7 +12,7 @@ namespace ocean::codec {
 // A tick may be encoded from several baselines; `serial` (unique within one Encoder) tells the
 // versions apart. Acks name ticks; the server remembers which StateId it sent each client.
 struct StateId {
-  std::uint32_t tick = 0;
+  Tick tick = 0;
   std::uint32_t serial = 0;
   bool operator==(const StateId&) const = default;
   auto operator<=>(const StateId&) const = default;

@@ -11,40 +11,50 @@ void keep_newer(std::optional<codec::StateId>& slot, codec::StateId state) {
 
 }  // namespace
 
-void BaselineTracker::record_sent(std::uint32_t tick, codec::StateId state, bool reliable, bool key) {
+void BaselineTracker::record_sent(Tick tick, codec::StateId state, bool reliable, bool key) {
   if (key) {
     reset();
-    root_ = tick;
+    root_ = state;
   }
   sent_[tick] = state;
   if (reliable) {
     reliable_ = state;
     if (on_grid(tick)) reliable_aligned_ = state;
   }
-  const std::uint32_t keep = 2 * protocol::kMaxBaselineGap;
+  const Tick keep = 2 * protocol::kMaxBaselineGap;
   while (!sent_.empty() && sent_.begin()->first + keep < tick) sent_.erase(sent_.begin());
 }
 
 void BaselineTracker::on_ack(const protocol::AckWindow& window) {
   bool newest_found = false;
-  for (std::uint32_t age = 0; age <= protocol::kAckWindowTicks && age <= window.latest_tick; ++age) {
-    const std::uint32_t tick = window.latest_tick - age;
+  for (Tick age = 0; age <= protocol::kAckWindowTicks && age <= window.latest_tick; ++age) {
+    const Tick tick = window.latest_tick - age;
     if (!window.contains(tick)) continue;
     const auto found = sent_.find(tick);
-    if (found == sent_.end()) continue;
-    if (!newest_found) keep_newer(acked_, found->second);
+    // The key may be acked long after the window of sent frames moved on (a thin link).
+    const std::optional<codec::StateId> state =
+        found != sent_.end() ? std::optional(found->second) : (root_ && root_->tick == tick ? root_ : std::nullopt);
+    if (!state) continue;
+    if (!newest_found) keep_newer(acked_, *state);
     newest_found = true;
     if (on_grid(tick)) {
-      keep_newer(acked_aligned_, found->second);
+      keep_newer(acked_aligned_, *state);
       return;  // older acked ticks are no better
     }
   }
 }
 
-std::optional<codec::StateId> BaselineTracker::choose(std::uint32_t tick, bool over_udp,
+std::optional<codec::StateId> BaselineTracker::choose(Tick tick, bool over_udp,
                                                       const std::function<bool(codec::StateId)>& encoder_has) const {
+  // The client keeps its newest complete frame however old: a key with nothing sent after it (one
+  // that took long to arrive on a thin link) is a baseline up to the largest lag a record carries;
+  // every other frame only within the ack window.
+  const bool key_is_newest = root_ && !sent_.empty() && sent_.rbegin()->second == *root_;
   auto usable = [&](const std::optional<codec::StateId>& state) {
-    return state && state->tick < tick && tick - state->tick <= protocol::kMaxBaselineGap && encoder_has(*state);
+    if (!state || state->tick >= tick) return false;
+    const Tick gap = tick - state->tick;
+    const Tick limit = key_is_newest && *root_ == *state ? protocol::kMaxFrameLag : protocol::kMaxBaselineGap;
+    return gap <= limit && encoder_has(*state);
   };
   if (over_udp) {
     if (usable(acked_aligned_)) return acked_aligned_;

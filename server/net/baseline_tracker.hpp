@@ -21,13 +21,13 @@ class BaselineTracker {
 
   // reliable: queued on TCP, so the client will hold it without an ack. key: everything the
   // client held before is superseded (a new root; older states are never chosen again).
-  void record_sent(std::uint32_t tick, codec::StateId state, bool reliable, bool key = false);
+  void record_sent(Tick tick, codec::StateId state, bool reliable, bool key = false);
   // Acks name ticks; the states sent for the newest acked tick (and the newest on the grid) become
   // the UDP baselines.
   void on_ack(const protocol::AckWindow& window);
   // The baseline for a delta of `tick`: within kMaxBaselineGap and still held by the encoder; on
   // the grid when one qualifies.
-  std::optional<codec::StateId> choose(std::uint32_t tick, bool over_udp,
+  std::optional<codec::StateId> choose(Tick tick, bool over_udp,
                                        const std::function<bool(codec::StateId)>& encoder_has) const;
   void reset();  // a new scene: nothing sent before predicts anything after
   // True when the client acked `state`: a UDP datagram predicted from it can be decoded whatever
@@ -36,18 +36,18 @@ class BaselineTracker {
   bool is_acked(codec::StateId state) const {
     return (acked_ && *acked_ == state) || (acked_aligned_ && *acked_aligned_ == state);
   }
-  std::optional<std::uint32_t> newest_acked() const { return acked_ ? std::optional(acked_->tick) : std::nullopt; }
+  std::optional<Tick> newest_acked() const { return acked_ ? std::optional(acked_->tick) : std::nullopt; }
   // The state this session's chain started from (its last key), for sharing policy.
-  std::optional<std::uint32_t> root_tick() const { return root_; }
+  std::optional<Tick> root_tick() const { return root_ ? std::optional(root_->tick) : std::nullopt; }
 
  private:
-  bool on_grid(std::uint32_t tick) const { return tick % align_ == 0; }
+  bool on_grid(Tick tick) const { return tick % align_ == 0; }
 
   std::uint32_t align_;
-  std::map<std::uint32_t, codec::StateId> sent_;  // the last 2 windows of ticks
+  std::map<Tick, codec::StateId> sent_;  // the last 2 windows of ticks
   std::optional<codec::StateId> acked_, acked_aligned_;
   std::optional<codec::StateId> reliable_, reliable_aligned_;
-  std::optional<std::uint32_t> root_;
+  std::optional<codec::StateId> root_;  // the last key
 };
 
 }  // namespace ocean::server

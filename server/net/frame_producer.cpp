@@ -47,8 +47,8 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
     ocean_ = std::make_unique<sim::Ocean>(scheduled);
     scene_changed_ = true;
   }
-  if (override_) {
-    ocean_ = std::make_unique<sim::Ocean>(*override_);
+  if (override_ && tick >= override_->from) {
+    ocean_ = std::make_unique<sim::Ocean>(override_->scene);
     override_.reset();
     scene_changed_ = true;
   }

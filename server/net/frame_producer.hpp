@@ -24,9 +24,9 @@ class FrameProducer {
   // to it is dropped (on any thread), so a steady state allocates nothing.
   std::shared_ptr<const TickFrames> produce(std::int64_t tick, double time_s);
 
-  // From the next produce() on, this scene replaces the active one (an admin change); it lasts
+  // From tick `from` on, this scene replaces the active one (an admin change); it lasts
   // until the schedule reaches its next entry. The scene must pass sim::validate.
-  void override_scene(const sim::SceneParams& scene) { override_ = scene; }
+  void override_scene(const sim::SceneParams& scene, std::int64_t from) { override_ = Override{scene, from}; }
   // True when the last produce() switched to a scheduled or overriding scene.
   bool scene_changed() const { return scene_changed_; }
   const sim::SceneParams& scene() const { return ocean_->params(); }
@@ -38,7 +38,11 @@ class FrameProducer {
   SceneSchedule schedule_;
   std::vector<const Profile*> profiles_;
   const sim::SceneParams* scheduled_scene_;  // the schedule entry last applied
-  std::optional<sim::SceneParams> override_;
+  struct Override {
+    sim::SceneParams scene;
+    std::int64_t from;
+  };
+  std::optional<Override> override_;
   std::unique_ptr<sim::Ocean> ocean_;
   std::shared_ptr<BufferPool> pool_;
   bool scene_changed_ = false;

@@ -3,6 +3,8 @@
 // datagram.
 #include "session_hub.hpp"
 
+#include "frame_records.hpp"
+
 #include "hub_helpers.hpp"
 #include "message_builders.hpp"
 #include "server_log.hpp"
@@ -47,7 +49,7 @@ void SessionHub::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip
     const bool moved = session.udp != sender;
     session.udp = sender;
     session.last_heard_s = monotonic_s();
-    const protocol::Bytes ready = protocol::encode(protocol::UdpReady{session.id});
+    const protocol::Bytes ready = protocol::message_datagram(protocol::encode(protocol::UdpReady{session.id}));
     if (!proven) unproven_bytes_out_ += ready.size();  // always smaller than the padded UdpHello
     if (ready.size() <= bytes.size()) server_.send_datagram(ready, sender);
     if (moved) {
@@ -62,14 +64,15 @@ void SessionHub::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip
   session.last_heard_s = monotonic_s();
   switch (message->body_type()) {
     case wire::Body::Ack:
-      session.baselines.on_ack({message->body_as_Ack()->latest_tick(), message->body_as_Ack()->ack_bits()});
+      session.baselines.on_ack({message->body_as_Ack()->latest_tick64(), message->body_as_Ack()->ack_bits()});
       break;
     case wire::Body::KeyframeRequest:
       session.key_requested = true;
       break;
     case wire::Body::Ping: {
       const wire::Ping& ping = *message->body_as_Ping();
-      const protocol::Bytes pong = protocol::encode(protocol::Pong{ping.seq(), ping.client_time_us(), tick_, unix_ms_now()});
+      const protocol::Bytes pong =
+          protocol::message_datagram(protocol::encode(protocol::Pong{ping.seq(), ping.client_time_us(), tick_, unix_ms_now()}));
       server_.send_datagram(pong, sender);
       break;
     }

@@ -4,7 +4,9 @@
 #include "session_hub.hpp"
 
 #include "hub_helpers.hpp"
+#include "frame_records.hpp"
 #include "message_builders.hpp"
+#include "stream_wire.hpp"
 #include "wire_params.hpp"
 
 #include <spdlog/spdlog.h>
@@ -15,25 +17,31 @@
 
 namespace ocean::server {
 
-void SessionHub::apply_scene_change(const TickFrames& frames) {
-  scene_ = frames.scene;
-  for (auto& stream : streams_) stream->reset(stream_config(stream->profile(), scene_));
-  for (auto& [id, session] : sessions_) {
-    const std::uint32_t request_id = session->scene_request_id.value_or(0);
-    session->scene_request_id.reset();
-    send_control(*session, protocol::encode(protocol::SceneUpdate{request_id, tick_, wire_scene(scene_)}));
-    session->baselines.reset();  // the codec cannot predict across a physics change
-    session->recent_udp.clear();
-    session->need_key = true;
+protocol::SceneUpdate SessionHub::scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const {
+  return protocol::SceneUpdate{request_id, scene.from, wire_scene(scene.scene), scene.serial};
+}
+
+// Both sides of every stream switch scene at its first tick with no keyframe: the encoders learn
+// it now, the clients by the SceneUpdate (sent a lead ahead, so it arrives before that tick's
+// frames; a client that missed it refuses those frames as unknown_scene and asks for a key).
+void SessionHub::announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester,
+                          std::uint32_t request_id) {
+  for (const AnnouncedScene& scene : scenes) {
+    const codec::SceneModelParams model = codec::scene_model_params(wire_scene(scene.scene));
+    for (auto& stream : streams_) stream->set_scene(scene.from, scene.serial, model);
+    for (auto& [id, session] : sessions_)
+      send_control(*session, protocol::encode(scene_update(scene, requester == id ? request_id : 0)));
+    spdlog::info("scene {} announced: from tick {} (wind {} m/s towards {} deg, depth {} m)", scene.serial, scene.from,
+                 scene.scene.wind_speed_mps, scene.scene.wind_dir_deg, scene.scene.depth_m);
   }
 }
 
 void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
   if (stopping_) return;
-  tick_ = static_cast<std::uint32_t>(frames->tick);
-  if (frames->scene_changed && have_tick_) apply_scene_change(*frames);
-  scene_ = frames->scene;
+  tick_ = static_cast<Tick>(frames->tick);
+  announce(scenes_.announce(tick_));
   have_tick_ = true;
+  scenes_.forget_before(tick_ > protocol::kMaxFrameLag ? tick_ - protocol::kMaxFrameLag : 0);
   for (auto& stream : streams_)
     for (const ProfileFrame& frame : frames->frames)
       if (frame.profile == &stream->profile()) stream->add_truth(tick_, frame.frame);
@@ -68,7 +76,7 @@ void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
   sweep_timeouts(now);
 }
 
-void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
+void SessionHub::serve(Session& session, Tick tick, double now_s,
                        std::vector<std::pair<const void*, codec::StateId>>& bases) {
   ProfileStream& stream = *session.stream;
   if (!session.link->open() || !stream.is_frame_tick(tick)) return;
@@ -133,19 +141,19 @@ void SessionHub::serve(Session& session, std::uint32_t tick, double now_s,
 // acked yet (newest udp_redundancy of them), oldest first, as one FrameBundle datagram; sessions
 // with the same history share the bundle's bytes. Copies are dropped first when the bandwidth
 // budget or the datagram size cannot hold them.
-bool SessionHub::send_udp_frame(Session& session, std::uint32_t tick, const SharedFrame& frame, double now_s) {
+bool SessionHub::send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s) {
   ServerMetrics& metrics = server_.metrics();
   const std::size_t redundancy = static_cast<std::size_t>(server_.config().udp_redundancy);
-  std::vector<const SharedBytes*> parts;
-  if (frame.messages.size() == 1 && redundancy > 0) {
+  std::vector<const RecentFrame*> parts;
+  if (frame.datagrams.size() == 1 && redundancy > 0) {
     const auto acked = session.baselines.newest_acked();
     for (const RecentFrame& r : session.recent_udp)
-      if (!acked || r.tick > *acked) parts.push_back(&r.message);
+      if (!acked || r.tick > *acked) parts.push_back(&r);
     if (parts.size() > redundancy) parts.erase(parts.begin(), parts.end() - static_cast<std::ptrdiff_t>(redundancy));
   }
   SharedBytes bundle;
   while (!parts.empty()) {
-    bundle = bundle_of(parts, frame.messages.front());
+    bundle = bundle_of(parts, frame);
     if (bundle->size() <= protocol::kMaxDatagram && session.udp_bucket.try_take(bundle->size(), now_s)) break;
     bundle.reset();
     parts.erase(parts.begin());  // the oldest copy goes first
@@ -155,12 +163,12 @@ bool SessionHub::send_udp_frame(Session& session, std::uint32_t tick, const Shar
     metrics.bytes_sent("udp").inc(static_cast<double>(bundle->size()));
     metrics.bundled_copies.inc(static_cast<double>(parts.size()));
   } else {
-    if (!session.udp_bucket.try_take(frame.bytes, now_s)) return false;
-    for (const SharedBytes& message : frame.messages) server_.send_datagram(*message, *session.udp);
-    metrics.bytes_sent("udp").inc(static_cast<double>(frame.bytes));
+    if (!session.udp_bucket.try_take(frame.datagram_bytes, now_s)) return false;
+    for (const SharedBytes& datagram : frame.datagrams) server_.send_datagram(*datagram, *session.udp);
+    metrics.bytes_sent("udp").inc(static_cast<double>(frame.datagram_bytes));
   }
-  if (frame.messages.size() == 1) {
-    session.recent_udp.push_back(RecentFrame{tick, frame.messages.front()});
+  if (frame.datagrams.size() == 1) {
+    session.recent_udp.push_back(RecentFrame{tick, frame.encoded});
     while (session.recent_udp.size() > kMaxUdpRedundancy) session.recent_udp.pop_front();
   } else {
     session.recent_udp.clear();  // multi-chunk frames are not bundled
@@ -168,22 +176,22 @@ bool SessionHub::send_udp_frame(Session& session, std::uint32_t tick, const Shar
   return true;
 }
 
-SharedBytes SessionHub::bundle_of(const std::vector<const SharedBytes*>& copies, const SharedBytes& newest) {
-  std::vector<const protocol::Bytes*> key;
-  for (const SharedBytes* copy : copies) key.push_back(copy->get());
-  key.push_back(newest.get());
+SharedBytes SessionHub::bundle_of(const std::vector<const RecentFrame*>& copies, const SharedFrame& newest) {
+  std::vector<const codec::Chunk*> key;
+  for (const RecentFrame* copy : copies) key.push_back(&copy->frame->chunks.front());
+  key.push_back(&newest.encoded->chunks.front());
   auto [it, fresh] = bundles_.try_emplace(std::move(key));
   if (fresh) {
-    std::vector<std::span<const std::uint8_t>> messages;
-    for (const protocol::Bytes* bytes : it->first) messages.emplace_back(*bytes);
-    it->second = std::make_shared<const protocol::Bytes>(protocol::encode_bundle(messages));
+    std::vector<protocol::FrameRecord> records;
+    for (const codec::Chunk* chunk : it->first) records.push_back(record_of(*chunk));
+    it->second = std::make_shared<const protocol::Bytes>(protocol::frames_datagram(records));
   }
   return it->second;
 }
 
-bool SessionHub::is_key_tick(const ProfileStream& stream, std::uint32_t tick) const {
+bool SessionHub::is_key_tick(const ProfileStream& stream, Tick tick) const {
   const auto frames = std::max<long>(1, std::lround(options_.key_period_s * stream.profile().rate_hz));
-  return tick % (stream.tick_step() * static_cast<std::uint32_t>(frames)) == 0;
+  return tick % (static_cast<Tick>(stream.tick_step()) * static_cast<Tick>(frames)) == 0;
 }
 
 // Sessions keyed at different ticks hold different states forever (a key is lossy), so every
@@ -192,14 +200,14 @@ bool SessionHub::is_key_tick(const ProfileStream& stream, std::uint32_t tick) co
 // it is within the cap, and then nothing more is keyed. Two at a time keeps the keys' bytes and
 // the clients' key decodes from coming in one burst; a session pays at most one extra key per
 // root_merge_age_s.
-void SessionHub::limit_roots(ProfileStream& stream, std::uint32_t tick) {
-  std::map<std::uint32_t, std::vector<Session*>> roots;
+void SessionHub::limit_roots(ProfileStream& stream, Tick tick) {
+  std::map<Tick, std::vector<Session*>> roots;
   for (auto& [id, session] : sessions_)
     if (session->stream == &stream && !session->need_key)
       if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
   if (roots.size() <= options_.max_roots) return;
   const double min_age_ticks = options_.root_merge_age_s * server_.config().tick_rate_hz;
-  std::vector<std::pair<std::size_t, std::uint32_t>> old;  // (sessions, root)
+  std::vector<std::pair<std::size_t, Tick>> old;  // (sessions, root)
   for (const auto& [root, members] : roots)
     if (static_cast<double>(tick - root) >= min_age_ticks) old.emplace_back(members.size(), root);
   if (old.size() < 2) return;  // merging one root into a new one would not lower the count

@@ -1,5 +1,6 @@
 #include "profile_stream.hpp"
 
+#include "frame_records.hpp"
 #include "message_builders.hpp"
 #include "wire_limits.hpp"
 
@@ -12,6 +13,7 @@ codec::EncoderOptions stream_encoder_options() {
   codec::EncoderOptions options;
   options.max_payload = protocol::kMaxChunkPayloadUdp;
   options.history_ticks = protocol::kMaxBaselineGap + 2;  // the acked baseline plus the tick before a key
+  options.key_history_ticks = protocol::kMaxFrameLag;    // a key is a baseline however late it is acked
   return options;
 }
 
@@ -26,24 +28,23 @@ ProfileStream::ProfileStream(const Profile& profile, const codec::StreamConfig& 
                                 std::to_string(config.rate_hz) + " Hz");
 }
 
-void ProfileStream::add_truth(std::uint32_t tick, const sim::Frame& frame) {
+void ProfileStream::set_scene(Tick from, std::uint32_t serial, const codec::SceneModelParams& scene) {
+  encoder_->set_scene(from, static_cast<std::uint8_t>(serial), scene);
+}
+
+void ProfileStream::add_truth(Tick tick, const sim::Frame& frame) {
   encoded_.clear();
   encode_seconds_ = 0.0;
   encoder_->add_truth(tick, codec::TruthView{frame.height, frame.slope_x, frame.slope_z});
-  have_previous_ = have_newest_;
-  previous_tick_ = newest_tick_;
   have_newest_ = true;
   newest_tick_ = tick;
 }
 
-void ProfileStream::reset(const codec::StreamConfig& config) {
-  config_ = config;
-  encoder_ = std::make_unique<codec::Encoder>(config, stream_encoder_options());
-  encoded_.clear();
-  have_previous_ = have_newest_ = false;
+protocol::FrameRecord record_of(const codec::Chunk& chunk) {
+  return protocol::FrameRecord{chunk.tick, chunk.baseline, chunk.key, chunk.index, chunk.count, chunk.payload};
 }
 
-const SharedFrame& ProfileStream::key(std::uint32_t tick) {
+const SharedFrame& ProfileStream::key(Tick tick) {
   const auto found = encoded_.find({tick, codec::StateId{tick, 0}});
   if (found != encoded_.end()) return found->second;
   const auto start = std::chrono::steady_clock::now();
@@ -52,7 +53,7 @@ const SharedFrame& ProfileStream::key(std::uint32_t tick) {
   return remember(tick, codec::StateId{tick, 0}, std::move(frame), took.count());
 }
 
-const SharedFrame& ProfileStream::delta(std::uint32_t tick, codec::StateId baseline) {
+const SharedFrame& ProfileStream::delta(Tick tick, codec::StateId baseline) {
   const auto found = encoded_.find({tick, baseline});
   if (found != encoded_.end()) return found->second;
   const auto start = std::chrono::steady_clock::now();
@@ -61,18 +62,21 @@ const SharedFrame& ProfileStream::delta(std::uint32_t tick, codec::StateId basel
   return remember(tick, baseline, std::move(frame), took.count());
 }
 
-const SharedFrame& ProfileStream::remember(std::uint32_t tick, codec::StateId base,
+const SharedFrame& ProfileStream::remember(Tick tick, codec::StateId base,
                                            std::shared_ptr<const codec::EncodedFrame> frame, double seconds) {
   SharedFrame shared;
-  const protocol::FrameHeader header{tick, frame->key ? tick : frame->base.tick, frame->key, profile_->id};
   for (const codec::Chunk& chunk : frame->chunks) {
-    auto bytes = std::make_shared<const protocol::Bytes>(
-        protocol::encode(protocol::FrameChunk{header, chunk.index, chunk.count, chunk.payload}));
-    shared.bytes += bytes->size();
-    shared.messages.push_back(std::move(bytes));
+    const protocol::FrameRecord record = record_of(chunk);
+    const std::span<const protocol::FrameRecord> one(&record, 1);
+    auto message = std::make_shared<const protocol::Bytes>(protocol::encode(protocol::FrameData{protocol::encode_frame_block(one)}));
+    auto datagram = std::make_shared<const protocol::Bytes>(protocol::frames_datagram(one));
+    shared.bytes += message->size();
+    shared.datagram_bytes += datagram->size();
+    shared.messages.push_back(std::move(message));
+    shared.datagrams.push_back(std::move(datagram));
   }
-  if (!frame->key) mean_delta_bytes_ = mean_delta_bytes_ == 0.0 ? static_cast<double>(shared.bytes)
-                                                                : 0.9 * mean_delta_bytes_ + 0.1 * static_cast<double>(shared.bytes);
+  const auto sent = static_cast<double>(shared.datagram_bytes);
+  if (!frame->key) mean_delta_bytes_ = mean_delta_bytes_ == 0.0 ? sent : 0.9 * mean_delta_bytes_ + 0.1 * sent;
   encode_seconds_ += seconds;
   shared.encoded = std::move(frame);
   return encoded_.emplace(std::make_pair(tick, base), std::move(shared)).first->second;

@@ -6,7 +6,9 @@
 
 #include "encoder.hpp"
 #include "frame.hpp"
+#include "frame_records.hpp"
 #include "message_types.hpp"
+#include "scene_model.hpp"
 #include "profile.hpp"
 #include "stream_config.hpp"
 
@@ -19,12 +21,17 @@ namespace ocean::server {
 
 using SharedBytes = std::shared_ptr<const protocol::Bytes>;
 
-// One encoded frame, ready for any session: the codec's frame and its chunks as wire messages.
+// One encoded frame, ready for any session: the codec's frame and its chunks as wire bytes.
 struct SharedFrame {
   std::shared_ptr<const codec::EncodedFrame> encoded;
-  std::vector<SharedBytes> messages;  // one FrameChunk message per chunk, each <= kMaxDatagram
-  std::size_t bytes = 0;              // sum of message sizes
+  std::vector<SharedBytes> messages;   // TCP: one FrameData message per chunk
+  std::size_t bytes = 0;               // sum of message sizes
+  std::vector<SharedBytes> datagrams;  // UDP: one frames datagram per chunk, each <= kMaxDatagram
+  std::size_t datagram_bytes = 0;      // sum of datagram sizes
 };
+
+// The record of one chunk of an encoded frame (its payload views the frame's chunk).
+protocol::FrameRecord record_of(const codec::Chunk& chunk);
 
 class ProfileStream {
  public:
@@ -35,17 +42,18 @@ class ProfileStream {
   const Profile& profile() const { return *profile_; }
   const codec::StreamConfig& config() const { return config_; }
   std::uint32_t tick_step() const { return tick_step_; }
-  bool is_frame_tick(std::uint32_t tick) const { return tick % tick_step_ == 0; }
+  bool is_frame_tick(Tick tick) const { return tick % tick_step_ == 0; }
 
-  // Every tick (a key's velocity needs the tick before it). Forgets the previous tick's encodings.
-  void add_truth(std::uint32_t tick, const sim::Frame& frame);
-  // A new scene: the codec cannot predict across a physics change; drop every state.
-  void reset(const codec::StreamConfig& config);
+  // A scene announced to the clients (SceneUpdate), in force from tick `from` on.
+  void set_scene(Tick from, std::uint32_t serial, const codec::SceneModelParams& scene);
 
-  // A key needs the truth of the tick before it too (its velocity), in the same scene.
-  bool can_key(std::uint32_t tick) const { return have_previous_ && previous_tick_ + 1 == tick; }
-  const SharedFrame& key(std::uint32_t tick);
-  const SharedFrame& delta(std::uint32_t tick, codec::StateId baseline);
+  // Every tick. Forgets the previous tick's encodings.
+  void add_truth(Tick tick, const sim::Frame& frame);
+
+  // A key of the newest tick added (the scene model's state plus corrections).
+  bool can_key(Tick tick) const { return have_newest_ && newest_tick_ == tick; }
+  const SharedFrame& key(Tick tick);
+  const SharedFrame& delta(Tick tick, codec::StateId baseline);
   bool has_state(codec::StateId id) const { return encoder_->has_state(id); }
 
   // Encodes run for the current tick (each a distinct (tick, baseline)), and their total time.
@@ -55,17 +63,17 @@ class ProfileStream {
   double mean_delta_bytes() const { return mean_delta_bytes_; }
 
  private:
-  const SharedFrame& remember(std::uint32_t tick, codec::StateId base,
-                              std::shared_ptr<const codec::EncodedFrame> frame, double seconds);
+  const SharedFrame& remember(Tick tick, codec::StateId base, std::shared_ptr<const codec::EncodedFrame> frame,
+                              double seconds);
 
   const Profile* profile_;
   codec::StreamConfig config_;
   std::uint32_t tick_step_;
   std::unique_ptr<codec::Encoder> encoder_;
-  std::map<std::pair<std::uint32_t, codec::StateId>, SharedFrame> encoded_;  // this tick only
+  std::map<std::pair<Tick, codec::StateId>, SharedFrame> encoded_;  // this tick only
   double encode_seconds_ = 0.0;
-  std::uint32_t previous_tick_ = 0, newest_tick_ = 0;  // the last two ticks added since a reset
-  bool have_previous_ = false, have_newest_ = false;
+  Tick newest_tick_ = 0;
+  bool have_newest_ = false;
   double mean_delta_bytes_ = 0.0;
 };
 

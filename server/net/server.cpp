@@ -74,7 +74,8 @@ Server::Server(ServerConfig config)
       cookie_key_(cookie_key_from(config_)),
       acceptor_(open_tcp_acceptor(context_, config_.listen, "clients")),
       udp_socket_(open_udp_socket(context_, udp_address(config_, acceptor_.local_endpoint().port()))),
-      producer_(checked_schedule(config_), offered_profiles(config_)),
+      schedule_(checked_schedule(config_)),
+      producer_(schedule_, offered_profiles(config_)),
       tick_loop_(TickClock(config_.tick_rate_hz, config_.epoch_unix_ms),
                  [this](const TickDecision& decision) { on_tick(decision); }) {
   // Fail now, with the option to change, rather than on the simulation thread at the first tick.
@@ -183,9 +184,9 @@ void Server::do_receive() {
   });
 }
 
-void Server::request_scene(const sim::SceneParams& scene) {
+void Server::request_scene(const sim::SceneParams& scene, std::int64_t from) {
   std::lock_guard lock(scene_request_mutex_);
-  scene_request_ = scene;
+  scene_request_ = std::make_pair(scene, from);
 }
 
 bool Server::send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to) {
@@ -199,7 +200,7 @@ void Server::on_tick(const TickDecision& decision) {
   const auto start = std::chrono::steady_clock::now();
   {
     std::lock_guard lock(scene_request_mutex_);
-    if (scene_request_) producer_.override_scene(*scene_request_);
+    if (scene_request_) producer_.override_scene(scene_request_->first, scene_request_->second);
     scene_request_.reset();
   }
   const double time_s = tick_loop_.clock().sim_time_s(decision.tick);

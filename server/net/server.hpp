@@ -52,8 +52,11 @@ class Server {
   void set_datagram_handler(DatagramHandler handler) { datagram_handler_ = std::move(handler); }
   // Runs on the network thread when shutdown begins, before the context runs dry (Bye to all).
   void set_stop_handler(StopHandler handler) { stop_handler_ = std::move(handler); }
-  // Thread-safe: the simulation switches to this scene at the next tick (admin ParamChange).
-  void request_scene(const sim::SceneParams& scene);
+  // Thread-safe: the simulation switches to this scene at tick `from` (admin ParamChange; the
+  // hub announced it to the clients first).
+  void request_scene(const sim::SceneParams& scene, std::int64_t from);
+  // The config's schedule, checked (immutable).
+  const SceneSchedule& schedule() const { return schedule_; }
   // Sends one datagram without blocking; false when the socket refused it (the frame is lost).
   bool send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to);
 
@@ -99,11 +102,12 @@ class Server {
   DatagramHandler datagram_handler_;
   StopHandler stop_handler_;
   std::mutex scene_request_mutex_;
-  std::optional<sim::SceneParams> scene_request_;  // guarded by scene_request_mutex_
+  std::optional<std::pair<sim::SceneParams, std::int64_t>> scene_request_;  // guarded by scene_request_mutex_
 
   std::array<std::uint8_t, 1500> datagram_{};
   asio::ip::udp::endpoint datagram_sender_;
 
+  SceneSchedule schedule_;
   FrameProducer producer_;  // used only on the simulation thread
   BoundedQueue<std::shared_ptr<const TickFrames>> frames_{4};
   std::atomic<bool> ready_{false};

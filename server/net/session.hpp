@@ -21,8 +21,8 @@ namespace ocean::server {
 
 // A single-chunk frame sent on UDP, kept to be copied into the next datagrams until acked.
 struct RecentFrame {
-  std::uint32_t tick = 0;
-  SharedBytes message;
+  Tick tick = 0;
+  std::shared_ptr<const codec::EncodedFrame> frame;
 };
 
 struct Session {
@@ -43,7 +43,6 @@ struct Session {
   double bytes_per_s = 0.0;                 // the client's budget; 0 = unlimited
   double opened_s = 0.0;
   double last_heard_s = 0.0;
-  std::optional<std::uint32_t> scene_request_id;  // this session's accepted ParamChange
 
   bool on_udp() const { return wants_udp && udp.has_value(); }
   const char* transport_name() const { return on_udp() ? "udp" : "tcp"; }

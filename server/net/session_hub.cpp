@@ -5,6 +5,8 @@
 #include "message_builders.hpp"
 #include "message_readers.hpp"
 #include "server_log.hpp"
+#include "tick_clock.hpp"
+#include "tick_loop.hpp"
 #include "verify_message.hpp"
 #include "wire_params.hpp"
 
@@ -26,11 +28,13 @@ SharedBytes share(protocol::Bytes bytes) { return std::make_shared<const protoco
 }  // namespace
 
 SessionHub::SessionHub(Server& server, SessionHubOptions options)
-    : server_(server), options_(options), scene_(server.config().scene) {
+    : server_(server),
+      options_(options),
+      scenes_(server.schedule(), static_cast<Tick>(std::lround(options.scene_lead_s * server.config().tick_rate_hz))) {
   for (const std::string& name : server_.config().profiles) {
     const Profile* profile = find_profile(std::string_view(name));
     if (!profile) continue;
-    const codec::StreamConfig config = stream_config(*profile, scene_);
+    const codec::StreamConfig config = stream_config(*profile, server_.config().scene);
     if (const std::string error = codec::validate(config); !error.empty()) {
       spdlog::warn("profile {} is not offered to clients: {}", profile->name, error);
       continue;
@@ -38,6 +42,11 @@ SessionHub::SessionHub(Server& server, SessionHubOptions options)
     streams_.push_back(std::make_unique<ProfileStream>(*profile, config));
   }
   if (streams_.empty()) throw std::invalid_argument("--profiles: no offered profile can be streamed by the codec");
+  // The scenes in force now and within the lead, before the first tick: a Hello may come first.
+  const std::int64_t now_tick = TickClock(server_.config().tick_rate_hz, server_.config().epoch_unix_ms)
+                                    .tick_at(system_unix_ns());
+  tick_ = static_cast<Tick>(std::max<std::int64_t>(0, now_tick));
+  announce(scenes_.start(tick_));
   for (std::size_t r = 0; r < datagram_rejects_.size(); ++r)
     datagram_rejects_[r] = &server_.metrics().rejects(protocol::to_string(static_cast<protocol::Reason>(r)));
   server_.set_connection_handler([this](asio::ip::tcp::socket socket) { on_connection(std::move(socket)); });
@@ -159,7 +168,7 @@ void SessionHub::on_tcp_message(const std::shared_ptr<Session>& session, std::sp
   }
   switch (message.body_type()) {
     case wire::Body::Ack:
-      session->baselines.on_ack({message.body_as_Ack()->latest_tick(), message.body_as_Ack()->ack_bits()});
+      session->baselines.on_ack({message.body_as_Ack()->latest_tick64(), message.body_as_Ack()->ack_bits()});
       break;
     case wire::Body::KeyframeRequest:
       session->key_requested = true;
@@ -238,8 +247,11 @@ void SessionHub::on_hello(const std::shared_ptr<Session>& session, const wire::H
 
   protocol::Welcome welcome;
   welcome.session_id = session->id;
+  const AnnouncedScene& scene = scenes_.in_force(tick_);
   welcome.stream = wire_stream(stream->config());
-  welcome.scene = wire_scene(scene_);
+  welcome.scene = wire_scene(scene.scene);
+  welcome.stream.depth_m = welcome.scene.depth_m;  // the depth in force now; SceneUpdates carry later ones
+  welcome.scene_serial = scene.serial;
   for (const auto& s : streams_) welcome.offered_profiles.push_back(s->profile().id);
   welcome.epoch_unix_ms = server_.config().epoch_unix_ms;
   welcome.current_tick = tick_;
@@ -250,6 +262,7 @@ void SessionHub::on_hello(const std::shared_ptr<Session>& session, const wire::H
   }
   welcome.max_message_bytes = protocol::kDefaultMaxMessageBytes;
   send_control(*session, protocol::encode(welcome));
+  for (const AnnouncedScene& later : scenes_.after(tick_)) send_control(*session, protocol::encode(scene_update(later, 0)));
   sessions_.emplace(session->id, session);
   log_connect(session->id, session->wants_udp ? "udp" : "tcp", session->peer, stream->profile().name);
   update_client_gauges();
@@ -265,7 +278,8 @@ void SessionHub::on_param_change(const std::shared_ptr<Session>& session, const 
                                       protocol::Reason::unauthorized,
                                       "unauthorized in ParamChange.admin_token: expected the server's admin token"}));
   }
-  sim::SceneParams scene = scene_;
+  const Tick from = tick_ + scenes_.lead_ticks();
+  sim::SceneParams scene = scenes_.in_force(from).scene;
   if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;
   if (change.wind_dir_deg) scene.wind_dir_deg = *change.wind_dir_deg;
   if (change.amplitude) scene.amplitude = *change.amplitude;
@@ -273,13 +287,13 @@ void SessionHub::on_param_change(const std::shared_ptr<Session>& session, const 
   if (change.spectrum) scene.spectrum = static_cast<sim::SpectrumKind>(*change.spectrum);
   if (const std::string error = sim::validate(scene); !error.empty())
     return send_control(*session, protocol::encode(protocol::Error{protocol::Reason::out_of_range, error.substr(0, 256)}));
-  for (auto& [id, s] : sessions_) s->scene_request_id.reset();
-  session->scene_request_id = change.request_id;
-  server_.request_scene(scene);
+  server_.request_scene(scene, static_cast<std::int64_t>(from));
+  announce({scenes_.add_admin(tick_, scene)}, session->id, change.request_id);
   server_.metrics().param_changes.inc();
-  spdlog::info("param_change accepted session={} peer={} request={} wind={} m/s dir={} deg amplitude={} choppiness={}",
-               session->id, session->peer, change.request_id, scene.wind_speed_mps, scene.wind_dir_deg, scene.amplitude,
-               scene.choppiness);
+  spdlog::info("param_change accepted session={} peer={} request={} from tick {}: wind={} m/s dir={} deg amplitude={} "
+               "choppiness={}",
+               session->id, session->peer, change.request_id, from, scene.wind_speed_mps, scene.wind_dir_deg,
+               scene.amplitude, scene.choppiness);
 }
 
 void SessionHub::update_client_gauges() {

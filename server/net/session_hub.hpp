@@ -5,6 +5,7 @@
 #pragma once
 
 #include "profile_stream.hpp"
+#include "scene_announcements.hpp"
 #include "server.hpp"
 #include "session.hpp"
 
@@ -32,11 +33,14 @@ struct SessionHubOptions {
   double key_period_s = 0.5;
   std::size_t max_roots = 8;
   double root_merge_age_s = 10.0;
+  // A scene change reaches every client this long before it takes effect (a SceneUpdate on TCP
+  // must arrive before the first frame of the new scene, even on a slow link).
+  double scene_lead_s = 1.0;
 };
 
 // What the last tick did, for metrics and tests.
 struct HubTickStats {
-  std::uint32_t tick = 0;
+  Tick tick = 0;
   std::size_t sessions_served = 0;     // sessions sent a frame this tick
   std::size_t encodes = 0;             // encoder runs this tick, all profiles
   std::size_t distinct_baselines = 0;  // distinct (profile, baseline or key) among those sessions
@@ -72,13 +76,16 @@ class SessionHub {
   void on_frames(const std::shared_ptr<const TickFrames>& frames);
   void on_stop();
 
-  void serve(Session& session, std::uint32_t tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
-  bool send_udp_frame(Session& session, std::uint32_t tick, const SharedFrame& frame, double now_s);
-  SharedBytes bundle_of(const std::vector<const SharedBytes*>& copies, const SharedBytes& newest);
-  void limit_roots(ProfileStream& stream, std::uint32_t tick);
-  bool is_key_tick(const ProfileStream& stream, std::uint32_t tick) const;
+  void serve(Session& session, Tick tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
+  bool send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s);
+  SharedBytes bundle_of(const std::vector<const RecentFrame*>& copies, const SharedFrame& newest);
+  void limit_roots(ProfileStream& stream, Tick tick);
+  bool is_key_tick(const ProfileStream& stream, Tick tick) const;
   void sweep_timeouts(double now_s);
-  void apply_scene_change(const TickFrames& frames);
+  // Tells every stream and every session of scenes that take effect within the lead.
+  void announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester = {},
+                std::uint32_t request_id = 0);
+  protocol::SceneUpdate scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const;
   void refuse(Session& session, protocol::Reason reason, const std::string& text);
   void end(Session& session, wire::ByeReason reason, const std::string& text);
   void send_control(Session& session, protocol::Bytes bytes);
@@ -93,8 +100,8 @@ class SessionHub {
   std::vector<std::unique_ptr<ProfileStream>> streams_;
   std::map<std::uint64_t, std::shared_ptr<Session>> sessions_;  // welcomed, by id
   std::vector<std::shared_ptr<Session>> handshaking_;
-  sim::SceneParams scene_;
-  std::uint32_t tick_ = 0;
+  SceneAnnouncements scenes_;
+  Tick tick_ = 0;
   bool have_tick_ = false;
   bool stopping_ = false;
   HubTickStats last_tick_;
@@ -102,7 +109,7 @@ class SessionHub {
   TickObserver tick_observer_;
   std::array<Counter*, 29> datagram_rejects_{};  // by protocol::Reason, made up front: no allocation per datagram
   alignas(8) std::array<std::uint8_t, protocol::kMaxDatagram> datagram_{};
-  std::map<std::vector<const protocol::Bytes*>, SharedBytes> bundles_;  // this tick's, by their chunks
+  std::map<std::vector<const codec::Chunk*>, SharedBytes> bundles_;  // this tick's, by their chunks
   std::uint64_t unproven_bytes_in_ = 0;
   std::uint64_t unproven_bytes_out_ = 0;
   std::size_t peak_closed_queued_bytes_ = 0;

@@ -11,6 +11,8 @@
 
 #include "ack_window.hpp"
 #include "encoder.hpp"
+#include "frame_records.hpp"
+#include "stream_wire.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
 #include "profile.hpp"
@@ -40,12 +42,13 @@ class FakeServer {
         truth_(profile_.grid, 64.0, options.noise_m) {
     period_ = 1.0 / profile_.rate_hz;
     truth_.at(0, period_);
+    encoder_.set_scene(0, 0, codec::scene_model_params(welcome().scene));
     encoder_.add_truth(0, truth_.view());
   }
 
   const codec::StreamConfig& config() const { return config_; }
   double tick_period_s() const { return period_; }
-  std::uint32_t tick() const { return tick_; }
+  Tick tick() const { return tick_; }
   bool udp_ready() const { return udp_ready_; }
 
   protocol::Welcome welcome() const {
@@ -63,6 +66,11 @@ class FakeServer {
     w.stream.choppy = profile_.choppy;
     w.scene.size_x = w.scene.size_z = std::max<std::uint16_t>(64, profile_.grid);
     w.scene.patch_x_m = w.scene.patch_z_m = 64.0;
+    w.scene.wind_speed_mps = 10.0;
+    w.scene.fetch_m = 100000.0;
+    w.scene.amplitude = 1.0;
+    w.scene.gravity_mps2 = 9.81;
+    w.scene.seed = 1;
     w.offered_profiles = {profile_.id};
     w.current_tick = tick_;
     w.tick_period_s = period_;
@@ -104,17 +112,21 @@ class FakeServer {
     if (!udp) last_tcp_ = tick_;
     if (frame->key) ++keyframes_sent;
     for (const codec::Chunk& c : frame->chunks) {
-      protocol::FrameChunk chunk{{c.tick, c.baseline, c.key, profile_.id}, c.index, c.count, c.payload};
-      (udp ? to_client_udp : to_client_tcp).push_back(protocol::encode(chunk));
+      const protocol::FrameRecord record{c.tick, c.baseline, c.key, c.index, c.count, c.payload};
+      const std::span<const protocol::FrameRecord> one(&record, 1);
+      if (udp)
+        to_client_udp.push_back(protocol::frames_datagram(one));
+      else
+        to_client_tcp.push_back(protocol::encode(protocol::FrameData{protocol::encode_frame_block(one)}));
     }
   }
 
   // What the encoder says the client shows for tick once complete (null if never sent).
-  const codec::EncodedFrame* sent_frame(std::uint32_t tick) const {
+  const codec::EncodedFrame* sent_frame(Tick tick) const {
     auto it = frames_.find(tick);
     return it == frames_.end() ? nullptr : it->second.get();
   }
-  const codec::ModalState* sent_state(std::uint32_t tick) const {
+  const codec::ModalState* sent_state(Tick tick) const {
     auto it = sent_.find(tick);
     return it == sent_.end() ? nullptr : encoder_.state(it->second);
   }
@@ -160,7 +172,7 @@ class FakeServer {
       ++udp_hellos;
       if (options_.answer_udp_hello && options_.offer_udp) {
         udp_ready_ = true;
-        to_client_udp.push_back(protocol::encode(protocol::UdpReady{kSessionId}));
+        to_client_udp.push_back(protocol::message_datagram(protocol::encode(protocol::UdpReady{kSessionId})));
       }
     } else if (auto* ack = std::get_if<protocol::Ack>(&m)) {
       acks.push_back(*ack);
@@ -178,7 +190,10 @@ class FakeServer {
     } else if (auto* ping = std::get_if<protocol::Ping>(&m)) {
       ++pings;
       protocol::Pong pong{ping->seq, ping->client_time_us, tick_, static_cast<std::int64_t>(now * 1000)};
-      (transport == wire::Transport::udp ? to_client_udp : to_client_tcp).push_back(protocol::encode(pong));
+      if (transport == wire::Transport::udp)
+        to_client_udp.push_back(protocol::message_datagram(protocol::encode(pong)));
+      else
+        to_client_tcp.push_back(protocol::encode(pong));
     }
   }
 
@@ -188,13 +203,13 @@ class FakeServer {
   codec::Encoder encoder_;
   WaveTruth truth_;
   double period_ = 1.0 / 30.0;
-  std::uint32_t tick_ = 0;
+  Tick tick_ = 0;
   bool welcomed_ = false, udp_ready_ = false, key_needed_ = false;
   std::optional<protocol::AckWindow> acked_;
-  std::optional<std::uint32_t> last_sent_;
-  std::uint32_t last_tcp_ = 0;
-  std::map<std::uint32_t, codec::StateId> sent_;
-  std::map<std::uint32_t, std::shared_ptr<const codec::EncodedFrame>> frames_;
+  std::optional<Tick> last_sent_;
+  Tick last_tcp_ = 0;
+  std::map<Tick, codec::StateId> sent_;
+  std::map<Tick, std::shared_ptr<const codec::EncodedFrame>> frames_;
 };
 
 }  // namespace ocean::client::test

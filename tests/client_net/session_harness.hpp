@@ -79,10 +79,10 @@ class SessionHarness {
     if (!v || v.message->body_type() != wire::Body::Ack) return;
     ++acks_checked;
     const auto* ack = v.message->body_as_Ack();
-    const protocol::AckWindow w{ack->latest_tick(), ack->ack_bits()};
+    const protocol::AckWindow w{ack->latest_tick64(), ack->ack_bits()};
     const codec::Decoder* d = session.decoder();
-    for (std::uint32_t age = 0; age <= protocol::kAckWindowTicks && age <= w.latest_tick; ++age) {
-      const std::uint32_t t = w.latest_tick - age;
+    for (Tick age = 0; age <= protocol::kAckWindowTicks && age <= w.latest_tick; ++age) {
+      const Tick t = w.latest_tick - age;
       const bool complete = d->is_complete(t);
       // Exactly the complete ticks, and the client's state for each equals the encoder's.
       if (w.contains(t) != complete) ++ack_mismatches;

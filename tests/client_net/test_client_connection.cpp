@@ -28,6 +28,7 @@ class TinyServer {
         first_tick_(first_tick),
         encoder_(FakeServer().config()),
         truth_(64, 64.0) {
+    encoder_.set_scene(0, 0, codec::scene_model_params(FakeServer().welcome().scene));
     if (with_udp) {
       udp_.open(asio::ip::udp::v4());
       udp_.bind(asio::ip::udp::endpoint(asio::ip::address_v4::loopback(), 0));
@@ -69,7 +70,7 @@ class TinyServer {
         if (!v) continue;
         if (v.message->body_type() == wire::Body::Hello) ++hellos, answer_hello();
         if (v.message->body_type() == wire::Body::Bye) ++byes;
-        if (v.message->body_type() == wire::Body::Ack) on_ack(v.message->body_as_Ack()->latest_tick());
+        if (v.message->body_type() == wire::Body::Ack) on_ack(v.message->body_as_Ack()->latest_tick64());
       }
       do_read();
     });
@@ -85,32 +86,36 @@ class TinyServer {
   }
 
   // The frames of ticks [from, to), each a delta from the one before (a key at first_tick_).
-  std::vector<protocol::Bytes> frames(std::uint32_t from, std::uint32_t to) {
+  std::vector<protocol::Bytes> frames(Tick from, Tick to, bool udp) {
     std::vector<protocol::Bytes> out;
-    for (std::uint32_t t = from - 1; t < to; ++t) {
+    for (Tick t = from - 1; t < to; ++t) {
       truth_.at(t, 1.0 / 30.0);
       encoder_.add_truth(t, truth_.view());
       if (t < from) continue;
       auto f = t == first_tick_ ? encoder_.encode_key(t) : encoder_.encode_delta(t, previous_);
       previous_ = f->id;
       frames_[t] = f;
-      for (const codec::Chunk& c : f->chunks)
-        out.push_back(protocol::encode(protocol::FrameChunk{{c.tick, c.baseline, c.key, 1}, c.index, c.count, c.payload}));
+      for (const codec::Chunk& c : f->chunks) {
+        const protocol::FrameRecord record{c.tick, c.baseline, c.key, c.index, c.count, c.payload};
+        const std::span<const protocol::FrameRecord> one(&record, 1);
+        out.push_back(udp ? protocol::frames_datagram(one)
+                          : protocol::encode(protocol::FrameData{protocol::encode_frame_block(one)}));
+      }
     }
     return out;
   }
 
   void answer_hello() {
     out_ = protocol::encode(welcome());
-    for (const auto& bytes : frames(first_tick_, first_tick_ + kFrames)) out_.insert(out_.end(), bytes.begin(), bytes.end());
+    for (const auto& bytes : frames(first_tick_, first_tick_ + kFrames, false)) out_.insert(out_.end(), bytes.begin(), bytes.end());
     asio::async_write(socket_, asio::buffer(out_), [](std::error_code, std::size_t) {});
   }
 
   // Deltas go by UDP only once the address is proven and the client holds their baseline (acked).
-  void on_ack(std::uint32_t latest_tick) {
+  void on_ack(Tick latest_tick) {
     if (!udp_peer_ || udp_sent_ || latest_tick != first_tick_ + kFrames - 1) return;
     udp_sent_ = true;
-    udp_out_ = frames(first_tick_ + kFrames, first_tick_ + 2 * kFrames);
+    udp_out_ = frames(first_tick_ + kFrames, first_tick_ + 2 * kFrames, true);
     for (const auto& b : udp_out_) udp_.send_to(asio::buffer(b), *udp_peer_);
   }
 
@@ -123,12 +128,13 @@ class TinyServer {
       if (v && protocol::check_udp_sender(*v.message, w.session_id, w.udp_cookie) == protocol::Reason::ok) {
         if (v.message->body_type() == wire::Body::Ack) {
           ++udp_acks;
-          on_ack(v.message->body_as_Ack()->latest_tick());
+          on_ack(v.message->body_as_Ack()->latest_tick64());
         }
         if (v.message->body_type() == wire::Body::UdpHello) {
           ++udp_hellos;
           udp_peer_ = udp_from_;
-          udp_.send_to(asio::buffer(protocol::encode(protocol::UdpReady{w.session_id})), *udp_peer_);
+          udp_.send_to(asio::buffer(protocol::message_datagram(protocol::encode(protocol::UdpReady{w.session_id}))),
+                       *udp_peer_);
         }
       }
       do_udp_read();

@@ -12,12 +12,11 @@ using namespace ocean::client::test;
 
 namespace {
 
-bool is_chunk_of(const protocol::Bytes& datagram, std::uint32_t tick, std::uint16_t index) {
-  protocol::Bytes copy = datagram;
-  const auto v = protocol::verify_message(copy, {protocol::Sender::server, wire::Transport::udp});
-  if (!v || v.message->body_type() != wire::Body::FrameChunk) return false;
-  const auto* c = v.message->body_as_FrameChunk();
-  return c->tick() == tick && c->index() == index;
+bool is_chunk_of(const protocol::Bytes& datagram, Tick tick, std::uint16_t index) {
+  if (datagram.empty() || datagram[0] != static_cast<std::uint8_t>(protocol::DatagramKind::frames)) return false;
+  std::vector<protocol::FrameRecord> records;
+  if (!protocol::decode_frame_block(std::span(datagram).subspan(1), records)) return false;
+  return records.back().tick == tick && records.back().index == index;
 }
 
 }  // namespace

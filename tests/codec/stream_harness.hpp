@@ -24,6 +24,30 @@ inline StreamConfig test_config(int n, int rate_hz = 30, bool normals = true) {
 
 inline TruthView view_of(const SyntheticFrame& f) { return {f.height, f.slope_x, f.slope_z}; }
 
+// The scene both sides are told of. The synthetic ocean is not this scene, so its keys fall back
+// to explicit coefficients; test_scene_model.cpp covers modeled keys against the real sim.
+inline SceneModelParams test_scene(const StreamConfig& c) {
+  SceneModelParams s;
+  s.patch_x_m = c.patch_x_m;
+  s.patch_z_m = c.patch_z_m;
+  s.depth_m = c.depth_m;
+  s.gravity_mps2 = c.gravity_mps2;
+  s.size_x = s.size_z = std::max<int>(256, c.grid);
+  return s;
+}
+
+// An encoder and a decoder of one stream that both know its scene from tick 0.
+inline Encoder test_encoder(const StreamConfig& c, const EncoderOptions& options = {}) {
+  Encoder e(c, options);
+  e.set_scene(0, 0, test_scene(c));
+  return e;
+}
+inline Decoder test_decoder(const StreamConfig& c, const DecoderOptions& options = {}) {
+  Decoder d(c, options);
+  d.add_scene(0, 0, test_scene(c));
+  return d;
+}
+
 struct RunStats {
   int frames = 0;
   int complete_frames = 0;
@@ -44,24 +68,24 @@ struct LinkModel {
 // Streams `frames` ticks starting at tick 1 (the key), acks arriving `lag` ticks late.
 inline RunStats run_stream(const SyntheticOcean& ocean, const StreamConfig& config, const EncoderOptions& eopt,
                            int frames, std::uint32_t lag, LinkModel link = {}) {
-  Encoder enc(config, eopt);
+  Encoder enc = test_encoder(config, eopt);
   DecoderOptions dopt;
   dopt.max_payload = eopt.max_payload;
-  Decoder dec(config, dopt);
+  Decoder dec = test_decoder(config, dopt);
   RunStats st;
   std::mt19937_64 rng(link.seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   const double dt = 1.0 / config.rate_hz;
-  std::map<std::uint32_t, StateId> sent;  // tick -> version sent to this client
-  std::map<std::uint32_t, std::shared_ptr<const EncodedFrame>> encoded;
-  std::optional<std::uint32_t> acked;  // newest tick the server knows complete
+  std::map<Tick, StateId> sent;  // tick -> version sent to this client
+  std::map<Tick, std::shared_ptr<const EncodedFrame>> encoded;
+  std::optional<Tick> acked;  // newest tick the server knows complete
   enc.add_truth(0, view_of(ocean.at(0.0)));
   for (int i = 0; i < frames; ++i) {
-    const std::uint32_t tick = 1 + static_cast<std::uint32_t>(i);
+    const Tick tick = 1 + static_cast<Tick>(i);
     const SyntheticFrame truth = ocean.at(tick * dt);
     enc.add_truth(tick, view_of(truth));
     // Acks of frames completed at least `lag` ticks ago have reached the server.
-    for (std::uint32_t t : dec.complete_ticks())
+    for (Tick t : dec.complete_ticks())
       if (t + lag <= tick && (!acked || t > *acked) && sent.count(t)) acked = t;
     std::shared_ptr<const EncodedFrame> f;
     if (!acked || !enc.has_state(sent[*acked]))

@@ -34,9 +34,11 @@ TEST_CASE("decoders sharing a memo match a lone decoder bit for bit and share th
   const StreamConfig config = test_config(32, 30);
   const SyntheticOcean ocean(32, 128.0, 120, 5, 0.4);
   const double dt = 1.0 / config.rate_hz;
-  Encoder enc(config, wide_encoder());
+  Encoder enc = test_encoder(config, wide_encoder());
   DecodeMemo memo(config);
-  Decoder lone(config, wide_decoder(nullptr)), a(config, wide_decoder(&memo)), b(config, wide_decoder(&memo));
+  Decoder lone = test_decoder(config, wide_decoder(nullptr));
+  Decoder a = test_decoder(config, wide_decoder(&memo));
+  Decoder b = test_decoder(config, wide_decoder(&memo));
   enc.add_truth(0, view_of(ocean.at(0.0)));
   std::map<std::uint32_t, StateId> sent;
   int compared = 0, other_baseline = 0;
@@ -81,13 +83,15 @@ TEST_CASE("a key of several chunks is decoded once for every decoder of a memo")
   const SyntheticOcean ocean(32, 128.0, 120, 13, 0.4);
   EncoderOptions narrow;
   narrow.max_payload = 400;
-  Encoder enc(config, narrow);
+  Encoder enc = test_encoder(config, narrow);
   enc.add_truth(0, view_of(ocean.at(0.0)));
   enc.add_truth(1, view_of(ocean.at(1.0 / config.rate_hz)));
   const auto key = enc.encode_key(1);
   REQUIRE(key->chunks.size() > 2);
   DecodeMemo memo(config);
-  Decoder lone(config, wide_decoder(nullptr)), a(config, wide_decoder(&memo)), b(config, wide_decoder(&memo));
+  Decoder lone = test_decoder(config, wide_decoder(nullptr));
+  Decoder a = test_decoder(config, wide_decoder(&memo));
+  Decoder b = test_decoder(config, wide_decoder(&memo));
   for (Decoder* d : {&lone, &a})
     for (const Chunk& c : key->chunks) REQUIRE(d->accept(c) == ChunkError::ok);
   for (auto c = key->chunks.rbegin(); c != key->chunks.rend(); ++c) REQUIRE(b.accept(*c) == ChunkError::ok);  // any order
@@ -104,7 +108,7 @@ TEST_CASE("a memo answers only for the exact baseline object and bytes") {
   const StreamConfig config = test_config(32, 30);
   const SyntheticOcean ocean(32, 128.0, 120, 9, 0.4);
   const double dt = 1.0 / config.rate_hz;
-  Encoder enc(config, wide_encoder());
+  Encoder enc = test_encoder(config, wide_encoder());
   DecodeMemo memo(config);
   enc.add_truth(0, view_of(ocean.at(0.0)));
   enc.add_truth(1, view_of(ocean.at(dt)));
@@ -114,7 +118,9 @@ TEST_CASE("a memo answers only for the exact baseline object and bytes") {
   const auto d2 = enc.encode_delta(2, key->id);
   const auto d3_from_key = enc.encode_delta(3, key->id);
   const auto d3_from_2 = enc.encode_delta(3, d2->id);
-  Decoder lone(config, wide_decoder(nullptr)), x(config, wide_decoder(&memo)), y(config, wide_decoder(&memo));
+  Decoder lone = test_decoder(config, wide_decoder(nullptr));
+  Decoder x = test_decoder(config, wide_decoder(&memo));
+  Decoder y = test_decoder(config, wide_decoder(&memo));
   for (Decoder* d : {&lone, &x, &y})
     for (const Chunk& c : key->chunks) REQUIRE(d->accept(c) == ChunkError::ok);
   // x: 3 from the key; y: 2, then 3 from 2. Same tick, different inputs: different results.
@@ -141,7 +147,7 @@ TEST_CASE("a frame that completes after a newer one is still handed out by just_
   const StreamConfig config = test_config(32, 30);
   const SyntheticOcean ocean(32, 128.0, 120, 11, 0.4);
   const double dt = 1.0 / config.rate_hz;
-  Encoder enc(config, wide_encoder());
+  Encoder enc = test_encoder(config, wide_encoder());
   for (std::uint32_t t = 0; t <= 4; ++t) enc.add_truth(t, view_of(ocean.at(t * dt)));
   const auto key = enc.encode_key(1);
   const auto d3 = enc.encode_delta(3, key->id);
@@ -149,7 +155,7 @@ TEST_CASE("a frame that completes after a newer one is still handed out by just_
   DecodeMemo memo(config);
   for (DecodeMemo* m : {static_cast<DecodeMemo*>(nullptr), &memo}) {
     for (int round = 0; round < 2; ++round) {  // with a memo, the second round is answered by it
-      Decoder d(config, wide_decoder(m));
+      Decoder d = test_decoder(config, wide_decoder(m));
       for (const Chunk& c : key->chunks) REQUIRE(d.accept(c) == ChunkError::ok);
       REQUIRE(d.accept(d4->chunks[0]) == ChunkError::ok);
       REQUIRE(d.just_completed() != nullptr);

@@ -20,10 +20,11 @@ TEST_CASE("two decoders and the encoder agree on the state hash after hundreds o
   EncoderOptions o;
   o.key_precision_bits = 1;  // some corrections so the correction path is covered
   o.max_payload = 200;
-  Encoder enc(c, o);
+  Encoder enc = test_encoder(c, o);
   DecoderOptions dopt;
   dopt.max_payload = 200;
-  Decoder a(c, dopt), b(c, dopt);
+  Decoder a = test_decoder(c, dopt);
+  Decoder b = test_decoder(c, dopt);
   std::mt19937_64 rng(5);
   const double dt = 1.0 / 30;
   enc.add_truth(0, view_of(ocean.at(0)));

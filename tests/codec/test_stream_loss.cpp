@@ -40,10 +40,10 @@ TEST_CASE("random chunk loss: every completed frame matches the encoder exactly,
 TEST_CASE("a lost frame and a partly lost frame: the next frame from the acked baseline is exact") {
   const StreamConfig c = test_config(32, 30);
   const SyntheticOcean ocean(32, 256.0, 150, 4, 0.5);
-  Encoder enc(c, coarse_options());
+  Encoder enc = test_encoder(c, coarse_options());
   DecoderOptions dopt;
   dopt.max_payload = 400;
-  Decoder dec(c, dopt);
+  Decoder dec = test_decoder(c, dopt);
   const double dt = 1.0 / 30;
   for (std::uint32_t t = 0; t <= 13; ++t) enc.add_truth(t, view_of(ocean.at(t * dt)));
   auto key = enc.encode_key(1);

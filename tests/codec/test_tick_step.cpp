@@ -1,12 +1,11 @@
 // A stream at half the server's tick rate (every 2nd tick): with tick_rate_hz set, the predictor
 // advances by real tick steps, decodes bit-exactly, and needs fewer bytes than the wrong step.
-#include "decoder.hpp"
-#include "encoder.hpp"
-#include "synthetic_ocean.hpp"
+#include "stream_harness.hpp"
 
 #include <catch2/catch.hpp>
 
 using namespace ocean::codec;
+using namespace ocean::codec::test;
 using ocean::codec::test::SyntheticFrame;
 using ocean::codec::test::SyntheticOcean;
 
@@ -25,8 +24,8 @@ StepRun run_every_second_tick(std::uint16_t tick_rate_hz) {
   config.patch_x_m = config.patch_z_m = 64.0;
   config.rate_hz = 15;
   config.tick_rate_hz = tick_rate_hz;
-  Encoder encoder(config);
-  Decoder decoder(config);
+  Encoder encoder = test_encoder(config);
+  Decoder decoder = test_decoder(config);
   StepRun run;
   StateId previous{};
   for (std::uint32_t tick = 0; tick <= 41; ++tick) {

@@ -1,8 +1,9 @@
 // CodecStream: a small real codec stream (16 x 16 grid with normals, a synthetic ocean) shared by
 // the codec harness and make_corpus: a key at tick 1, then deltas, each cut into several chunks,
-// plus the chunk <-> fuzz record encoding (13-byte envelope, then the payload).
+// plus the chunk <-> fuzz record encoding (21-byte envelope with 64-bit ticks, then the payload).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -31,15 +32,35 @@ inline codec::DecoderOptions codec_stream_decoder_options() {
   return o;
 }
 
+// The scene both sides know from tick 0 (tag 0). The synthetic ocean is not this scene, so keys
+// carry explicit coefficients, as in tests/codec.
+inline codec::SceneModelParams codec_stream_scene() {
+  const codec::StreamConfig c = codec_stream_config();
+  codec::SceneModelParams s;
+  s.patch_x_m = c.patch_x_m;
+  s.patch_z_m = c.patch_z_m;
+  s.depth_m = c.depth_m;
+  s.gravity_mps2 = c.gravity_mps2;
+  s.size_x = s.size_z = std::max<int>(256, c.grid);
+  return s;
+}
+
+inline codec::Decoder codec_stream_decoder() {
+  codec::Decoder d(codec_stream_config(), codec_stream_decoder_options());
+  d.add_scene(0, 0, codec_stream_scene());
+  return d;
+}
+
 // frames[i] is tick i + 1: frames[0] the key, frames[i] a delta from tick i.
 inline std::vector<std::shared_ptr<const codec::EncodedFrame>> make_codec_stream(int frame_count) {
   const codec::StreamConfig config = codec_stream_config();
   codec::EncoderOptions options;
   options.max_payload = kCodecStreamPayload;
   codec::Encoder encoder(config, options);
+  encoder.set_scene(0, 0, codec_stream_scene());
   const codec::test::SyntheticOcean ocean(config.grid, config.patch_x_m, 40, 11, 0.5);
   std::vector<std::shared_ptr<const codec::EncodedFrame>> frames;
-  for (std::uint32_t tick = 0; tick <= static_cast<std::uint32_t>(frame_count); ++tick) {
+  for (Tick tick = 0; tick <= static_cast<Tick>(frame_count); ++tick) {
     const codec::test::SyntheticFrame f = ocean.at(tick * config.dt_s());
     encoder.add_truth(tick, codec::TruthView{f.height, f.slope_x, f.slope_z});
     if (tick == 1) frames.push_back(encoder.encode_key(1));
@@ -48,12 +69,12 @@ inline std::vector<std::shared_ptr<const codec::EncodedFrame>> make_codec_stream
   return frames;
 }
 
-inline constexpr std::size_t kEnvelopeRecordBytes = 13;
+inline constexpr std::size_t kEnvelopeRecordBytes = 21;
 
 inline std::vector<std::uint8_t> chunk_record(const codec::Chunk& c) {
   std::vector<std::uint8_t> out;
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(c.tick >> (8 * i)));
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(c.baseline >> (8 * i)));
+  for (int i = 0; i < 8; ++i) out.push_back(static_cast<std::uint8_t>(c.tick >> (8 * i)));
+  for (int i = 0; i < 8; ++i) out.push_back(static_cast<std::uint8_t>(c.baseline >> (8 * i)));
   out.push_back(c.key ? 1 : 0);
   out.push_back(static_cast<std::uint8_t>(c.index));
   out.push_back(static_cast<std::uint8_t>(c.index >> 8));
@@ -66,8 +87,8 @@ inline std::vector<std::uint8_t> chunk_record(const codec::Chunk& c) {
 inline codec::ChunkView chunk_view_of(std::span<const std::uint8_t> record) {
   ByteReader in(record);
   codec::ChunkView v;
-  v.tick = in.take<std::uint32_t>();
-  v.baseline = in.take<std::uint32_t>();
+  v.tick = in.take<std::uint64_t>();
+  v.baseline = in.take<std::uint64_t>();
   v.key = (in.take<std::uint8_t>() & 1) != 0;
   v.index = in.take<std::uint16_t>();
   v.count = in.take<std::uint16_t>();

@@ -1,6 +1,7 @@
 // make_corpus OUT_DIR: writes the fuzzers' seed corpora from real traffic - a FakeServer <->
-// ClientSession exchange, every message type built by the protocol's encoders, a real codec
-// stream, a minted cookie, metrics requests and the shipped config - one folder per harness
+// ClientSession exchange (its messages, and the frame record blocks of its FrameData messages and
+// frames datagrams), every message type built by the protocol's encoders, a real codec stream, a
+// minted cookie, metrics requests and the shipped config - one folder per harness
 // (OUT_DIR/<harness>/seed_NNN). Generated at build time; never committed.
 #include <cstdint>
 #include <cstdio>
@@ -12,6 +13,7 @@
 
 #include "client_exchange.hpp"
 #include "codec_stream.hpp"
+#include "frame_records.hpp"
 #include "message_builders.hpp"
 #include "record_format.hpp"
 #include "udp_cookie.hpp"
@@ -55,24 +57,82 @@ std::vector<protocol::Bytes> client_messages() {
           protocol::encode(protocol::Ping{42, cookie, 3, 123456}),
           protocol::encode(protocol::Bye{wire::ByeReason::client_quit, "bye"}),
           protocol::encode(protocol::Error{protocol::Reason::out_of_range, "wind_speed out of range"}),
-          protocol::encode(protocol::SceneUpdate{5, 900, protocol::SceneParams{}})};
+          protocol::encode(protocol::SceneUpdate{5, 900, protocol::SceneParams{}, 2})};
+}
+
+// The frame record block a server message carries, if any: a FrameData's frames, or a frames
+// datagram after its kind byte. Empty for anything else.
+std::span<const std::uint8_t> block_of(const fuzz::ServerMessage& m) {
+  if (m.transport == wire::Transport::udp) {
+    if (!m.bytes.empty() && m.bytes[0] == static_cast<std::uint8_t>(protocol::DatagramKind::frames))
+      return std::span(m.bytes).subspan(1);
+    return {};
+  }
+  const auto* data = wire::GetSizePrefixedMessage(m.bytes.data())->body_as_FrameData();
+  if (!data || !data->frames()) return {};
+  return {data->frames()->data(), data->frames()->size()};
+}
+
+// The message a server datagram or TCP message holds, if any (a message datagram after its kind byte).
+std::span<const std::uint8_t> message_of(const fuzz::ServerMessage& m) {
+  if (m.transport == wire::Transport::tcp) return m.bytes;
+  if (!m.bytes.empty() && m.bytes[0] == static_cast<std::uint8_t>(protocol::DatagramKind::message))
+    return std::span(m.bytes).subspan(1);
+  return {};
+}
+
+// Blocks encode_frame_block() makes that the exchange may not hold: a multi-chunk key, deltas at
+// the lag limit, ticks past 2^32 and at the top of the range, the most records a block holds.
+std::vector<protocol::Bytes> synthetic_blocks() {
+  const protocol::Bytes payload(40, 0x5A);
+  const std::span<const std::uint8_t> p(payload);
+  using protocol::FrameRecord;
+  const Tick top = ~Tick{0};
+  std::vector<protocol::Bytes> out;
+  out.push_back(protocol::encode_frame_block(std::vector<FrameRecord>{
+      FrameRecord{10, 10, true, 0, 3, p}, FrameRecord{10, 10, true, 1, 3, p}, FrameRecord{10, 10, true, 2, 3, p}}));
+  out.push_back(protocol::encode_frame_block(std::vector<FrameRecord>{
+      FrameRecord{5000, 5000 - protocol::kMaxFrameLag, false, 0, 1, p}, FrameRecord{5001, 5000, false, 0, 1, p}}));
+  out.push_back(protocol::encode_frame_block(std::vector<FrameRecord>{
+      FrameRecord{0xFFFF'FFFFull, 0xFFFF'FFF0ull, false, 0, 2, p}, FrameRecord{0x1'0000'0000ull, 0xFFFF'FFFFull, false, 1, 2, p}}));
+  out.push_back(protocol::encode_frame_block(std::vector<FrameRecord>{
+      FrameRecord{top, top, true, protocol::kMaxChunksPerFrame - 1, protocol::kMaxChunksPerFrame, p}}));
+  std::vector<FrameRecord> full;
+  for (Tick t = 0; t < protocol::kMaxRecordsPerBlock; ++t)
+    full.push_back(FrameRecord{900 + t, 900 + t - t % 3, t % 3 == 0, 0, 1, p.first(t % 5)});
+  out.push_back(protocol::encode_frame_block(full));
+  return out;
 }
 
 void write_protocol_seeds(const fs::path& out) {
   const std::vector<fuzz::ServerMessage> exchange = fuzz::record_client_exchange(8);
   CorpusWriter verify(out / "fuzz_verify_message"), framer(out / "fuzz_tcp_framer"),
-      session(out / "fuzz_client_session");
+      session(out / "fuzz_client_session"), blocks(out / "fuzz_frame_block");
   std::vector<protocol::Bytes> all = client_messages();
-  for (const auto& m : exchange) all.push_back(m.bytes);
-  // A FrameBundle of the exchange's single frames, as the server's UDP redundancy sends them.
-  std::vector<std::span<const std::uint8_t>> chunks;
   for (const auto& m : exchange)
-    if (wire::GetSizePrefixedMessage(m.bytes.data())->body_type() == wire::Body::FrameChunk && chunks.size() < 3)
-      chunks.emplace_back(m.bytes);
-  protocol::Bytes bundle;
-  if (!chunks.empty()) {
-    bundle = protocol::encode_bundle(chunks);
-    all.push_back(bundle);
+    if (const auto message = message_of(m); !message.empty()) all.emplace_back(message.begin(), message.end());
+
+  // Every block of the exchange, and one of its first records together, oldest first, as the
+  // server's UDP redundancy sends them (a frames datagram for the client, a FrameData for verify).
+  std::vector<protocol::FrameRecord> copies;
+  for (const auto& m : exchange) {
+    const auto block = block_of(m);
+    if (block.empty()) continue;
+    blocks.add(block);
+    std::vector<protocol::FrameRecord> records;
+    if (protocol::decode_frame_block(block, records))
+      for (const protocol::FrameRecord& r : records)
+        if (copies.size() < 3) copies.push_back(r);  // payloads view `exchange`, alive here
+  }
+  protocol::Bytes redundant;
+  if (!copies.empty()) {
+    redundant = protocol::frames_datagram(copies);
+    blocks.add(std::span(redundant).subspan(1));
+    all.push_back(protocol::encode(protocol::FrameData{protocol::Bytes(redundant.begin() + 1, redundant.end())}));
+  }
+  for (const protocol::Bytes& block : synthetic_blocks()) {
+    blocks.add(block);
+    all.push_back(protocol::encode(protocol::FrameData{block}));
   }
   for (const auto& m : all) verify.add(m);
 
@@ -93,9 +153,9 @@ void write_protocol_seeds(const fs::path& out) {
     }
     session.add(seed);
   }
-  if (!bundle.empty()) {
+  if (!redundant.empty()) {
     Seed seed{1};  // the harness replays the Welcome itself
-    fuzz::append_record(seed, 1, bundle);
+    fuzz::append_record(seed, 1, redundant);
     session.add(seed);
   }
   for (std::size_t i = 1; i < exchange.size(); ++i) {

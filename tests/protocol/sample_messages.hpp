@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "frame_records.hpp"
 #include "message_types.hpp"
 #include "verify_message.hpp"
 
@@ -55,30 +56,28 @@ inline Welcome sample_welcome() {
   w.scene = sample_scene();
   w.offered_profiles = {1, 2, 4};
   w.epoch_unix_ms = 1'763'700'000'000;
-  w.current_tick = 12345;
+  w.current_tick = 5'000'000'123;  // past 2^32: ticks are 64-bit in version 2
   w.tick_period_s = 1.0 / 30.0;
   w.udp_port = 40123;
   w.udp_cookie = sample_cookie();
   w.max_message_bytes = 65536;
+  w.scene_serial = 3;
   return w;
 }
 
-inline FrameChunk sample_chunk() {
-  FrameChunk c;
-  c.frame = FrameHeader{1000, 998, false, 1};
-  c.index = 2;
-  c.count = 5;
-  c.payload = {9, 8, 7, 6, 5, 4, 3, 2, 1, 0, 255};
-  return c;
+// The payload bytes of the sample records (any bytes: the protocol does not look inside).
+inline std::span<const std::uint8_t> sample_payload() {
+  static const Bytes payload{9, 8, 7, 6, 5, 4, 3, 2, 1, 0, 255};
+  return payload;
 }
 
-inline FrameBundle sample_bundle() {
-  FrameChunk older = sample_chunk();
-  older.frame = FrameHeader{999, 998, false, 1};
-  older.index = 0;
-  older.count = 1;
-  return FrameBundle{{older, sample_chunk()}};
+// A frames block as the server sends it on a lossy link: a copy of the earlier, unacknowledged
+// single-chunk delta of tick 999, then chunk 2 of 5 of the delta of tick 1000, oldest first.
+inline std::vector<FrameRecord> sample_records() {
+  return {FrameRecord{999, 998, false, 0, 1, sample_payload()}, FrameRecord{1000, 998, false, 2, 5, sample_payload()}};
 }
+
+inline FrameData sample_frame_data() { return FrameData{encode_frame_block(sample_records())}; }
 
 inline ParamChange sample_param_change() {
   ParamChange p;
@@ -90,7 +89,8 @@ inline ParamChange sample_param_change() {
   return p;
 }
 
-// One valid value of each message type with the side that sends it.
+// One valid value of each message type of version 2 with the side that sends it (FrameChunk and
+// FrameBundle are version 1 only: a version-2 receiver refuses them, see test_malformed.cpp).
 struct Sample {
   AnyMessage message;
   Sender sender;
@@ -104,17 +104,16 @@ inline std::vector<Sample> all_samples() {
       {sample_welcome(), Sender::server},
       {UdpHello{session, cookie}, Sender::client},
       {UdpReady{session}, Sender::server},
-      {sample_chunk(), Sender::server},
-      {Ack{session, cookie, 1000, 0x8000'0005u}, Sender::client},
+      {Ack{session, cookie, 5'000'000'000ull, 0x8000'0005u}, Sender::client},
       {KeyframeRequest{session, cookie, wire::KeyframeReason::lost_baseline}, Sender::client},
       {SetTransport{wire::Transport::tcp}, Sender::client},
       {sample_param_change(), Sender::client},
-      {SceneUpdate{77, 1030, sample_scene()}, Sender::server},
+      {SceneUpdate{77, 5'000'000'030ull, sample_scene(), 4}, Sender::server},
       {Error{Reason::profile_unavailable, "profile 3 is not offered; offered: 1 2 4"}, Sender::server},
       {Bye{wire::ByeReason::server_shutdown, "maintenance"}, Sender::server},
       {Ping{session, cookie, 42, 123'456'789'012ull}, Sender::client},
-      {Pong{42, 123'456'789'012ull, 1001, 1'763'700'033'366}, Sender::server},
-      {sample_bundle(), Sender::server},
+      {Pong{42, 123'456'789'012ull, 5'000'000'124ull, 1'763'700'033'366}, Sender::server},
+      {sample_frame_data(), Sender::server},
   };
 }
 

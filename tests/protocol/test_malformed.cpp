@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "frame_blocks.hpp"
 #include "message_builders.hpp"
 #include "protocol_version.hpp"
 #include "receiver.hpp"
@@ -38,6 +39,62 @@ void expect_rejected(const AnyMessage& message, const VerifyOptions& options, Re
   expect_rejected(encode(message), options, reason);
 }
 
+// A FrameData message is verified as a message only (its block is present); the block's own rules
+// are decode_frame_block's: the message passes the gate, the receiver refuses the block for
+// `reason` and is left exactly as it was.
+void expect_block_refused(const Bytes& block, Reason reason) {
+  const Bytes bytes = encode(FrameData{block});
+  const Verified verified = verify_message(bytes, from_server());
+  INFO(describe(verified));
+  REQUIRE(verified.ok);
+  std::vector<FrameRecord> records;
+  const FrameBlockResult parsed = decode_frame_block(block, records);
+  INFO("block refused for: " << parsed.rule);
+  CHECK(parsed.reason == reason);
+  CHECK_FALSE(parsed.rule.empty());
+  CHECK(records.empty());
+
+  Receiver receiver = busy_receiver();
+  const Receiver before = receiver;
+  CHECK(receiver.receive(bytes, from_server()) == reason);
+  CHECK(receiver == before);
+}
+
+// A version-1 frame message built by hand (the library no longer encodes them): a FrameChunk, or a
+// FrameBundle of two such chunks. Every field is valid by version 1's rules.
+Bytes version1_frame_message(wire::Body type) {
+  FlatBufferBuilder fbb;
+  auto chunk = [&fbb](std::uint32_t tick) {
+    const std::uint8_t payload[] = {1, 2, 3};
+    const auto bytes = fbb.CreateVector(payload, 3);
+    wire::FrameChunkBuilder b(fbb);
+    b.add_tick(tick);
+    b.add_baseline(tick - 1);
+    b.add_key(false);
+    b.add_profile_id(1);
+    b.add_index(0);
+    b.add_count(1);
+    b.add_payload(bytes);
+    return b.Finish();
+  };
+  flatbuffers::Offset<void> body;
+  if (type == wire::Body::FrameChunk) {
+    body = chunk(1000).Union();
+  } else {
+    const std::vector<flatbuffers::Offset<wire::FrameChunk>> chunks{chunk(999), chunk(1000)};
+    const auto vector = fbb.CreateVector(chunks);
+    wire::FrameBundleBuilder b(fbb);
+    b.add_chunks(vector);
+    body = b.Finish().Union();
+  }
+  wire::MessageBuilder root(fbb);
+  root.add_version(kProtocolVersion);
+  root.add_body_type(type);
+  root.add_body(body);
+  wire::FinishSizePrefixedMessageBuffer(fbb, root.Finish());
+  return Bytes(fbb.GetBufferPointer(), fbb.GetBufferPointer() + fbb.GetSize());
+}
+
 // A Message root built by hand, for envelopes encode() never makes.
 Bytes raw_message(std::uint16_t version, std::uint8_t body_type, bool with_body) {
   FlatBufferBuilder fbb;
@@ -69,37 +126,40 @@ TEST_CASE("truncated input: every shorter prefix of a message is rejected") {
 }
 
 TEST_CASE("oversized, trailing bytes, empty prefix, wrong identifier, misaligned") {
-  const Bytes chunk = encode(FrameChunk{FrameHeader{9, 9, true, 1}, 0, 1, Bytes(3000, 7)});
+  const Bytes payload(3000, 7);
+  const FrameRecord key{9, 9, true, 0, 1, payload};
+  const Bytes big = encode(FrameData{encode_frame_block(std::span(&key, 1))});
+  REQUIRE(verify_message(big, from_server()).ok);
   VerifyOptions small = from_server();
   small.max_message_bytes = 2000;
-  expect_rejected(chunk, small, Reason::oversized);
-  expect_rejected(chunk, from(Sender::server, wire::Transport::udp), Reason::oversized);
+  expect_rejected(big, small, Reason::oversized);
+  expect_rejected(big, from(Sender::server, wire::Transport::udp), Reason::oversized);  // size before type
 
-  Bytes trailing = encode(sample_chunk());
+  Bytes trailing = encode(sample_frame_data());
   trailing.push_back(0);
   expect_rejected(trailing, from_server(), Reason::trailing_bytes);
 
-  Bytes zero_prefix = encode(sample_chunk());
+  Bytes zero_prefix = encode(sample_frame_data());
   write_i32(zero_prefix, 0, 0);
   expect_rejected(zero_prefix, from_server(), Reason::empty);
 
-  Bytes wrong_id = encode(sample_chunk());
+  Bytes wrong_id = encode(sample_frame_data());
   wrong_id[8] = 'X';
   expect_rejected(wrong_id, from_server(), Reason::bad_identifier);
 
-  const Bytes good = encode(sample_chunk());
+  const Bytes good = encode(sample_frame_data());
   Bytes shifted(good.size() + 1);
   std::memcpy(shifted.data() + 1, good.data(), good.size());
   expect_rejected(std::span(shifted).subspan(1), from_server(), Reason::misaligned_buffer);
 }
 
 TEST_CASE("bad offsets: corrupt vtable offsets and vector lengths fail the Verifier") {
-  const Bytes good = encode(sample_chunk());
+  const Bytes good = encode(sample_frame_data());
   const auto* message = wire::GetSizePrefixedMessage(good.data());
   const std::size_t root_table = 4 + flatbuffers::ReadScalar<std::uint32_t>(good.data() + 4);
   const std::size_t body_table = reinterpret_cast<const std::uint8_t*>(message->body()) - good.data();
-  const std::size_t payload_vector =
-      reinterpret_cast<const std::uint8_t*>(message->body_as_FrameChunk()->payload()) - good.data();
+  const std::size_t frames_vector =
+      reinterpret_cast<const std::uint8_t*>(message->body_as_FrameData()->frames()) - good.data();
 
   Bytes root_vtable = good;
   write_i32(root_vtable, root_table, 0x7ffffff0);
@@ -114,7 +174,7 @@ TEST_CASE("bad offsets: corrupt vtable offsets and vector lengths fail the Verif
   expect_rejected(odd_vtable, from_server(), Reason::bad_verifier);
 
   Bytes vector_length = good;
-  write_i32(vector_length, payload_vector, 0x00ffffff);
+  write_i32(vector_length, frames_vector, 0x00ffffff);
   expect_rejected(vector_length, from_server(), Reason::bad_verifier);
 
   Bytes root_offset = good;
@@ -134,16 +194,29 @@ TEST_CASE("envelope: unknown version, unknown or missing body") {
 
 TEST_CASE("unexpected message: wrong sender or wrong transport") {
   expect_rejected(sample_welcome(), from_client(), Reason::unexpected_message);
-  expect_rejected(sample_chunk(), from_client(), Reason::unexpected_message);
+  expect_rejected(sample_frame_data(), from_client(), Reason::unexpected_message);
+  expect_rejected(sample_frame_data(), from(Sender::server, wire::Transport::udp), Reason::unexpected_message);  // TCP only
   expect_rejected(Hello{}, from_server(), Reason::unexpected_message);
   expect_rejected(Hello{}, from(Sender::client, wire::Transport::udp), Reason::unexpected_message);
   expect_rejected(UdpHello{1, sample_cookie()}, from_client(), Reason::unexpected_message);
 }
 
+TEST_CASE("version 1 frame messages: FrameChunk and FrameBundle are refused as unexpected") {
+  for (wire::Body type : {wire::Body::FrameChunk, wire::Body::FrameBundle}) {
+    INFO(wire::EnumNameBody(type));
+    const Bytes bytes = version1_frame_message(type);
+    // Well-formed FlatBuffers of ocean.fbs: the refusal is the version's, not the Verifier's.
+    flatbuffers::Verifier verifier(bytes.data(), bytes.size());
+    REQUIRE(wire::VerifySizePrefixedMessageBuffer(verifier));
+    CHECK_FALSE(may_send(Sender::server, type));
+    CHECK_FALSE(may_send(Sender::client, type));
+    for (Sender sender : {Sender::server, Sender::client})
+      for (wire::Transport transport : {wire::Transport::udp, wire::Transport::tcp})
+        expect_rejected(bytes, from(sender, transport), Reason::unexpected_message);
+  }
+}
+
 TEST_CASE("profiles: unknown ids are rejected") {
-  FrameChunk chunk = sample_chunk();
-  chunk.frame.profile_id = 99;
-  expect_rejected(chunk, from_server(), Reason::unknown_profile);
   expect_rejected(Hello{200, 0, wire::Transport::tcp, ""}, from_client(), Reason::unknown_profile);
 
   Welcome welcome = sample_welcome();
@@ -179,30 +252,59 @@ TEST_CASE("dimensions: grid, flags, scene size and vector lengths must agree") {
   expect_rejected(welcome, from_server(), Reason::bad_dimensions);
 }
 
-TEST_CASE("sequence: baseline and tick must be consistent") {
-  FrameChunk chunk = sample_chunk();
-  chunk.frame = FrameHeader{10, 9, true, 1};  // keyframe must have baseline == tick
-  expect_rejected(chunk, from_server(), Reason::bad_sequence);
-  chunk.frame = FrameHeader{10, 10, false, 1};  // delta against itself
-  expect_rejected(chunk, from_server(), Reason::bad_sequence);
-  chunk.frame = FrameHeader{10, 11, false, 1};  // baseline in the future
-  expect_rejected(chunk, from_server(), Reason::bad_sequence);
-  chunk.frame = FrameHeader{5000, 5000 - kMaxBaselineGap - 1, false, 1};
-  expect_rejected(chunk, from_server(), Reason::bad_sequence);
-  chunk.frame = FrameHeader{5000, 5000 - kMaxBaselineGap, false, 1};
-  CHECK(verify_message(encode(chunk), from_server()).ok);
+TEST_CASE("FrameData: the frames block must be present and not empty") {
+  // Built by hand: encode() writes no vector for an empty block, and FrameDataBuilder::Finish()
+  // asserts that the required field is there.
+  const auto frame_data = [](bool with_vector) {
+    FlatBufferBuilder fbb;
+    const auto frames = fbb.CreateVector(static_cast<const std::uint8_t*>(nullptr), 0);
+    const auto start = fbb.StartTable();
+    if (with_vector) fbb.AddOffset(wire::FrameData::VT_FRAMES, frames);
+    const flatbuffers::Offset<void> body(fbb.EndTable(start));
+    wire::MessageBuilder root(fbb);
+    root.add_version(kProtocolVersion);
+    root.add_body_type(wire::Body::FrameData);
+    root.add_body(body);
+    wire::FinishSizePrefixedMessageBuffer(fbb, root.Finish());
+    return Bytes(fbb.GetBufferPointer(), fbb.GetBufferPointer() + fbb.GetSize());
+  };
+  const Bytes empty = frame_data(true);
+  expect_rejected(empty, from_server(), Reason::missing_field);
+  CHECK(verify_message(empty, from_server()).field == "FrameData.frames");
+  // Absent altogether: the schema marks frames required, so the FlatBuffers Verifier refuses it first.
+  expect_rejected(frame_data(false), from_server(), Reason::bad_verifier);
+}
+
+TEST_CASE("sequence: a record's tick and lag must be consistent") {
+  // newest 5000: a record 5001 ticks back would be before tick 0.
+  expect_block_refused(RawBlock().v(5000).record(5001, 0).bytes, Reason::bad_sequence);
+  // lag (tick - baseline) beyond kMaxFrameLag, and beyond the tick itself (baseline < 0).
+  expect_block_refused(RawBlock().v(5000).record(0, kMaxFrameLag + 1).bytes, Reason::bad_sequence);
+  expect_block_refused(RawBlock().v(10).record(0, 11).bytes, Reason::bad_sequence);
+  expect_block_refused(RawBlock().v(5000).record(0, 1).record(4990, 11).bytes, Reason::bad_sequence);  // second one
+  // The edges are fine.
+  std::vector<FrameRecord> records;
+  REQUIRE(decode_frame_block(RawBlock().v(5000).record(0, kMaxFrameLag).bytes, records));
+  CHECK(records.at(0).baseline == 5000 - kMaxFrameLag);
+  CHECK_FALSE(records.at(0).key);
+  REQUIRE(decode_frame_block(RawBlock().v(10).record(0, 10).bytes, records));
+  CHECK(records.at(0).baseline == 0);
+  REQUIRE(decode_frame_block(RawBlock().v(5000).record(5000, 0).bytes, records));
+  CHECK(records.at(0).tick == 0);
+  CHECK(records.at(0).key);
 }
 
 TEST_CASE("chunk index: count >= 1, index < count, count bounded") {
-  FrameChunk chunk = sample_chunk();
-  chunk.index = 5;
-  chunk.count = 5;
-  expect_rejected(chunk, from_server(), Reason::bad_chunk_index);
-  chunk.index = 0;
-  chunk.count = 0;
-  expect_rejected(chunk, from_server(), Reason::bad_chunk_index);
-  chunk.count = kMaxChunksPerFrame + 1;
-  expect_rejected(chunk, from_server(), Reason::bad_chunk_index);
+  const auto chunk = [](std::uint64_t count_minus_1, std::uint64_t index) {
+    return RawBlock().v(1000).v(0).v(2).v(count_minus_1).v(index).v(3).payload(3).bytes;
+  };
+  expect_block_refused(chunk(4, 5), Reason::bad_chunk_index);                       // index 5 of 5
+  expect_block_refused(chunk(0xFFFF'FFFFu, 0), Reason::bad_chunk_index);           // count 0, as (count - 1) wraps
+  expect_block_refused(chunk(kMaxChunksPerFrame, 0), Reason::bad_chunk_index);     // count 4097
+  std::vector<FrameRecord> records;
+  REQUIRE(decode_frame_block(chunk(kMaxChunksPerFrame - 1, kMaxChunksPerFrame - 1), records));
+  CHECK(records.at(0).count == kMaxChunksPerFrame);
+  CHECK(records.at(0).index == kMaxChunksPerFrame - 1);
 }
 
 TEST_CASE("non-finite values: NaN and infinity in any float field") {
@@ -222,7 +324,7 @@ TEST_CASE("non-finite values: NaN and infinity in any float field") {
   ParamChange change = sample_param_change();
   change.amplitude = -kInf;
   expect_rejected(change, from_client(), Reason::non_finite_value);
-  expect_rejected(SceneUpdate{0, 5, [] { auto s = sample_scene(); s.gravity_mps2 = kNaN; return s; }()},
+  expect_rejected(SceneUpdate{0, 5, [] { auto s = sample_scene(); s.gravity_mps2 = kNaN; return s; }(), 1},
                   from_server(), Reason::non_finite_value);
 }
 
@@ -334,7 +436,7 @@ TEST_CASE("range edges: the sim's own limits are accepted, one step beyond is no
   auto scene_with = [](auto edit) {
     SceneParams scene;  // the sim's defaults
     edit(scene);
-    return encode(SceneUpdate{0, 1, scene});
+    return encode(SceneUpdate{0, 1, scene, 1});
   };
   CHECK(verify_message(scene_with([](SceneParams&) {}), from_server()).ok);
   CHECK(verify_message(scene_with([](SceneParams& s) { s.choppiness = kMaxChoppiness; }), from_server()).ok);

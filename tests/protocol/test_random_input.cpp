@@ -57,7 +57,7 @@ TEST_CASE("random buffers are rejected") {
 TEST_CASE("mutated valid messages never crash and what passes is sound") {
   std::mt19937_64 rng(7);
   Receiver receiver = busy_receiver();
-  std::size_t accepted = 0, rejected = 0;
+  std::size_t accepted = 0, rejected = 0, blocks_refused = 0;
   for (const Sample& sample : all_samples()) {
     const Bytes original = encode(sample.message);
     std::uniform_int_distribution<std::size_t> position(0, original.size() - 1);
@@ -71,6 +71,13 @@ TEST_CASE("mutated valid messages never crash and what passes is sound") {
         if (v.ok) {
           ++accepted;
           check_accepted(v, options);
+          // A FrameData whose block is broken passes the gate; the receiver then refuses the
+          // block as a whole.
+          Receiver fresh = receiver;
+          if (fresh.receive(mutated, options) != Reason::ok) {
+            ++blocks_refused;
+            REQUIRE(fresh == receiver);
+          }
         } else {
           ++rejected;
           const Receiver before = receiver;
@@ -82,4 +89,5 @@ TEST_CASE("mutated valid messages never crash and what passes is sound") {
   }
   CHECK(rejected > accepted);  // most mutations break a rule
   CHECK(accepted > 0);         // and some only change a value, which is fine
+  CHECK(blocks_refused > 0);   // some break a FrameData's block only
 }

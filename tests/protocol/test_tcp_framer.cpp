@@ -82,8 +82,8 @@ TEST_CASE("framer: one byte per read") {
 
 TEST_CASE("framer: messages from the framer pass verification") {
   TcpFramer framer;
-  const Bytes chunk = encode(sample_chunk());
-  REQUIRE(framer.feed(chunk).status == Status::good);
+  const Bytes frames = encode(sample_frame_data());
+  REQUIRE(framer.feed(frames).status == Status::good);
   CHECK(verify_message(framer.message(), from_server()).ok);
 }
 
@@ -106,12 +106,12 @@ TEST_CASE("framer: a size prefix over the maximum is refused before any body byt
   CHECK(framer.buffered_bytes() <= 4);
 
   framer.reset();
-  const Bytes good = encode(sample_chunk());
+  const Bytes good = encode(sample_frame_data());
   CHECK(framer.feed(good).status == Status::good);
 }
 
 TEST_CASE("framer: a prefix exactly at the maximum is accepted") {
-  const Bytes message = encode(sample_chunk());
+  const Bytes message = encode(sample_frame_data());
   TcpFramer framer(message.size());
   CHECK(framer.feed(message).status == Status::good);
   TcpFramer smaller(message.size() - 1);
@@ -148,7 +148,9 @@ TEST_CASE("framer: zero length and too-short prefixes are bad") {
 }
 
 TEST_CASE("framer: a lowered maximum applies to the next message") {
-  const Bytes big = encode(FrameChunk{FrameHeader{5, 5, true, 1}, 0, 1, Bytes(3000, 1)});
+  const Bytes payload(3000, 1);
+  const FrameRecord key{5, 5, true, 0, 1, payload};
+  const Bytes big = encode(FrameData{encode_frame_block(std::span(&key, 1))});
   TcpFramer framer;
   CHECK(framer.feed(big).status == Status::good);
   framer.set_max_message_bytes(kMaxDatagram);

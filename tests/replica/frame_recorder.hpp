@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "message_builders.hpp"
+#include "frame_records.hpp"
 #include "message_readers.hpp"
 #include "tcp_framer.hpp"
 #include "verify_message.hpp"
@@ -26,8 +27,8 @@ namespace ocean::replica_test {
 // One frame as received: its envelope and every chunk's payload by index.
 struct RecordedFrame {
   std::uint8_t profile_id = 0;
-  std::uint32_t tick = 0;
-  std::uint32_t baseline = 0;
+  Tick tick = 0;
+  Tick baseline = 0;
   bool key = false;
   std::uint16_t count = 0;
   std::map<std::uint16_t, protocol::Bytes> payloads;  // index -> payload bytes
@@ -63,11 +64,11 @@ class FrameRecorder {
   }
 
   // Frames by tick, in arrival order of their first chunk.
-  const std::map<std::uint32_t, RecordedFrame>& frames() const { return frames_; }
+  const std::map<Tick, RecordedFrame>& frames() const { return frames_; }
   const std::optional<protocol::Welcome>& welcome() const { return welcome_; }
-  std::optional<std::uint32_t> first_key_tick() const { return first_key_tick_; }
-  std::optional<std::uint32_t> newest_tick() const {
-    return frames_.empty() ? std::nullopt : std::optional<std::uint32_t>(frames_.rbegin()->first);
+  std::optional<Tick> first_key_tick() const { return first_key_tick_; }
+  std::optional<Tick> newest_tick() const {
+    return frames_.empty() ? std::nullopt : std::optional<Tick>(frames_.rbegin()->first);
   }
   // Chunks that contradict the frame they belong to (envelope differs, index repeated), and
   // every other refusal: a server of this project sends none.
@@ -109,26 +110,28 @@ class FrameRecorder {
     if (const auto* w = std::get_if<protocol::Welcome>(&message)) {
       welcome_ = *w;
       framer_.set_max_message_bytes(w->max_message_bytes);
-    } else if (const auto* c = std::get_if<protocol::FrameChunk>(&message)) {
-      record(*c);
+    } else if (const auto* data = std::get_if<protocol::FrameData>(&message)) {
+      std::vector<protocol::FrameRecord> records;
+      if (const protocol::FrameBlockResult r = protocol::decode_frame_block(data->frames, records); !r)
+        faults_.push_back("refused FrameData: " + r.rule);
+      for (const protocol::FrameRecord& record : records) this->record(record);
     } else if (const auto* e = std::get_if<protocol::Error>(&message)) {
       faults_.push_back("Error: " + e->text);
     }
   }
 
-  void record(const protocol::FrameChunk& c) {
-    auto [it, fresh] = frames_.try_emplace(c.frame.tick);
+  void record(const protocol::FrameRecord& c) {
+    auto [it, fresh] = frames_.try_emplace(c.tick);
     RecordedFrame& f = it->second;
     if (fresh) {
-      f = RecordedFrame{c.frame.profile_id, c.frame.tick, c.frame.baseline, c.frame.key, c.count, {}};
-      if (c.frame.key && !first_key_tick_) first_key_tick_ = c.frame.tick;
-    } else if (f.profile_id != c.frame.profile_id || f.baseline != c.frame.baseline || f.key != c.frame.key ||
-               f.count != c.count) {
-      faults_.push_back("tick " + std::to_string(c.frame.tick) + ": chunk envelope differs from its frame's");
+      f = RecordedFrame{profile_id_, c.tick, c.baseline, c.key, c.count, {}};
+      if (c.key && !first_key_tick_) first_key_tick_ = c.tick;
+    } else if (f.baseline != c.baseline || f.key != c.key || f.count != c.count) {
+      faults_.push_back("tick " + std::to_string(c.tick) + ": chunk envelope differs from its frame's");
       return;
     }
-    if (!f.payloads.emplace(c.index, c.payload).second)
-      faults_.push_back("tick " + std::to_string(c.frame.tick) + ": chunk " + std::to_string(c.index) + " twice");
+    if (!f.payloads.emplace(c.index, protocol::Bytes(c.payload.begin(), c.payload.end())).second)
+      faults_.push_back("tick " + std::to_string(c.tick) + ": chunk " + std::to_string(c.index) + " twice");
   }
 
   std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
@@ -137,8 +140,8 @@ class FrameRecorder {
   protocol::TcpFramer framer_;
   std::array<std::uint8_t, 16384> buffer_{};
   std::optional<protocol::Welcome> welcome_;
-  std::map<std::uint32_t, RecordedFrame> frames_;
-  std::optional<std::uint32_t> first_key_tick_;
+  std::map<Tick, RecordedFrame> frames_;
+  std::optional<Tick> first_key_tick_;
   std::vector<std::string> faults_;
   bool closed_ = false;
 };

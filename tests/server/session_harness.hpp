@@ -61,7 +61,7 @@ class SessionHarness {
     return ticks_;
   }
   // What the encoder said session `session` shows at `tick` (empty if nothing was sent).
-  std::vector<float> sent_height(std::uint64_t session, std::uint32_t tick) {
+  std::vector<float> sent_height(std::uint64_t session, Tick tick) {
     std::lock_guard lock(mutex_);
     const auto found = sent_.find({session, tick});
     return found == sent_.end() ? std::vector<float>{} : found->second;
@@ -82,7 +82,7 @@ class SessionHarness {
   SessionHub hub_;
   std::future<void> done_;
   std::mutex mutex_;
-  std::map<std::pair<std::uint64_t, std::uint32_t>, std::vector<float>> sent_;
+  std::map<std::pair<std::uint64_t, Tick>, std::vector<float>> sent_;
   std::vector<HubTickStats> ticks_;
 };
 

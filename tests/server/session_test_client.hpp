@@ -5,7 +5,8 @@
 
 #include "ack_window.hpp"
 #include "decoder.hpp"
-#include "decoder_config.hpp"
+#include "frame_records.hpp"
+#include "stream_wire.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
 #include "tcp_framer.hpp"
@@ -86,7 +87,14 @@ class SessionTestClient {
       if (error) break;
       udp_bytes_in += n;
       if (drop_udp_every && ++udp_datagrams_seen % drop_udp_every == 0) continue;  // a lossy link
-      on_message({datagram.data(), n}, wire::Transport::udp);
+      if (n == 0) continue;
+      if (datagram[0] == static_cast<std::uint8_t>(proto::DatagramKind::frames)) {
+        on_frames({datagram.data() + 1, n - 1}, wire::Transport::udp);
+      } else {
+        alignas(8) std::array<std::uint8_t, 2048> message;
+        std::copy(datagram.begin() + 1, datagram.begin() + static_cast<std::ptrdiff_t>(n), message.begin());
+        on_message({message.data(), n - 1}, wire::Transport::udp);
+      }
     }
     return !tcp_closed_;
   }
@@ -101,12 +109,12 @@ class SessionTestClient {
   }
 
   // Every complete tick's reconstruction, as the decoder showed it when it completed.
-  std::map<std::uint32_t, std::vector<float>> completed_heights;
+  std::map<Tick, std::vector<float>> completed_heights;
   std::optional<proto::Welcome> welcome;
   std::vector<proto::Error> errors;
   std::vector<proto::Bye> byes;
   std::vector<proto::SceneUpdate> scene_updates;
-  std::vector<std::uint32_t> key_ticks;
+  std::vector<Tick> key_ticks;
   bool udp_ready = false;
   bool reading_paused = false;
   bool send_acks = true;
@@ -127,14 +135,13 @@ class SessionTestClient {
     if (const auto* w = std::get_if<proto::Welcome>(&message)) {
       welcome = *w;
       framer_.set_max_message_bytes(w->max_message_bytes);
-      config_ = client::decoder_config(*w);
-      reset_decoder();
-    } else if (const auto* chunk = std::get_if<proto::FrameChunk>(&message)) {
-      on_chunk(*chunk, transport);
-    } else if (const auto* bundle = std::get_if<proto::FrameBundle>(&message)) {
-      ++udp_bundles;
-      for (const proto::FrameChunk& c : bundle->chunks)
-        if (!decoder_ || !decoder_->is_complete(c.frame.tick)) on_chunk(c, transport);
+      config_ = codec::decoder_config(*w);
+      codec::DecoderOptions options;
+      options.max_payload = proto::kMaxChunkPayloadUdp;
+      decoder_ = std::make_unique<codec::Decoder>(config_, options);
+      decoder_->add_scene(0, static_cast<std::uint8_t>(w->scene_serial), codec::scene_model_params(w->scene));
+    } else if (const auto* data = std::get_if<proto::FrameData>(&message)) {
+      on_frames(data->frames, transport);
     } else if (std::get_if<proto::UdpReady>(&message)) {
       udp_ready = true;
     } else if (const auto* e = std::get_if<proto::Error>(&message)) {
@@ -143,31 +150,37 @@ class SessionTestClient {
       byes.push_back(*b);
     } else if (const auto* u = std::get_if<proto::SceneUpdate>(&message)) {
       scene_updates.push_back(*u);
-      reset_decoder();  // the stream restarts from a key in the new scene
+      if (decoder_)  // the stream goes on: the decoder switches scene at the update's tick
+        decoder_->add_scene(u->effective_tick, static_cast<std::uint8_t>(u->serial), codec::scene_model_params(u->scene));
     }
   }
 
-  void reset_decoder() {
-    codec::DecoderOptions options;
-    options.max_payload = proto::kMaxChunkPayloadUdp;
-    decoder_ = std::make_unique<codec::Decoder>(config_, options);
+  // A block of frame records: a FrameData message, or a frames datagram (several = a bundle).
+  void on_frames(std::span<const std::uint8_t> block, wire::Transport transport) {
+    std::vector<proto::FrameRecord> records;
+    if (!proto::decode_frame_block(block, records)) {
+      ++rejected_chunks;
+      return;
+    }
+    if (records.size() > 1) ++udp_bundles;
+    for (const proto::FrameRecord& r : records)
+      if (!decoder_ || !decoder_->is_complete(r.tick)) on_record(r, transport);
   }
 
-  void on_chunk(const proto::FrameChunk& chunk, wire::Transport transport) {
+  void on_record(const proto::FrameRecord& record, wire::Transport transport) {
     (transport == wire::Transport::udp ? udp_frame_chunks : tcp_frame_chunks)++;
     if (!decoder_) return;
-    const codec::ChunkView view{chunk.frame.tick, chunk.frame.baseline, chunk.frame.key, chunk.index, chunk.count,
-                                chunk.payload};
+    const codec::ChunkView view{record.tick, record.baseline, record.key, record.index, record.count, record.payload};
     if (decoder_->accept(view) != codec::ChunkError::ok) {
       ++rejected_chunks;
       return;
     }
-    const std::uint32_t tick = chunk.frame.tick;
+    const Tick tick = record.tick;
     if (!decoder_->is_complete(tick) || completed_heights.count(tick)) return;
-    if (chunk.frame.key) key_ticks.push_back(tick);
+    if (record.key) key_ticks.push_back(tick);
     const codec::ReconstructedFrame* shown = decoder_->latest();
     if (shown && shown->tick == tick && shown->complete) completed_heights[tick] = shown->height;
-    const std::vector<std::uint32_t> ticks = decoder_->complete_ticks();
+    const std::vector<Tick> ticks = decoder_->complete_ticks();
     const auto window = proto::ack_window(ticks);
     if (!window || !welcome || !send_acks) return;
     const proto::Ack ack{welcome->session_id, welcome->udp_cookie, window->latest_tick, window->bits};

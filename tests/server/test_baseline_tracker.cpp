@@ -1,4 +1,5 @@
 // BaselineTracker (Quake 3 baselines) and TokenBucket: pure session policy, no sockets.
+#include "wire_limits.hpp"
 #include "baseline_tracker.hpp"
 #include "token_bucket.hpp"
 
@@ -45,7 +46,7 @@ TEST_CASE("baselines prefer the grid, so sessions acking different ticks share o
   BaselineTracker a(4), b(4);
   for (BaselineTracker* t : {&a, &b}) {
     t->record_sent(8, StateId{8, 1}, true, true);
-    for (std::uint32_t tick = 9; tick <= 14; ++tick) t->record_sent(tick, StateId{tick, tick}, false);
+    for (ocean::Tick tick = 9; tick <= 14; ++tick) t->record_sent(tick, StateId{tick, tick}, false);
   }
   a.on_ack({13, 0b11111});  // 8..13
   b.on_ack({14, 0b110111});  // 14, 13, 12, 10, 9, 8 (11 lost)
@@ -58,6 +59,18 @@ TEST_CASE("baselines prefer the grid, so sessions acking different ticks share o
   CHECK(a.choose(13 + 33, true, held) == std::nullopt);
   CHECK(a.choose(15, true, [](StateId s) { return s.tick != 12; }) == StateId{13, 13});
   CHECK(a.root_tick() == 8u);
+}
+
+TEST_CASE("a key with nothing sent after it stays a baseline however late it is acked") {
+  BaselineTracker t(4);
+  t.record_sent(100, StateId{100, 1}, true, true);
+  // A thin link: the ack of the key arrives 60 ticks later, nothing else was sent meanwhile.
+  t.on_ack({100, 0});
+  CHECK(t.choose(160, true, held) == StateId{100, 1});
+  CHECK(t.choose(100 + ocean::protocol::kMaxFrameLag + 4, true, held) == std::nullopt);
+  // Once later frames went out the client may have dropped the key: the ack window applies again.
+  t.record_sent(161, StateId{161, 2}, false);
+  CHECK(t.choose(164, true, held) == std::nullopt);
 }
 
 TEST_CASE("a key starts a new root: nothing from before it is chosen again") {

@@ -126,7 +126,7 @@ TEST_CASE("on a lossy UDP link, each lost frame arrives in the next datagram's F
   // Every 5th datagram was dropped, yet no tick is missing: its copy came in the next one.
   const std::uint32_t to = client->completed_heights.rbegin()->first;
   std::vector<std::uint32_t> missing;
-  for (std::uint32_t tick = from; tick <= to; ++tick)
+  for (ocean::Tick tick = from; tick <= to; ++tick)
     if (!client->completed_heights.count(tick)) missing.push_back(tick);
   INFO("missing ticks: " << missing.size());
   CHECK(missing.empty());

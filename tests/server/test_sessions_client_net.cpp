@@ -26,7 +26,7 @@ TEST_CASE("client/net connections stream from the server on TCP and UDP") {
     config.session.profile_id = 1;  // mobile: its rate equals the tick rate
     config.session.transport = transports[i];
     auto connection = ocean::client::ClientConnection::create(
-        io, config, [&seen, i](const ocean::codec::ReconstructedFrame& frame, std::uint32_t tick, double) {
+        io, config, [&seen, i](const ocean::codec::ReconstructedFrame& frame, ocean::Tick tick, double) {
           if (frame.complete) seen[i].complete[tick] = frame.height;
         });
     connection->set_on_welcome([&seen, i](const ocean::protocol::Welcome& welcome) { seen[i].session_id = welcome.session_id; });

@@ -1,0 +1,81 @@
+// SceneTimeline: lazily built models per scene; recurrences shared by scenes of one depth.
+#include "scene_timeline.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace ocean::codec {
+
+// Both are built on first use: the scene model (h0 tables) only for keys and changes of scene,
+// the recurrence (whose a(k) depends on the scene's depth) only once a state advances in it.
+struct SceneTimeline::Held {
+  Entry entry;
+  mutable std::unique_ptr<ModalModel> recurrence;
+  mutable std::unique_ptr<SceneModel> model;
+};
+
+SceneTimeline::SceneTimeline(const StreamConfig& config) : config_(config) {}
+SceneTimeline::SceneTimeline(SceneTimeline&&) noexcept = default;
+SceneTimeline& SceneTimeline::operator=(SceneTimeline&&) noexcept = default;
+SceneTimeline::~SceneTimeline() = default;
+
+void SceneTimeline::add(Tick from, std::uint8_t tag, const SceneModelParams& scene) {
+  if (scene.size_x < config_.grid || scene.size_z < config_.grid)
+    throw std::invalid_argument("SceneTimeline::add: the scene's grid " + std::to_string(scene.size_x) + "x" +
+                                std::to_string(scene.size_z) + " is smaller than the stream's " +
+                                std::to_string(config_.grid));
+  auto held = std::make_unique<Held>();
+  held->entry = Entry{tag, scene};
+  entries_[from] = std::move(held);
+}
+
+const SceneTimeline::Held& SceneTimeline::held_at(Tick tick) const {
+  auto it = entries_.upper_bound(tick);
+  if (it == entries_.begin()) throw std::logic_error("SceneTimeline: no scene for tick " + std::to_string(tick));
+  return *std::prev(it)->second;
+}
+
+const SceneTimeline::Entry* SceneTimeline::at(Tick tick) const {
+  auto it = entries_.upper_bound(tick);
+  return it == entries_.begin() ? nullptr : &std::prev(it)->second->entry;
+}
+
+Tick SceneTimeline::start_of(Tick tick) const {
+  auto it = entries_.upper_bound(tick);
+  if (it == entries_.begin()) throw std::logic_error("SceneTimeline: no scene for tick " + std::to_string(tick));
+  return std::prev(it)->first;
+}
+
+void SceneTimeline::model_state(Tick tick, ModalState& out) const {
+  const Held& held = held_at(tick);
+  if (!held.model) {
+    StreamConfig with_depth = config_;
+    with_depth.depth_m = held.entry.scene.depth_m;
+    held.model = std::make_unique<SceneModel>(with_depth, held.entry.scene);
+  }
+  held.model->state_at(tick, out);
+}
+
+void SceneTimeline::advance(ModalState& state, Tick from, Tick to) const {
+  Tick now = from;
+  const Tick start = start_of(to);
+  if (start > from) {
+    model_state(start, state);
+    now = start;
+  }
+  const Held& held = held_at(now);
+  if (!held.recurrence) {
+    StreamConfig with_depth = config_;
+    with_depth.depth_m = held.entry.scene.depth_m;
+    held.recurrence = std::make_unique<ModalModel>(with_depth);
+  }
+  held.recurrence->advance(state, to - now);
+}
+
+void SceneTimeline::forget_before(Tick tick) {
+  auto keep = entries_.upper_bound(tick);
+  if (keep == entries_.begin()) return;
+  entries_.erase(entries_.begin(), std::prev(keep));
+}
+
+}  // namespace ocean::codec

@@ -1,0 +1,56 @@
+// SceneTimeline: the scenes a stream's encoder or decoder knows, each in force from its effective
+// tick on (CODEC.md 7.5). Advancing a state across an effective tick replaces it by the new
+// scene's model state there, so a weather change costs no bytes and no keyframe; between changes
+// a state advances by the recurrence of the scene in force (its depth sets w).
+#pragma once
+
+#include "modal_model.hpp"
+#include "scene_model.hpp"
+#include "stream_config.hpp"
+#include "tick.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+
+namespace ocean::codec {
+
+class SceneTimeline {
+ public:
+  struct Entry {
+    std::uint8_t tag = 0;     // SceneUpdate.serial mod 256; every chunk names the tag of its tick
+    SceneModelParams scene;
+  };
+
+  explicit SceneTimeline(const StreamConfig& config);
+  SceneTimeline(SceneTimeline&&) noexcept;
+  SceneTimeline& operator=(SceneTimeline&&) noexcept;
+  ~SceneTimeline();
+
+  // The scene in force from `from` on (replacing an entry of the same tick). Throws
+  // std::invalid_argument when the scene does not fit the stream (grid larger than its size).
+  void add(Tick from, std::uint8_t tag, const SceneModelParams& scene);
+  // The entry in force at `tick`, or nullptr before the first one.
+  const Entry* at(Tick tick) const;
+  // The first tick of the entry in force at `tick` (at(tick) must not be null).
+  Tick start_of(Tick tick) const;
+
+  // The scene model's state of `tick` (a modeled key). at(tick) must not be null.
+  void model_state(Tick tick, ModalState& out) const;
+  // `state` of tick `from` becomes the state of tick `to` (>= from): replaced by the model state
+  // at the last effective tick in (from, to], then advanced by the recurrence of that scene.
+  void advance(ModalState& state, Tick from, Tick to) const;
+
+  // Forgets entries no longer in force at `tick` or later.
+  void forget_before(Tick tick);
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  struct Held;
+  const Held& held_at(Tick tick) const;
+
+  StreamConfig config_;
+  std::map<Tick, std::unique_ptr<Held>> entries_;
+};
+
+}  // namespace ocean::codec
