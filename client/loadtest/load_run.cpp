@@ -16,11 +16,11 @@
 #include <unistd.h>
 
 #include "client_connection.hpp"
+#include "client_links.hpp"
 #include "client_tally.hpp"
 #include "frame_verdict.hpp"
 #include "ground_truth.hpp"
 #include "latency_histogram.hpp"
-#include "link_model.hpp"
 #include "npy_writer.hpp"
 #include "profile.hpp"
 
@@ -51,27 +51,6 @@ std::optional<double> process_cpu_s(int pid) {
   unsigned long long utime = 0, stime = 0;
   if (!(fields >> utime >> stime)) return std::nullopt;
   return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
-}
-
-// TCP hides loss as retransmission delay, and a lost message would break the session: TCP
-// directions get the rate and delay only, and a queue that never drops.
-LinkSpec tcp_link(const LinkSpec& spec) {
-  LinkSpec t;
-  t.rate_bps = spec.rate_bps;
-  t.delay_ms = spec.delay_ms;
-  t.queue_bytes = std::numeric_limits<std::uint32_t>::max();
-  return t;
-}
-
-client::ConnectionLinks make_links(const LinkSpec& spec, std::uint64_t seed) {
-  client::ConnectionLinks links;
-  if (!spec.impaired()) return links;
-  using Adapter = client::PacketLinkAdapter<LinkModel>;
-  links.udp_down = std::make_unique<Adapter>(spec, seed * 4 + 0);
-  links.udp_up = std::make_unique<Adapter>(spec, seed * 4 + 1);
-  links.tcp_down = std::make_unique<Adapter>(tcp_link(spec), seed * 4 + 2);
-  links.tcp_up = std::make_unique<Adapter>(tcp_link(spec), seed * 4 + 3);
-  return links;
 }
 
 // What a client's sessions reported that explains lost frames.
@@ -166,7 +145,7 @@ class Driver {
     auto connection = client::ClientConnection::create(
         io_, config,
         [this, i](const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) { on_frame(i, frame, tick, arrival_s); },
-        make_links(o_.link, o_.seed + i));
+        make_client_links(o_.link, o_.seed + i));
     connection->set_on_welcome([this, i](const protocol::Welcome& w) { on_welcome(i, w); });
     connection->set_on_session_end([this, i](const client::ClientSession& s, const std::string&) {
       clients_[i].session_ended = true;
