@@ -141,6 +141,7 @@ class Driver {
     config.session.profile_id = find_profile(o_.profile)->id;
     config.session.transport = o_.transport == "tcp" ? wire::Transport::tcp : wire::Transport::udp;
     config.session.client_name = "ocean-loadtest-" + std::to_string(i);
+    config.session.bandwidth_bps = o_.bandwidth_bps;
     if (o_.shared_decode) config.session.decode_memo = [this](const codec::StreamConfig& c) { return memo_for(c); };
     auto connection = client::ClientConnection::create(
         io_, config,
@@ -326,6 +327,7 @@ class Driver {
     s.transport = o_.transport;
     s.link = o_.link_text;
     s.scenario = o_.scenario;
+    s.bandwidth_bps = o_.bandwidth_bps;
     const double wall = end_wall_steady_ - start_steady_;
     s.duration_s = wall;
     s.loadtest_cpu_pct = wall > 0 ? 100.0 * (cpu_end_ - cpu_start_) / wall : 0.0;

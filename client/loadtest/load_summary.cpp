@@ -77,6 +77,7 @@ std::string to_json(const LoadSummary& s) {
   field("transport", json_string(s.transport));
   field("link", json_string(s.link));
   field("scenario", json_string(s.scenario));
+  field("bandwidth_bps", u(s.bandwidth_bps));
   return j + "}";
 }
 
@@ -90,6 +91,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   row("scenario", s.scenario.empty() ? "(none)" : s.scenario);
   row("profile / transport", s.profile + " / " + s.transport);
   row("link", s.link.empty() ? "(no impairment)" : s.link);
+  row("announced bandwidth", s.bandwidth_bps ? num(s.bandwidth_bps / 1e3) + " kbit/s" : "(unstated)");
   row("clients (connected)", std::to_string(s.clients) + " (" + std::to_string(s.clients_connected) + ")");
   row("duration s", num(s.duration_s));
   row("frames expected", std::to_string(s.frames_expected));

@@ -31,6 +31,7 @@ struct LoadSummary {
   double loadtest_cpu_pct = 0.0;
   double duration_s = 0.0;
   std::string profile, transport, link, scenario;
+  std::uint64_t bandwidth_bps = 0;  // announced in every client's Hello (0 = unstated)
 };
 
 void print_table(std::ostream& out, const LoadSummary& s);

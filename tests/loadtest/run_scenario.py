@@ -14,11 +14,19 @@ import local_server  # noqa: E402
 # Minimum frames_ok_pct per scenario for 4 clients over 3 s (desktop-lan: 1 client, 6 s), startup
 # included. The impaired links lose frames by design; the floor is what the scenario should deliver with margin, see SCENARIOS.md.
 OK_PCT_FLOOR = {
-    "mobile-3g": 95.0,     # measured 100, 100 (5% loss, recovered from FrameBundle copies)
+    # Lowered from 95 when the clients began announcing the link's rate (256 kbit/s) in their Hello:
+    # the server then paces the startup keyframe to that budget and skips about 3 deltas per
+    # client behind it (a fixed startup cost, ~4 % of a 3 s run). Measured 95.0, 95.4, 95.8, 96.2,
+    # 96.6 (100 before, with no bandwidth announced).
+    "mobile-3g": 90.0,
     "lossy-wifi": 95.0,    # measured 100, 100
     "desktop-lan": 95.0,   # measured 98.1, 98.8 (1 client, 6 s)
     "tcp-fallback": 95.0,  # measured 100, 100
-    "flaky-edge": 55.0,    # measured 76.1, 68.9 (15% loss, 128 kbit/s: copies often do not fit)
+    # Lowered from 55 when the clients began announcing 128 kbit/s: with that budget the server
+    # skips deltas behind every paced keyframe (15 % loss asks for several). Measured 54.4, 54.1,
+    # 54.1, 45.6, 45.8 (71.3, 80.0 with the shared bottleneck and no bandwidth announced; 76.1,
+    # 68.9 before either change).
+    "flaky-edge": 40.0,
 }
 
 

@@ -51,3 +51,16 @@ TEST_CASE("options: bad values name their flag") {
   CHECK(ok.options.host == "10.0.0.2");
   CHECK(ok.options.port == "7100");
 }
+
+TEST_CASE("options: the announced bandwidth is --bandwidth, else the scenario's, else the link's rate") {
+  CHECK(parse_options({"--scenario", "mobile-3g"}).options.bandwidth_bps == 256000);
+  CHECK(parse_options({"--scenario", "desktop-lan"}).options.bandwidth_bps == 0);
+  CHECK(parse_options({"--scenario", "mobile-3g", "--link", "delay=5ms"}).options.bandwidth_bps == 0);
+  CHECK(parse_options({"--link", "rate=1mbit"}).options.bandwidth_bps == 1000000);
+  CHECK(parse_options({"--scenario", "mobile-3g", "--bandwidth", "32kbit"}).options.bandwidth_bps == 32000);
+  CHECK(parse_options({"--bandwidth", "16000"}).options.bandwidth_bps == 16000);
+  CHECK(parse_options({"--bandwidth", "4kbps"}).options.bandwidth_bps == 32000);
+  CHECK(parse_options({"--scenario", "mobile-3g", "--bandwidth", "0"}).options.bandwidth_bps == 0);
+  CHECK_THAT(parse_options({"--bandwidth", "fast"}).error, Catch::Contains("--bandwidth"));
+  CHECK_THAT(parse_options({"--bandwidth", "-5kbit"}).error, Catch::Contains("--bandwidth"));
+}
