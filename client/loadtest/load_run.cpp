@@ -2,27 +2,23 @@
 
 #include <asio/io_context.hpp>
 #include <asio/steady_timer.hpp>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <memory>
 #include <optional>
-#include <sstream>
-#include <sys/resource.h>
-#include <unistd.h>
 
-#include "client_connection.hpp"
+#include "client_figures.hpp"
 #include "client_links.hpp"
-#include "client_tally.hpp"
 #include "frame_verdict.hpp"
 #include "ground_truth.hpp"
 #include "latency_histogram.hpp"
 #include "npy_writer.hpp"
+#include "process_cpu.hpp"
 #include "profile.hpp"
+#include "sim_client.hpp"
 
 namespace ocean::loadtest {
 namespace {
@@ -30,43 +26,6 @@ namespace {
 double unix_now_s() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
-
-double own_cpu_s() {
-  rusage r{};
-  getrusage(RUSAGE_SELF, &r);
-  return r.ru_utime.tv_sec + r.ru_utime.tv_usec * 1e-6 + r.ru_stime.tv_sec + r.ru_stime.tv_usec * 1e-6;
-}
-
-// utime + stime of a process from /proc/PID/stat; nullopt when it cannot be read.
-std::optional<double> process_cpu_s(int pid) {
-  if (pid <= 0) return std::nullopt;
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
-  std::string text;
-  if (!std::getline(in, text)) return std::nullopt;
-  const auto paren = text.rfind(')');  // the command name may hold spaces
-  if (paren == std::string::npos) return std::nullopt;
-  std::istringstream fields(text.substr(paren + 2));
-  std::string skip;
-  for (int i = 3; i < 14; ++i) fields >> skip;  // fields 3..13
-  unsigned long long utime = 0, stime = 0;
-  if (!(fields >> utime >> stime)) return std::nullopt;
-  return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
-}
-
-// What a client's sessions reported that explains lost frames.
-struct SessionCounts {
-  std::uint64_t codec_rejected = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0,
-                frames_recovered = 0;
-  std::array<std::uint64_t, client::kChunkErrorCount> codec_by_reason{};
-  void add(const client::ClientStats& s) {
-    for (std::size_t r = 0; r < codec_by_reason.size(); ++r) codec_by_reason[r] += s.chunks_rejected_by_codec[r];
-    codec_rejected += s.codec_rejected_total();
-    messages_rejected += s.rejected_total();
-    keyframe_requests += s.keyframe_requests_sent;
-    transport_fallbacks += s.transport_fallbacks;
-    frames_recovered += s.frames_recovered;
-  }
-};
 
 // The stream every client of this run gets, fixed by the first Welcome.
 struct StreamFacts {
@@ -79,32 +38,9 @@ struct StreamFacts {
   double interpolation_delay_s = 0.0;
 };
 
-struct SimClient {
-  std::shared_ptr<client::ClientConnection> connection;
-  std::optional<ClientTally> tally;
-  std::optional<std::uint32_t> welcome_tick;
-  std::uint32_t scene_tick_seen = 0;
-  std::uint64_t closed_bytes = 0, closed_keyframes = 0;
-  SessionCounts closed;
-  bool session_ended = false;  // the connection keeps its last session after it ended: counted in closed_*
-  const client::ClientSession* live_session() const {
-    return connection && !session_ended ? connection->session() : nullptr;
-  }
-  std::uint64_t bytes() const {
-    std::uint64_t b = closed_bytes;
-    if (const auto* s = live_session()) b += s->stats().tcp.bytes_in + s->stats().udp.bytes_in;
-    return b;
-  }
-  std::uint64_t keyframes() const {
-    std::uint64_t k = closed_keyframes;
-    if (const auto* s = live_session()) k += s->stats().keyframes_complete;
-    return k;
-  }
-};
-
 class Driver {
  public:
-  explicit Driver(const LoadtestOptions& o) : o_(o), clients_(static_cast<std::size_t>(o.clients)), tick_timer_(io_) {}
+  explicit Driver(const LoadtestOptions& o) : o_(o), clients_(static_cast<std::size_t>(o.clients)), tick_timer_(io_), sample_timer_(io_) {}
 
   LoadRunResult run() {
     LoadRunResult result;
@@ -115,6 +51,7 @@ class Driver {
     server_cpu_start_ = process_cpu_s(o_.server_pid);
     end_steady_ = start_steady_ + o_.ramp_s + o_.duration_s;
     schedule_second(1);
+    schedule_sample(1);
     io_.run_for(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
         std::chrono::duration<double>(o_.ramp_s + o_.duration_s + 2.0)));
     io_.restart();
@@ -148,13 +85,11 @@ class Driver {
         [this, i](const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) { on_frame(i, frame, tick, arrival_s); },
         make_client_links(o_.link, o_.seed + i));
     connection->set_on_welcome([this, i](const protocol::Welcome& w) { on_welcome(i, w); });
-    connection->set_on_session_end([this, i](const client::ClientSession& s, const std::string&) {
-      clients_[i].session_ended = true;
-      clients_[i].closed_bytes += s.stats().tcp.bytes_in + s.stats().udp.bytes_in;
-      clients_[i].closed_keyframes += s.stats().keyframes_complete;
-      clients_[i].closed.add(s.stats());
-    });
-    clients_[i].connection = connection;
+    connection->set_on_session_end([this, i](const client::ClientSession& s, const std::string&) { clients_[i].end_session(s); });
+    SimClient& c = clients_[i];
+    c.connection = connection;
+    c.started_s = Clock::now();
+    c.traffic.sample(c.started_s, 0);
     connection->start();
   }
 
@@ -213,18 +148,26 @@ class Driver {
   void on_frame(std::size_t i, const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
     SimClient& c = clients_[i];
     if (!truth_ || !c.tally || measuring_done_) return;
-    // The schedule owes frames up to one second before the end; later ones may still be in flight.
-    if (tick > end_tick()) return;
+    // The schedule owes frames up to one second before the end; later ones may still be in flight,
+    // and count only as a client's first frame.
+    const bool owed = tick <= end_tick();
+    if (!owed && c.first_frame_s) return;
     const double now_unix = unix_now_s();
     if (const client::ClientSession* s = c.connection->session(); s && s->scene_effective_tick() != c.scene_tick_seen) {
       c.scene_tick_seen = s->scene_effective_tick();
       truth_->set_scene(c.scene_tick_seen, s->scene());
     }
     const FrameError error = checked_error(frame, tick);
+    const bool within_bound = within_bounds(error, facts_.bounds);
+    if (within_bound && !c.first_frame_s) {
+      c.first_frame_s = arrival_s;
+      c.traffic.set_first_frame(arrival_s);
+    }
+    if (!owed) return;
     ClientTally& tally = *c.tally;
     tally.clock().observe(tick, arrival_s);
     FrameOutcome outcome;
-    outcome.within_bound = within_bounds(error, facts_.bounds);
+    outcome.within_bound = within_bound;
     outcome.on_time = arrived_on_time(arrival_s, tick, *tally.clock().offset_s(), facts_.tick_period_s,
                                       facts_.interpolation_delay_s);
     if (!tally.record(tick, outcome, error.height_m)) return;
@@ -258,6 +201,25 @@ class Driver {
         schedule_second(second);
       }
     });
+  }
+
+  // Every 100 ms, each started client's received bytes, for its busiest second (PeakRate).
+  void schedule_sample(int k) {
+    const double due = start_steady_ + k * kSampleS;
+    const double wait = std::max(0.0, due - Clock::now());
+    sample_timer_.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(wait)));
+    sample_timer_.async_wait([this, k](const std::error_code& ec) {
+      if (ec || measuring_done_) return;
+      sample_traffic();
+      // A loop that fell behind skips the samples it missed instead of bunching them.
+      const int next = std::max(k + 1, static_cast<int>(std::floor((Clock::now() - start_steady_) / kSampleS)) + 1);
+      schedule_sample(next);
+    });
+  }
+
+  void sample_traffic() {
+    const double now = Clock::now();
+    for (std::size_t i = 0; i < launched_; ++i) clients_[i].traffic.sample(now, clients_[i].bytes());
   }
 
   double next_launch_time() const {
@@ -303,14 +265,17 @@ class Driver {
   }
 
   void finish() {
+    sample_traffic();
     measuring_done_ = true;
+    sample_timer_.cancel();
     end_unix_ = unix_now_s();
     end_wall_steady_ = Clock::now();
     cpu_end_ = own_cpu_s();
     server_cpu_end_ = process_cpu_s(o_.server_pid);
-    end_bytes_ = 0;
+    end_bytes_ = end_datagrams_ = 0;
     for (const SimClient& c : clients_) {
       end_bytes_ += c.bytes();
+      end_datagrams_ += c.udp_datagrams();
       if (c.connection && c.connection->connected()) ++connected_at_end_;
     }
     for (SimClient& c : clients_)
@@ -336,8 +301,12 @@ class Driver {
     s.interpolation_delay_ms = facts_.interpolation_delay_s * 1e3;
     const std::uint32_t last_tick = truth_ ? end_tick() : 0;
     double client_seconds = 0.0;
+    std::vector<ClientConnectionFacts> facts(clients_.size());
     for (std::size_t i = 0; i < clients_.size(); ++i) {
       const SimClient& c = clients_[i];
+      if (c.first_frame_s) facts[i].ttff_s = *c.first_frame_s - c.started_s;
+      if (c.traffic.has_steady_window()) facts[i].peak_kbps = c.traffic.peak_kbps();
+      facts[i].startup_peak_kbps = c.traffic.startup_peak_kbps();
       const double started = o_.ramp_s * static_cast<double>(i) / static_cast<double>(clients_.size());
       client_seconds += std::max(0.0, wall - started);
       s.keyframes += c.keyframes();
@@ -371,6 +340,14 @@ class Driver {
     if (!truth_) s.frames_expected = 0;
     s.frames_ok_pct = s.frames_expected ? 100.0 * std::min(s.frames_ok, s.frames_expected) / s.frames_expected : 0.0;
     s.kbps_mean = client_seconds > 0 ? end_bytes_ * 8.0 / 1000.0 / client_seconds : 0.0;
+    s.kbps_mean_ip = client_seconds > 0 ? (end_bytes_ + kIpUdpHeaderBytes * end_datagrams_) * 8.0 / 1000.0 / client_seconds : 0.0;
+    const ConnectionFigures figures = connection_figures(facts);
+    s.ttff_max_s = figures.ttff_max_s;
+    s.ttff_p50_s = figures.ttff_p50_s;
+    s.clients_without_frame = figures.clients_without_frame;
+    s.kbps_peak_1s = figures.kbps_peak_1s;
+    s.kbps_peak_1s_p50 = figures.kbps_peak_1s_p50;
+    s.kbps_peak_1s_startup = figures.kbps_peak_1s_startup;
     s.latency_p50_ms = latency_all_.percentile(50) * 1e3;
     s.latency_p99_ms = latency_all_.percentile(99) * 1e3;
     s.latency_max_ms = latency_all_.max_s() * 1e3;
@@ -386,12 +363,14 @@ class Driver {
   const LoadtestOptions& o_;
   asio::io_context io_;
   std::vector<SimClient> clients_;
-  asio::steady_timer tick_timer_;
+  asio::steady_timer tick_timer_, sample_timer_;
+  static constexpr double kSampleS = 0.1;
+  static constexpr int kIpUdpHeaderBytes = 28;  // IPv4 20 + UDP 8, per datagram
   std::size_t launched_ = 0;
   std::optional<GroundTruth> truth_;
   StreamFacts facts_;
   LatencyHistogram latency_all_, latency_second_;
-  std::uint64_t second_frames_ = 0, second_ok_ = 0, second_bad_ = 0, last_bytes_ = 0, end_bytes_ = 0;
+  std::uint64_t second_frames_ = 0, second_ok_ = 0, second_bad_ = 0, last_bytes_ = 0, end_bytes_ = 0, end_datagrams_ = 0;
   std::vector<SeriesRow> series_;
   double start_steady_ = 0.0, end_steady_ = 0.0, end_wall_steady_ = 0.0, start_unix_ = 0.0, end_unix_ = 0.0;
   double cpu_start_ = 0.0, cpu_end_ = 0.0;

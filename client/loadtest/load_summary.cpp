@@ -41,6 +41,13 @@ std::string to_json(const LoadSummary& s) {
   field("max_err_m", num(s.max_err_m));
   field("error_bound_m", num(s.error_bound_m));
   field("kbps_mean", num(s.kbps_mean));
+  field("kbps_mean_ip", num(s.kbps_mean_ip));
+  field("kbps_peak_1s", num(s.kbps_peak_1s));
+  field("kbps_peak_1s_p50", num(s.kbps_peak_1s_p50));
+  field("kbps_peak_1s_startup", num(s.kbps_peak_1s_startup));
+  field("ttff_max_s", s.ttff_max_s ? num(*s.ttff_max_s) : "null");
+  field("ttff_p50_s", s.ttff_p50_s ? num(*s.ttff_p50_s) : "null");
+  field("clients_without_frame", std::to_string(s.clients_without_frame));
   field("latency_p50_ms", num(s.latency_p50_ms));
   field("latency_p99_ms", num(s.latency_p99_ms));
   field("latency_max_ms", num(s.latency_max_ms));
@@ -114,7 +121,12 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   row("fallbacks to tcp", std::to_string(s.transport_fallbacks));
   row("frames recovered", std::to_string(s.frames_recovered));
   row("decodes run / shared", std::to_string(s.decodes_run) + " / " + std::to_string(s.decodes_shared));
-  row("kbit/s per client", num(s.kbps_mean));
+  row("kbit/s per client", num(s.kbps_mean) + " (with IP/UDP headers " + num(s.kbps_mean_ip) + ")");
+  row("peak 1 s kbit/s max/p50", num(s.kbps_peak_1s) + " / " + num(s.kbps_peak_1s_p50) + " (from the first frame on)");
+  row("peak 1 s kbit/s startup", num(s.kbps_peak_1s_startup) + " (windows before the first frame)");
+  auto seconds = [](const std::optional<double>& v) { return v ? num(*v) : std::string("none"); };
+  row("first frame s max/p50", seconds(s.ttff_max_s) + " / " + seconds(s.ttff_p50_s));
+  row("clients without frame", std::to_string(s.clients_without_frame));
   row("latency p50/p99/max ms", num(s.latency_p50_ms) + " / " + num(s.latency_p99_ms) + " / " + num(s.latency_max_ms));
   row("interpolation delay ms", num(s.interpolation_delay_ms));
   row("server cpu %", s.server_cpu_pct ? num(*s.server_cpu_pct) : "(unknown: pass --server-pid)");

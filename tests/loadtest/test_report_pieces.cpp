@@ -56,6 +56,12 @@ TEST_CASE("summary json: the fields the CTest wrapper reads, server cpu only whe
   CHECK_THAT(j, Catch::Contains("\"frames_bad\":0"));
   CHECK_THAT(j, Catch::Contains("\"link\":\"loss=5%\""));
   CHECK_THAT(j, !Catch::Contains("server_cpu_pct"));
+  CHECK_THAT(j, Catch::Contains("\"ttff_max_s\":null"));
+  CHECK_THAT(j, Catch::Contains("\"clients_without_frame\":0"));
+  s.ttff_max_s = 1.25;
+  s.kbps_peak_1s = 48;
+  CHECK_THAT(to_json(s), Catch::Contains("\"ttff_max_s\":1.25"));
+  CHECK_THAT(to_json(s), Catch::Contains("\"kbps_peak_1s\":48"));
   s.server_cpu_pct = 12.5;
   CHECK_THAT(to_json(s), Catch::Contains("\"server_cpu_pct\":12.5"));
   CHECK(j.find('\n') == std::string::npos);
