@@ -12,10 +12,10 @@
 
 #include "client_figures.hpp"
 #include "client_links.hpp"
+#include "frame_recorder.hpp"
 #include "frame_verdict.hpp"
 #include "ground_truth.hpp"
 #include "latency_histogram.hpp"
-#include "npy_writer.hpp"
 #include "process_cpu.hpp"
 #include "profile.hpp"
 #include "sim_client.hpp"
@@ -44,7 +44,7 @@ class Driver {
 
   LoadRunResult run() {
     LoadRunResult result;
-    if (!o_.record_path.empty()) record_path_ = o_.record_path;
+    if (!o_.record_path.empty()) recorder_.emplace(o_.record_path);
     start_steady_ = client::ClientConnection::now_s();
     start_unix_ = unix_now_s();
     cpu_start_ = own_cpu_s();
@@ -61,7 +61,13 @@ class Driver {
     io_.run_for(std::chrono::milliseconds(200));
     result.summary = summarize();
     result.series = std::move(series_);
-    if (recorder_) recorder_->close();
+    if (recorder_) {
+      try {
+        recorder_->close();
+      } catch (const std::exception& e) {
+        if (record_error_.empty()) record_error_ = std::string("--record: ") + e.what();
+      }
+    }
     result.error = record_error_;
     return result;
   }
@@ -177,11 +183,10 @@ class Driver {
     ++second_frames_;
     if (outcome.within_bound && outcome.on_time) ++second_ok_;
     if (!outcome.within_bound) ++second_bad_;
-    if (i == 0 && !record_path_.empty() && record_error_.empty() && (!recorded_tick_ || tick > *recorded_tick_)) {
+    if (i == 0 && recorder_ && record_error_.empty() && (!recorded_tick_ || tick > *recorded_tick_)) {
       recorded_tick_ = tick;
       try {
-        if (!recorder_) recorder_.emplace(record_path_, facts_.grid, facts_.grid);
-        recorder_->append(frame.height);
+        recorder_->append(tick, facts_.grid, frame.height);
       } catch (const std::exception& e) {
         record_error_ = std::string("--record: ") + e.what();
       }
@@ -377,8 +382,8 @@ class Driver {
   std::optional<double> server_cpu_start_, server_cpu_end_;
   bool measuring_done_ = false;
   int connected_at_end_ = 0;
-  std::string record_path_, record_error_;
-  std::optional<codec::NpyWriter> recorder_;
+  std::string record_error_;
+  std::optional<FrameRecorder> recorder_;
   std::optional<std::uint32_t> recorded_tick_;  // client 0's file holds frames in tick order
   std::vector<std::unique_ptr<codec::DecodeMemo>> memos_;
   std::map<std::uint64_t, FrameError> verdicts_;  // by ReconstructedFrame::shared_id

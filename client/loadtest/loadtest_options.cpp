@@ -65,7 +65,7 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
                "state share one decode, which gives bit-identical frames at a fraction of the CPU)");
   app.add_option("--csv", o.csv_path, "write a per-second series to this CSV file");
   app.add_option("--plot", o.plot_path, "render kbps, on-time % and latency over time to this PNG (gnuplot)");
-  app.add_option("--record", o.record_path, "record client 0's reconstructed heights to this .npy file");
+  app.add_option("--record", o.record_path, "record client 0's reconstructed heights to this .npy file, and each frame's tick to FILE.ticks.npy (int64)");
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
   try {
