@@ -69,6 +69,13 @@ class Driver {
       }
     }
     result.error = record_error_;
+    if (result.summary.clients_welcomed == 0) {
+      // The figures of a run no client took part in are zeros, not a measurement.
+      std::string why = clients_.empty() || !clients_[0].connection ? std::string("never started")
+                                                                    : clients_[0].connection->counters().last_close_reason;
+      result.error = "no client ever connected to " + o_.host + ":" + o_.port + " (client 0: " +
+                     (why.empty() ? "no answer" : why) + ")" + (result.error.empty() ? "" : "; " + result.error);
+    }
     return result;
   }
 
@@ -309,6 +316,7 @@ class Driver {
     std::vector<ClientConnectionFacts> facts(clients_.size());
     for (std::size_t i = 0; i < clients_.size(); ++i) {
       const SimClient& c = clients_[i];
+      if (c.welcome_tick) ++s.clients_welcomed;
       if (c.first_frame_s) facts[i].ttff_s = *c.first_frame_s - c.started_s;
       if (c.traffic.has_steady_window()) facts[i].peak_kbps = c.traffic.peak_kbps();
       facts[i].startup_peak_kbps = c.traffic.startup_peak_kbps();

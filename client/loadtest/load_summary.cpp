@@ -36,6 +36,7 @@ std::string to_json(const LoadSummary& s) {
   auto u = [](std::uint64_t v) { return std::to_string(v); };
   field("clients", std::to_string(s.clients));
   field("clients_connected", std::to_string(s.clients_connected));
+  field("clients_welcomed", std::to_string(s.clients_welcomed));
   field("frames_ok_pct", num(s.frames_ok_pct));
   field("frames_bad", u(s.frames_bad));
   field("max_err_m", num(s.max_err_m));
@@ -99,7 +100,8 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   row("profile / transport", s.profile + " / " + s.transport);
   row("link", s.link.empty() ? "(no impairment)" : s.link);
   row("announced bandwidth", s.bandwidth_bps ? num(s.bandwidth_bps / 1e3) + " kbit/s" : "(unstated)");
-  row("clients (connected)", std::to_string(s.clients) + " (" + std::to_string(s.clients_connected) + ")");
+  row("clients (connected)", std::to_string(s.clients) + " (" + std::to_string(s.clients_connected) + " at the end, " +
+                                  std::to_string(s.clients_welcomed) + " ever)");
   row("duration s", num(s.duration_s));
   row("frames expected", std::to_string(s.frames_expected));
   row("frames ok (on time) %", num(s.frames_ok_pct));

@@ -12,6 +12,7 @@ namespace ocean::loadtest {
 struct LoadSummary {
   int clients = 0;
   int clients_connected = 0;     // connected at the end
+  int clients_welcomed = 0;      // got a Welcome at least once during the run
   std::uint64_t frames_expected = 0, frames_received = 0, frames_ok = 0, frames_late = 0, frames_lost = 0,
                 frames_bad = 0, stalls = 0, keyframes = 0, reconnects = 0, truth_evaluations = 0;
   // Decodes the clients ran and frames checked against the truth; with a shared DecodeMemo, a

@@ -1,4 +1,5 @@
 // ocean-loadtest: parses the flags, runs the load, prints the table / JSON and writes the series.
+// Exit status: 0 ran; 1 the run failed (no client ever connected, an output not written); 2 bad flags.
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -39,10 +40,6 @@ int main(int argc, char** argv) {
   try {
     const LoadRunResult result = run_load(options);
     int status = 0;
-    if (!result.error.empty()) {
-      std::cerr << "ocean-loadtest: " << result.error << "\n";
-      status = 1;
-    }
     if (!options.csv_path.empty() || !options.plot_path.empty()) {
       const std::string csv = options.csv_path.empty() ? options.plot_path + ".csv" : options.csv_path;
       if (std::string e = write_series_csv(csv, result.series); !e.empty()) {
@@ -60,6 +57,11 @@ int main(int argc, char** argv) {
     }
     print_table(options.json ? std::cerr : std::cout, result.summary);
     if (options.json) std::cout << to_json(result.summary) << std::endl;
+    // Last, so it is the line a reader of the output sees.
+    if (!result.error.empty()) {
+      std::cerr << "ocean-loadtest: " << result.error << "\n";
+      status = 1;
+    }
     return status;
   } catch (const std::exception& e) {
     std::cerr << "ocean-loadtest: " << e.what() << "\n";
