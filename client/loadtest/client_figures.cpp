@@ -18,11 +18,12 @@ double median(std::vector<double> values) {
 
 ConnectionFigures connection_figures(std::span<const ClientConnectionFacts> clients) {
   ConnectionFigures f;
-  std::vector<double> ttff, peaks;
+  std::vector<double> ttff, peaks, calm;
   for (const ClientConnectionFacts& c : clients) {
     if (c.ttff_s) ttff.push_back(*c.ttff_s);
     else ++f.clients_without_frame;
     if (c.peak_kbps) peaks.push_back(*c.peak_kbps);
+    if (c.calm_kbps) calm.push_back(*c.calm_kbps);
     f.kbps_peak_1s_startup = std::max(f.kbps_peak_1s_startup, c.startup_peak_kbps);
   }
   if (!ttff.empty()) {
@@ -33,6 +34,7 @@ ConnectionFigures connection_figures(std::span<const ClientConnectionFacts> clie
     f.kbps_peak_1s = *std::max_element(peaks.begin(), peaks.end());
     f.kbps_peak_1s_p50 = median(peaks);
   }
+  if (!calm.empty()) f.kbps_calm = median(calm);
   return f;
 }
 

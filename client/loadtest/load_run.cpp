@@ -18,6 +18,7 @@
 #include "latency_histogram.hpp"
 #include "process_cpu.hpp"
 #include "profile.hpp"
+#include "scenario.hpp"
 #include "sim_client.hpp"
 
 namespace ocean::loadtest {
@@ -141,6 +142,7 @@ class Driver {
       facts_.interpolation_delay_s = 3.0 * facts_.interval_ticks * facts_.tick_period_s;
       truth_.emplace(facts_.tick_rate_hz);
       truth_->set_scene(0, w.scene);
+      warn_if_server_differs(w);
     } else {
       truth_->set_scene(w.current_tick, w.scene);
     }
@@ -151,11 +153,21 @@ class Driver {
     c.scene_tick_seen = 0;
   }
 
+  void warn_if_server_differs(const protocol::Welcome& w) const {
+    const Scenario* scenario = o_.scenario.empty() ? nullptr : find_scenario(o_.scenario);
+    if (!scenario) return;
+    if (const std::string why = server_mismatch(scenario->server, facts_.tick_rate_hz, w.epoch_unix_ms, unix_now_s()); !why.empty())
+      std::fprintf(stderr, "ocean-loadtest: warning: the server does not run as scenario %s needs (%s): %s; "
+                   "start it with client/loadtest/local_server.py\n", o_.scenario.c_str(), describe(scenario->server).c_str(), why.c_str());
+  }
+
   std::uint32_t end_tick() const { return tick_at_unix(start_unix_ + o_.ramp_s + o_.duration_s - 1.0); }
 
+  // Modulo 2^32, as today's 32-bit wire tick carries it (a float beyond the range of the cast's
+  // type would be undefined). The integrator widens ticks to 64 bits.
   std::uint32_t tick_at_unix(double unix_s) const {
     const double ticks = (unix_s - facts_.epoch_s) / facts_.tick_period_s;
-    return ticks <= 0 ? 0u : static_cast<std::uint32_t>(std::floor(ticks));
+    return ticks <= 0 ? 0u : static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::floor(ticks)));
   }
 
   void on_frame(std::size_t i, const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
@@ -215,7 +227,7 @@ class Driver {
     });
   }
 
-  // Every 100 ms, each started client's received bytes, for its busiest second (PeakRate).
+  // Every 100 ms, each started client's received bytes, for its busiest second (ReceiveRate).
   void schedule_sample(int k) {
     const double due = start_steady_ + k * kSampleS;
     const double wait = std::max(0.0, due - Clock::now());
@@ -320,6 +332,7 @@ class Driver {
       if (c.first_frame_s) facts[i].ttff_s = *c.first_frame_s - c.started_s;
       if (c.traffic.has_steady_window()) facts[i].peak_kbps = c.traffic.peak_kbps();
       facts[i].startup_peak_kbps = c.traffic.startup_peak_kbps();
+      facts[i].calm_kbps = c.traffic.calm_kbps();
       const double started = o_.ramp_s * static_cast<double>(i) / static_cast<double>(clients_.size());
       client_seconds += std::max(0.0, wall - started);
       s.keyframes += c.keyframes();
@@ -361,10 +374,12 @@ class Driver {
     s.kbps_peak_1s = figures.kbps_peak_1s;
     s.kbps_peak_1s_p50 = figures.kbps_peak_1s_p50;
     s.kbps_peak_1s_startup = figures.kbps_peak_1s_startup;
+    s.kbps_calm = figures.kbps_calm;
     s.latency_p50_ms = latency_all_.percentile(50) * 1e3;
     s.latency_p99_ms = latency_all_.percentile(99) * 1e3;
     s.latency_max_ms = latency_all_.max_s() * 1e3;
     s.truth_evaluations = truth_ ? truth_->evaluations() : 0;
+    s.scenes = truth_ ? static_cast<int>(truth_->scenes()) : 0;
     s.truth_checks = truth_checks_;
     for (const auto& memo : memos_) {
       s.decodes_run += memo->counts().misses;

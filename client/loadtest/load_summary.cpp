@@ -46,6 +46,7 @@ std::string to_json(const LoadSummary& s) {
   field("kbps_peak_1s", num(s.kbps_peak_1s));
   field("kbps_peak_1s_p50", num(s.kbps_peak_1s_p50));
   field("kbps_peak_1s_startup", num(s.kbps_peak_1s_startup));
+  field("kbps_calm", num(s.kbps_calm));
   field("ttff_max_s", s.ttff_max_s ? num(*s.ttff_max_s) : "null");
   field("ttff_p50_s", s.ttff_p50_s ? num(*s.ttff_p50_s) : "null");
   field("clients_without_frame", std::to_string(s.clients_without_frame));
@@ -63,6 +64,7 @@ std::string to_json(const LoadSummary& s) {
   field("keyframes", u(s.keyframes));
   field("reconnects", u(s.reconnects));
   field("truth_evaluations", u(s.truth_evaluations));
+  field("scenes", std::to_string(s.scenes));
   field("decodes_run", u(s.decodes_run));
   field("decodes_shared", u(s.decodes_shared));
   field("truth_checks", u(s.truth_checks));
@@ -111,6 +113,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   row("max error m (bound)", num(s.max_err_m) + " (" + num(s.error_bound_m) + ")");
   row("stalls", std::to_string(s.stalls));
   row("keyframes", std::to_string(s.keyframes));
+  row("scenes checked", std::to_string(s.scenes));
   row("reconnects", std::to_string(s.reconnects));
   row("keyframe requests", std::to_string(s.keyframe_requests));
   row("chunks rejected (codec)", std::to_string(s.chunks_rejected_by_codec));
@@ -126,6 +129,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   row("kbit/s per client", num(s.kbps_mean) + " (with IP/UDP headers " + num(s.kbps_mean_ip) + ")");
   row("peak 1 s kbit/s max/p50", num(s.kbps_peak_1s) + " / " + num(s.kbps_peak_1s_p50) + " (from the first frame on)");
   row("peak 1 s kbit/s startup", num(s.kbps_peak_1s_startup) + " (windows before the first frame)");
+  row("calm kbit/s", num(s.kbps_calm) + " (median 100 ms rate after the first frame)");
   auto seconds = [](const std::optional<double>& v) { return v ? num(*v) : std::string("none"); };
   row("first frame s max/p50", seconds(s.ttff_max_s) + " / " + seconds(s.ttff_p50_s));
   row("clients without frame", std::to_string(s.clients_without_frame));

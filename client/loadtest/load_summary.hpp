@@ -13,6 +13,7 @@ struct LoadSummary {
   int clients = 0;
   int clients_connected = 0;     // connected at the end
   int clients_welcomed = 0;      // got a Welcome at least once during the run
+  int scenes = 0;                // distinct scenes the frames were checked against (1 + weather changes seen)
   std::uint64_t frames_expected = 0, frames_received = 0, frames_ok = 0, frames_late = 0, frames_lost = 0,
                 frames_bad = 0, stalls = 0, keyframes = 0, reconnects = 0, truth_evaluations = 0;
   // Decodes the clients ran and frames checked against the truth; with a shared DecodeMemo, a
@@ -30,6 +31,8 @@ struct LoadSummary {
   // Busiest 1 s a client received (bytes as kbps_mean): the largest and the median client's, from
   // each client's first frame on, and the largest of the windows before it (the connection's start).
   double kbps_peak_1s = 0.0, kbps_peak_1s_p50 = 0.0, kbps_peak_1s_startup = 0.0;
+  // The median client's median 100 ms rate from its first frame on: the stream between bursts.
+  double kbps_calm = 0.0;
   // Time to first frame: a client's first connection attempt to its first complete frame within
   // the error bound; over the clients that got one (none: no client did).
   std::optional<double> ttff_max_s, ttff_p50_s;

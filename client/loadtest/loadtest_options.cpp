@@ -45,7 +45,7 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
   app.add_option("--clients", o.clients, "number of simulated clients, 1..100000");
   app.add_option("--ramp", o.ramp_s, "seconds over which the clients start, >= 0");
   app.add_option("--duration", o.duration_s, "seconds measured after the ramp, > 0");
-  app.add_option("--scenario", o.scenario, "a named set of --profile/--transport/--link (see --list-scenarios)");
+  app.add_option("--scenario", o.scenario, "a named set of --profile/--transport/--link/--bandwidth (see --list-scenarios; some need a server started for them)");
   app.add_option("--profile", o.profile, "stream profile to ask for: " + profile_names());
   app.add_option("--transport", o.transport, "udp or tcp");
   app.add_option("--link", o.link_text, "link impairment, e.g. rate=256kbit,delay=80ms,jitter=20ms,loss=5%,reorder=1%,dup=0.5% (\"\" or none = none)");
@@ -58,7 +58,8 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
   app.add_flag("--json", o.json, "print one JSON summary object as the last stdout line");
   bool quiet = false;
   app.add_flag("--quiet", quiet, "no progress line on stderr");
-  app.add_flag("--list-scenarios", o.list_scenarios, "print the scenarios and exit");
+  app.add_flag("--list-scenarios", o.list_scenarios,
+               "print the scenarios (with --json: as one JSON array, server needs included) and exit");
   bool own_decode = false;
   app.add_flag("--no-shared-decode", own_decode,
                "every client decodes every frame itself (default: clients that got identical bytes on an identical "

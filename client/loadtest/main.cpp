@@ -7,19 +7,7 @@
 
 #include "load_run.hpp"
 #include "loadtest_options.hpp"
-#include "scenario.hpp"
-
-namespace {
-
-void list_scenarios() {
-  std::printf("%-14s %-8s %-9s %-60s %s\n", "scenario", "profile", "transport", "link", "stands for");
-  for (const ocean::loadtest::Scenario& s : ocean::loadtest::all_scenarios())
-    std::printf("%-14.*s %-8.*s %-9.*s %-60.*s %.*s\n", int(s.name.size()), s.name.data(), int(s.profile.size()),
-                s.profile.data(), int(s.transport.size()), s.transport.data(), int(s.link.empty() ? 4 : s.link.size()),
-                s.link.empty() ? "none" : s.link.data(), int(s.why.size()), s.why.data());
-}
-
-}  // namespace
+#include "scenario_listing.hpp"
 
 int main(int argc, char** argv) {
   using namespace ocean::loadtest;
@@ -34,7 +22,8 @@ int main(int argc, char** argv) {
   }
   const LoadtestOptions& options = parsed.options;
   if (options.list_scenarios) {
-    list_scenarios();
+    if (options.json) std::cout << scenarios_json() << std::endl;
+    else print_scenarios(std::cout);
     return 0;
   }
   try {

@@ -9,7 +9,7 @@
 
 #include "client_connection.hpp"
 #include "client_tally.hpp"
-#include "peak_rate.hpp"
+#include "receive_rate.hpp"
 
 namespace ocean::loadtest {
 
@@ -41,7 +41,7 @@ struct SimClient {
   bool session_ended = false;  // the connection keeps its last session after it ended: counted in closed_*
   double started_s = 0.0;                // steady time of its first connection attempt
   std::optional<double> first_frame_s;   // steady arrival of its first complete frame within the bound
-  PeakRate traffic;
+  ReceiveRate traffic;
 
   void end_session(const client::ClientSession& s) {
     session_ended = true;

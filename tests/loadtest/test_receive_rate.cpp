@@ -1,14 +1,14 @@
-// The busiest second of a client's downlink (PeakRate) and the run's first-frame and peak figures.
+// A client's downlink rate (ReceiveRate: busiest second, calm rate) and the run's first-frame and rate figures.
 #include <catch2/catch.hpp>
 
 #include "client_figures.hpp"
-#include "peak_rate.hpp"
+#include "receive_rate.hpp"
 
 using namespace ocean::loadtest;
 
 namespace {
 // Samples every 100 ms from t0 for `seconds`, `bytes_per_s` arriving evenly; returns the bytes.
-std::uint64_t feed(PeakRate& p, double t0, double seconds, double bytes_per_s, std::uint64_t bytes) {
+std::uint64_t feed(ReceiveRate& p, double t0, double seconds, double bytes_per_s, std::uint64_t bytes) {
   for (int k = 1; k <= static_cast<int>(seconds * 10 + 0.5); ++k) {
     bytes += static_cast<std::uint64_t>(bytes_per_s * 0.1);
     p.sample(t0 + k * 0.1, bytes);
@@ -18,7 +18,7 @@ std::uint64_t feed(PeakRate& p, double t0, double seconds, double bytes_per_s, s
 }  // namespace
 
 TEST_CASE("peak rate: a steady stream peaks at its own rate") {
-  PeakRate p;
+  ReceiveRate p;
   p.sample(0.0, 0);
   p.set_first_frame(0.0);
   feed(p, 0.0, 5.0, 4000, 0);  // 32 kbit/s
@@ -28,7 +28,7 @@ TEST_CASE("peak rate: a steady stream peaks at its own rate") {
 }
 
 TEST_CASE("peak rate: a burst counts whole in the one second that holds it") {
-  PeakRate p;
+  ReceiveRate p;
   p.sample(0.0, 0);
   p.set_first_frame(0.0);
   std::uint64_t b = feed(p, 0.0, 2.0, 4000, 0);
@@ -39,7 +39,7 @@ TEST_CASE("peak rate: a burst counts whole in the one second that holds it") {
 }
 
 TEST_CASE("peak rate: the startup keyframe shows as startup, not as the steady peak") {
-  PeakRate p;
+  ReceiveRate p;
   p.sample(0.0, 0);
   p.sample(0.4, 200);     // handshake
   p.sample(0.8, 20200);   // keyframe
@@ -50,7 +50,7 @@ TEST_CASE("peak rate: the startup keyframe shows as startup, not as the steady p
 }
 
 TEST_CASE("peak rate: a client that never got a frame has only startup windows") {
-  PeakRate p;
+  ReceiveRate p;
   p.sample(0.0, 0);
   feed(p, 0.0, 3.0, 1000, 0);
   CHECK_FALSE(p.has_steady_window());
@@ -58,7 +58,7 @@ TEST_CASE("peak rate: a client that never got a frame has only startup windows")
 }
 
 TEST_CASE("peak rate: a late sample does not stretch a window beyond a second") {
-  PeakRate p;
+  ReceiveRate p;
   p.sample(0.0, 0);
   p.set_first_frame(0.0);
   p.sample(0.1, 100);
@@ -75,6 +75,8 @@ TEST_CASE("connection figures: first frame and peaks over the clients that had t
   c[1].peak_kbps = 60;
   c[2].ttff_s = 0.9;
   c[2].peak_kbps = 50;
+  c[0].calm_kbps = 30;
+  c[1].calm_kbps = 20;
   c[3].startup_peak_kbps = 120;  // never got a frame
   const ConnectionFigures f = connection_figures(c);
   CHECK(f.clients_without_frame == 1);
@@ -83,9 +85,26 @@ TEST_CASE("connection figures: first frame and peaks over the clients that had t
   CHECK(f.kbps_peak_1s == 60);
   CHECK(f.kbps_peak_1s_p50 == 50);
   CHECK(f.kbps_peak_1s_startup == 120);
+  CHECK(f.kbps_calm == 20);
 
   const ConnectionFigures none = connection_figures(std::vector<ClientConnectionFacts>(3));
   CHECK(none.clients_without_frame == 3);
   CHECK_FALSE(none.ttff_max_s);
   CHECK_FALSE(none.ttff_p50_s);
+}
+
+TEST_CASE("receive rate: calm is the stream between bursts, untouched by a keyframe every 2.5 s") {
+  ReceiveRate p;
+  p.sample(0.0, 0);
+  p.sample(0.5, 15000);  // startup keyframe: not steady
+  p.set_first_frame(0.5);
+  CHECK_FALSE(p.calm_kbps());
+  std::uint64_t b = 15000;
+  for (int k = 1; k <= 100; ++k) {
+    b += 500 + (k % 25 == 0 ? 15000 : 0);  // 40 kbit/s, and a re-key every 2.5 s
+    p.sample(0.5 + k * 0.1, b);
+  }
+  REQUIRE(p.calm_kbps());
+  CHECK(*p.calm_kbps() == Approx(40.0));
+  CHECK(p.peak_kbps() == Approx(40.0 + 120.0).epsilon(0.05));
 }
