@@ -20,6 +20,7 @@
 #include "profile.hpp"
 #include "scenario.hpp"
 #include "sim_client.hpp"
+#include "stream_facts.hpp"
 
 namespace ocean::loadtest {
 namespace {
@@ -27,17 +28,6 @@ namespace {
 double unix_now_s() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
-
-// The stream every client of this run gets, fixed by the first Welcome.
-struct StreamFacts {
-  double tick_period_s = 0.0;
-  int tick_rate_hz = 0;
-  std::uint32_t interval_ticks = 1;
-  int grid = 0;
-  ErrorBounds bounds{0.0, 0.0};
-  double epoch_s = 0.0;  // unix seconds of tick 0
-  double interpolation_delay_s = 0.0;
-};
 
 class Driver {
  public:
@@ -130,16 +120,7 @@ class Driver {
 
   void on_welcome(std::size_t i, const protocol::Welcome& w) {
     if (!truth_) {
-      facts_.tick_period_s = w.tick_period_s;
-      facts_.tick_rate_hz = static_cast<int>(std::lround(1.0 / w.tick_period_s));
-      facts_.interval_ticks = w.stream.rate_hz ? std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(
-                                                                               facts_.tick_rate_hz / double(w.stream.rate_hz))))
-                                               : 1;
-      facts_.grid = w.stream.grid;
-      facts_.bounds = ErrorBounds{w.stream.height_step_m / 2.0, w.stream.normals ? w.stream.slope_step / 2.0 : 0.0};
-      facts_.epoch_s = static_cast<double>(w.epoch_unix_ms) / 1000.0;
-      // FrameTimeline's default: three send intervals behind (Fiedler's snapshot interpolation).
-      facts_.interpolation_delay_s = 3.0 * facts_.interval_ticks * facts_.tick_period_s;
+      facts_ = StreamFacts::from(w);
       truth_.emplace(facts_.tick_rate_hz);
       truth_->set_scene(0, w.scene);
       warn_if_server_differs(w);
@@ -161,14 +142,7 @@ class Driver {
                    "start it with client/loadtest/local_server.py\n", o_.scenario.c_str(), describe(scenario->server).c_str(), why.c_str());
   }
 
-  std::uint32_t end_tick() const { return tick_at_unix(start_unix_ + o_.ramp_s + o_.duration_s - 1.0); }
-
-  // Modulo 2^32, as today's 32-bit wire tick carries it (a float beyond the range of the cast's
-  // type would be undefined). The integrator widens ticks to 64 bits.
-  std::uint32_t tick_at_unix(double unix_s) const {
-    const double ticks = (unix_s - facts_.epoch_s) / facts_.tick_period_s;
-    return ticks <= 0 ? 0u : static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::floor(ticks)));
-  }
+  std::uint32_t end_tick() const { return facts_.tick_at_unix(start_unix_ + o_.ramp_s + o_.duration_s - 1.0); }
 
   void on_frame(std::size_t i, const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
     SimClient& c = clients_[i];
@@ -328,29 +302,12 @@ class Driver {
     std::vector<ClientConnectionFacts> facts(clients_.size());
     for (std::size_t i = 0; i < clients_.size(); ++i) {
       const SimClient& c = clients_[i];
-      if (c.welcome_tick) ++s.clients_welcomed;
-      if (c.first_frame_s) facts[i].ttff_s = *c.first_frame_s - c.started_s;
-      if (c.traffic.has_steady_window()) facts[i].peak_kbps = c.traffic.peak_kbps();
-      facts[i].startup_peak_kbps = c.traffic.startup_peak_kbps();
-      facts[i].calm_kbps = c.traffic.calm_kbps();
+      facts[i] = c.connection_facts();
+      c.add_counters_to(s);
       const double started = o_.ramp_s * static_cast<double>(i) / static_cast<double>(clients_.size());
       client_seconds += std::max(0.0, wall - started);
-      s.keyframes += c.keyframes();
-      SessionCounts counts = c.closed;
-      if (const auto* session = c.live_session()) counts.add(session->stats());
-      s.chunks_rejected_by_codec += counts.codec_rejected;
-      s.messages_rejected += counts.messages_rejected;
-      s.keyframe_requests += counts.keyframe_requests;
-      s.transport_fallbacks += counts.transport_fallbacks;
-      s.frames_recovered += counts.frames_recovered;
-      for (std::size_t r = 0; r < counts.codec_by_reason.size(); ++r)
-        if (counts.codec_by_reason[r]) s.codec_rejections[std::string(codec::to_string(static_cast<codec::ChunkError>(r)))] += counts.codec_by_reason[r];
-      if (c.connection) {
-        const auto& k = c.connection->counters();
-        if (k.connects > 1) s.reconnects += k.connects - 1;
-      }
       if (!truth_) continue;
-      const std::uint32_t start_tick = c.welcome_tick.value_or(tick_at_unix(start_unix_ + started));
+      const std::uint32_t start_tick = c.welcome_tick.value_or(facts_.tick_at_unix(start_unix_ + started));
       ClientTally empty(facts_.tick_period_s, facts_.interval_ticks);
       const ClientTally& t = c.tally ? *c.tally : empty;
       const std::uint64_t expected = t.expected(start_tick, last_tick);

@@ -8,7 +8,9 @@
 #include <optional>
 
 #include "client_connection.hpp"
+#include "client_figures.hpp"
 #include "client_tally.hpp"
+#include "load_summary.hpp"
 #include "receive_rate.hpp"
 
 namespace ocean::loadtest {
@@ -69,6 +71,9 @@ struct SimClient {
     if (const auto* s = live_session()) k += s->stats().keyframes_complete;
     return k;
   }
+  // Adds its keyframes, reconnects and every session's counters to the summary.
+  void add_counters_to(LoadSummary& s) const;
+  ClientConnectionFacts connection_facts() const;
 };
 
 }  // namespace ocean::loadtest
