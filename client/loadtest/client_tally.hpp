@@ -25,7 +25,7 @@ class ClientTally {
 
   client::ArrivalClock& clock() { return clock_; }
   double tick_period_s() const { return period_; }
-  std::uint32_t interval() const { return interval_; }
+  Tick interval() const { return interval_; }
 
   // Records a frame's verdict; false (not counted) for a tick already recorded, before the
   // first one, or more than kWindowTicks older than the newest. Frames may come out of order (a
@@ -55,7 +55,7 @@ class ClientTally {
 
   // The stream's frame ticks in [first frame (or start_tick when none came), end_tick].
   std::uint64_t expected(Tick start_tick, Tick end_tick) const {
-    const std::uint32_t from = first_tick_.value_or(start_tick);
+    const Tick from = first_tick_.value_or(start_tick);
     if (end_tick < from) return 0;
     const std::uint64_t first = (static_cast<std::uint64_t>(from) + interval_ - 1) / interval_;
     const std::uint64_t last = end_tick / interval_;
@@ -73,9 +73,9 @@ class ClientTally {
  private:
   client::ArrivalClock clock_;
   double period_;
-  std::uint32_t interval_;
+  Tick interval_;
   std::optional<Tick> first_tick_, last_tick_, last_on_time_;
-  std::set<std::uint32_t> seen_;  // recorded ticks within kWindowTicks of the newest
+  std::set<Tick> seen_;  // recorded ticks within kWindowTicks of the newest
   std::uint64_t received_ = 0, ok_ = 0, late_ = 0, bad_ = 0, stalls_ = 0;
   double max_error_m_ = 0.0;
 };

@@ -6,29 +6,46 @@ fails, then bisected to --resolution. Prints one JSON object per try and a summa
   client/loadtest/find_capacity.py --build build --profile mobile --start 250 --max 8000
 
 Each try starts the clients at --join-rate per second, then measures --duration seconds. Passing
-a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every frame)."""
+a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every frame).
+
+--scenario NAME runs an ocean-loadtest scenario instead of --profile/--transport/--link, with the
+server started as the scenario needs (tick rate, epoch, weather schedule: local_server.py)."""
 import argparse
 import json
 import os
 import subprocess
 import sys
+import tempfile
 
 import local_server
 
 
 def run_once(args, clients):
+    with tempfile.TemporaryDirectory() as workdir:
+        return run_in(args, clients, workdir)
+
+
+def run_in(args, clients, workdir):
+    loadtest = os.path.join(args.build, "client/loadtest/ocean-loadtest")
+    ramp = max(0.5, clients / args.join_rate)
     port = local_server.free_port()
+    if args.scenario:
+        entry = local_server.scenario(loadtest, args.scenario)
+        server_args = local_server.scenario_server_args(entry, workdir, first_change_s=ramp + 2.0,
+                                                        horizon_s=ramp + args.duration + 60)
+        if "--profiles" not in server_args:
+            server_args += ["--profiles", entry["profile"]]
+        loadtest_args = ["--scenario", args.scenario]
+    else:
+        server_args = ["--profiles", args.profile]
+        loadtest_args = ["--profile", args.profile, "--transport", args.transport] + (["--link", args.link] if args.link else [])
     server = local_server.start(
         os.path.join(args.build, "server/ocean-server"),
         ["--listen", f"127.0.0.1:{port}", "--metrics-listen", "off", "--max-clients", str(clients + 16),
-         "--profiles", args.profile, "--log-level", "warn"] + args.server_arg, port)
+         "--log-level", "warn"] + server_args + args.server_arg, port)
     try:
-        ramp = max(0.5, clients / args.join_rate)
-        cmd = [os.path.join(args.build, "client/loadtest/ocean-loadtest"), "--server", f"127.0.0.1:{port}",
-               "--profile", args.profile, "--transport", args.transport, "--clients", str(clients), "--ramp",
-               f"{ramp:g}", "--duration", str(args.duration), "--json", "--quiet", "--server-pid", str(server.pid)]
-        if args.link:
-            cmd += ["--link", args.link]
+        cmd = [loadtest, "--server", f"127.0.0.1:{port}", "--clients", str(clients), "--ramp", f"{ramp:g}",
+               "--duration", str(args.duration), "--json", "--quiet", "--server-pid", str(server.pid)] + loadtest_args
         run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                              timeout=ramp + args.duration + 120)
         if run.returncode != 0:
@@ -46,6 +63,7 @@ def main():
     ap.add_argument("--profile", default="mobile")
     ap.add_argument("--transport", default="udp")
     ap.add_argument("--link", default="", help="ocean-loadtest --link, e.g. rate=256kbit,delay=80ms,loss=5%%")
+    ap.add_argument("--scenario", default="", help="an ocean-loadtest scenario (replaces --profile/--transport/--link)")
     ap.add_argument("--start", type=int, default=250)
     ap.add_argument("--max", type=int, default=8000)
     ap.add_argument("--target", type=float, default=99.0, help="frames_ok_pct a try must reach")
@@ -86,7 +104,7 @@ def main():
                 hi = mid
     best = next((t for t in tries if t["clients"] == lo), None)
     print(json.dumps({"largest_passing_clients": lo, "first_failing_clients": hi, "target_pct": args.target,
-                      "profile": args.profile, "transport": args.transport, "link": args.link,
+                      "scenario": args.scenario, "profile": args.profile, "transport": args.transport, "link": args.link,
                       "duration_s": args.duration, "server_cpu_pct_at_largest": best and best["server_cpu_pct"],
                       "tries": len(tries)}))
     return 0 if lo > 0 else 1

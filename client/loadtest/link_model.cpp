@@ -1,12 +1,15 @@
-// The rate limiter is a serialiser: a packet leaves when the bytes queued before it have,
-// which is a token bucket with a one-packet burst; its queue is bounded in bytes (tail drop).
+// The rate limiter is a serialiser (Bottleneck): a packet leaves when the bytes queued before it
+// have, which is a token bucket with a one-packet burst; its queue is bounded in bytes (tail drop).
 #include "link_model.hpp"
 
 #include <algorithm>
 
 namespace ocean::loadtest {
 
-LinkModel::LinkModel(const LinkSpec& spec, std::uint64_t seed) : spec_(spec), rng_(seed ^ 0x9E3779B97F4A7C15ull) {}
+LinkModel::LinkModel(const LinkSpec& spec, std::uint64_t seed, std::shared_ptr<Bottleneck> shared)
+    : spec_(spec), rng_(seed ^ 0x9E3779B97F4A7C15ull), bottleneck_(std::move(shared)) {
+  if (!bottleneck_ && spec_.rate_bps > 0) bottleneck_ = std::make_shared<Bottleneck>(spec_.rate_bps);
+}
 
 double LinkModel::uniform() {
   // splitmix64: tiny, good enough for impairment decisions, the same on every platform.
@@ -28,15 +31,13 @@ void LinkModel::send(std::vector<std::uint8_t> bytes, double now) {
     return;
   }
   double left_link = now;
-  if (spec_.rate_bps > 0) {
-    const double backlog_s = std::max(0.0, link_free_at_ - now);
-    const double backlog_bytes = backlog_s * spec_.rate_bps / 8.0;
-    if (backlog_bytes + static_cast<double>(bytes.size()) > spec_.queue_bytes) {
+  if (bottleneck_) {
+    const auto left = bottleneck_->admit(now, bytes.size(), static_cast<double>(spec_.queue_bytes));
+    if (!left) {
       ++stats_.queue_drops;
       return;
     }
-    left_link = std::max(now, link_free_at_) + static_cast<double>(bytes.size()) * 8.0 / spec_.rate_bps;
-    link_free_at_ = left_link;
+    left_link = *left;
   }
   const double base = spec_.delay_ms * 1e-3;
   const double jitter = spec_.jitter_ms * 1e-3 * (2.0 * uniform() - 1.0);

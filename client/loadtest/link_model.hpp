@@ -3,9 +3,11 @@
 // randomness is seeded, so a run with one seed impairs the same packets the same way.
 #pragma once
 
+#include "bottleneck.hpp"
 #include "link_spec.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <queue>
 #include <vector>
 
@@ -15,7 +17,7 @@ struct LinkStats {
   std::uint64_t offered = 0;
   std::uint64_t delivered = 0;
   std::uint64_t lost = 0;          // random loss
-  std::uint64_t queue_drops = 0;   // rate limiter's queue was full
+  std::uint64_t queue_drops = 0;   // rate limiter's queue was full (shared backlog included)
   std::uint64_t duplicated = 0;
   std::uint64_t reordered = 0;
   std::uint64_t bytes_delivered = 0;
@@ -23,7 +25,10 @@ struct LinkStats {
 
 class LinkModel {
  public:
-  LinkModel(const LinkSpec& spec, std::uint64_t seed);
+  // shared: the rate limiter this direction queues behind, shared with other models (a client's
+  // TCP and UDP in one direction); null = one of its own at spec.rate_bps. Either way the
+  // queue limit is this model's spec.queue_bytes, checked against the shared backlog.
+  LinkModel(const LinkSpec& spec, std::uint64_t seed, std::shared_ptr<Bottleneck> shared = nullptr);
 
   // Offers one packet to the link at time now (seconds). It may be lost, dropped by the full
   // queue, delayed, reordered or duplicated.
@@ -61,7 +66,7 @@ class LinkModel {
   LinkSpec spec_;
   std::uint64_t rng_;
   std::uint64_t order_ = 0;
-  double link_free_at_ = 0.0;    // when the rate limiter finishes what is queued
+  std::shared_ptr<Bottleneck> bottleneck_;  // null = no rate limit
   double last_in_order_ = 0.0;   // FIFO: an in-order packet never overtakes an earlier one
   LinkStats stats_;
   std::priority_queue<InFlight, std::vector<InFlight>, std::greater<>> pending_;

@@ -50,7 +50,18 @@ bool percentage(std::string_view v, double& out) {
   return out >= 0 && out <= 1;
 }
 
+bool rate(std::string_view v, double& out) {
+  return scaled(v, {{"bit", 1}, {"kbit", 1e3}, {"mbit", 1e6}, {"gbit", 1e9}, {"bps", 8}, {"kbps", 8e3}, {"mbps", 8e6}}, out);
+}
+
 }  // namespace
+
+std::optional<double> parse_rate_bps(std::string_view text) {
+  text = trim(text);
+  double bps = 0;
+  if (rate(text, bps) || scaled(text, {{"", 1}}, bps)) return bps;
+  return std::nullopt;
+}
 
 LinkSpecResult parse_link_spec(std::string_view text) {
   LinkSpecResult result;
@@ -71,7 +82,7 @@ LinkSpecResult parse_link_spec(std::string_view text) {
     bool ok = false;
     const char* allowed = "";
     if (key == "rate") {
-      ok = scaled(value, {{"bit", 1}, {"kbit", 1e3}, {"mbit", 1e6}, {"gbit", 1e9}, {"bps", 8}, {"kbps", 8e3}, {"mbps", 8e6}}, s.rate_bps);
+      ok = rate(value, s.rate_bps);
       allowed = "a rate such as 256kbit, 2mbit or 32kbps (bytes), >= 0";
     } else if (key == "delay") {
       ok = scaled(value, {{"ms", 1}, {"s", 1e3}, {"us", 1e-3}}, s.delay_ms);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -28,6 +29,10 @@ struct LinkSpecResult {
 };
 
 LinkSpecResult parse_link_spec(std::string_view text);
+
+// A rate such as "32kbit", "2mbit", "4kbps" (bytes) or a bare number of bits per second; nullopt
+// when it is none of these or negative.
+std::optional<double> parse_rate_bps(std::string_view text);
 std::string to_string(const LinkSpec& spec);
 
 }  // namespace ocean::loadtest

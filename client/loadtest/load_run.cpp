@@ -2,27 +2,25 @@
 
 #include <asio/io_context.hpp>
 #include <asio/steady_timer.hpp>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <memory>
 #include <optional>
-#include <sstream>
-#include <sys/resource.h>
-#include <unistd.h>
 
-#include "client_connection.hpp"
-#include "client_tally.hpp"
+#include "client_figures.hpp"
+#include "client_links.hpp"
+#include "frame_recorder.hpp"
 #include "frame_verdict.hpp"
 #include "ground_truth.hpp"
 #include "latency_histogram.hpp"
-#include "link_model.hpp"
-#include "npy_writer.hpp"
+#include "process_cpu.hpp"
 #include "profile.hpp"
+#include "scenario.hpp"
+#include "sim_client.hpp"
+#include "stream_facts.hpp"
 
 namespace ocean::loadtest {
 namespace {
@@ -31,110 +29,20 @@ double unix_now_s() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
-double own_cpu_s() {
-  rusage r{};
-  getrusage(RUSAGE_SELF, &r);
-  return r.ru_utime.tv_sec + r.ru_utime.tv_usec * 1e-6 + r.ru_stime.tv_sec + r.ru_stime.tv_usec * 1e-6;
-}
-
-// utime + stime of a process from /proc/PID/stat; nullopt when it cannot be read.
-std::optional<double> process_cpu_s(int pid) {
-  if (pid <= 0) return std::nullopt;
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
-  std::string text;
-  if (!std::getline(in, text)) return std::nullopt;
-  const auto paren = text.rfind(')');  // the command name may hold spaces
-  if (paren == std::string::npos) return std::nullopt;
-  std::istringstream fields(text.substr(paren + 2));
-  std::string skip;
-  for (int i = 3; i < 14; ++i) fields >> skip;  // fields 3..13
-  unsigned long long utime = 0, stime = 0;
-  if (!(fields >> utime >> stime)) return std::nullopt;
-  return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
-}
-
-// TCP hides loss as retransmission delay, and a lost message would break the session: TCP
-// directions get the rate and delay only, and a queue that never drops.
-LinkSpec tcp_link(const LinkSpec& spec) {
-  LinkSpec t;
-  t.rate_bps = spec.rate_bps;
-  t.delay_ms = spec.delay_ms;
-  t.queue_bytes = std::numeric_limits<std::uint32_t>::max();
-  return t;
-}
-
-client::ConnectionLinks make_links(const LinkSpec& spec, std::uint64_t seed) {
-  client::ConnectionLinks links;
-  if (!spec.impaired()) return links;
-  using Adapter = client::PacketLinkAdapter<LinkModel>;
-  links.udp_down = std::make_unique<Adapter>(spec, seed * 4 + 0);
-  links.udp_up = std::make_unique<Adapter>(spec, seed * 4 + 1);
-  links.tcp_down = std::make_unique<Adapter>(tcp_link(spec), seed * 4 + 2);
-  links.tcp_up = std::make_unique<Adapter>(tcp_link(spec), seed * 4 + 3);
-  return links;
-}
-
-// What a client's sessions reported that explains lost frames.
-struct SessionCounts {
-  std::uint64_t codec_rejected = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0,
-                frames_recovered = 0;
-  std::array<std::uint64_t, client::kChunkErrorCount> codec_by_reason{};
-  void add(const client::ClientStats& s) {
-    for (std::size_t r = 0; r < codec_by_reason.size(); ++r) codec_by_reason[r] += s.chunks_rejected_by_codec[r];
-    codec_rejected += s.codec_rejected_total();
-    messages_rejected += s.rejected_total();
-    keyframe_requests += s.keyframe_requests_sent;
-    transport_fallbacks += s.transport_fallbacks;
-    frames_recovered += s.frames_recovered;
-  }
-};
-
-// The stream every client of this run gets, fixed by the first Welcome.
-struct StreamFacts {
-  double tick_period_s = 0.0;
-  int tick_rate_hz = 0;
-  Tick interval_ticks = 1;
-  int grid = 0;
-  ErrorBounds bounds{0.0, 0.0};
-  double epoch_s = 0.0;  // unix seconds of tick 0
-  double interpolation_delay_s = 0.0;
-};
-
-struct SimClient {
-  std::shared_ptr<client::ClientConnection> connection;
-  std::optional<ClientTally> tally;
-  std::optional<Tick> welcome_tick;
-  std::uint64_t closed_bytes = 0, closed_keyframes = 0;
-  SessionCounts closed;
-  bool session_ended = false;  // the connection keeps its last session after it ended: counted in closed_*
-  const client::ClientSession* live_session() const {
-    return connection && !session_ended ? connection->session() : nullptr;
-  }
-  std::uint64_t bytes() const {
-    std::uint64_t b = closed_bytes;
-    if (const auto* s = live_session()) b += s->stats().tcp.bytes_in + s->stats().udp.bytes_in;
-    return b;
-  }
-  std::uint64_t keyframes() const {
-    std::uint64_t k = closed_keyframes;
-    if (const auto* s = live_session()) k += s->stats().keyframes_complete;
-    return k;
-  }
-};
-
 class Driver {
  public:
-  explicit Driver(const LoadtestOptions& o) : o_(o), clients_(static_cast<std::size_t>(o.clients)), tick_timer_(io_) {}
+  explicit Driver(const LoadtestOptions& o) : o_(o), clients_(static_cast<std::size_t>(o.clients)), tick_timer_(io_), sample_timer_(io_) {}
 
   LoadRunResult run() {
     LoadRunResult result;
-    if (!o_.record_path.empty()) record_path_ = o_.record_path;
+    if (!o_.record_path.empty()) recorder_.emplace(o_.record_path);
     start_steady_ = client::ClientConnection::now_s();
     start_unix_ = unix_now_s();
     cpu_start_ = own_cpu_s();
     server_cpu_start_ = process_cpu_s(o_.server_pid);
     end_steady_ = start_steady_ + o_.ramp_s + o_.duration_s;
     schedule_second(1);
+    schedule_sample(1);
     io_.run_for(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
         std::chrono::duration<double>(o_.ramp_s + o_.duration_s + 2.0)));
     io_.restart();
@@ -144,8 +52,21 @@ class Driver {
     io_.run_for(std::chrono::milliseconds(200));
     result.summary = summarize();
     result.series = std::move(series_);
-    if (recorder_) recorder_->close();
+    if (recorder_) {
+      try {
+        recorder_->close();
+      } catch (const std::exception& e) {
+        if (record_error_.empty()) record_error_ = std::string("--record: ") + e.what();
+      }
+    }
     result.error = record_error_;
+    if (result.summary.clients_welcomed == 0) {
+      // The figures of a run no client took part in are zeros, not a measurement.
+      std::string why = clients_.empty() || !clients_[0].connection ? std::string("never started")
+                                                                    : clients_[0].connection->counters().last_close_reason;
+      result.error = "no client ever connected to " + o_.host + ":" + o_.port + " (client 0: " +
+                     (why.empty() ? "no answer" : why) + ")" + (result.error.empty() ? "" : "; " + result.error);
+    }
     return result;
   }
 
@@ -161,23 +82,22 @@ class Driver {
     config.session.profile_id = find_profile(o_.profile)->id;
     config.session.transport = o_.transport == "tcp" ? wire::Transport::tcp : wire::Transport::udp;
     config.session.client_name = "ocean-loadtest-" + std::to_string(i);
+    config.session.bandwidth_bps = o_.bandwidth_bps;
     if (o_.shared_decode) config.session.decode_memo = [this](const codec::StreamConfig& c) { return memo_for(c); };
     auto connection = client::ClientConnection::create(
         io_, config,
         [this, i](const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) { on_frame(i, frame, tick, arrival_s); },
-        make_links(o_.link, o_.seed + i));
+        make_client_links(o_.link, o_.seed + i));
     connection->set_on_welcome([this, i](const protocol::Welcome& w) { on_welcome(i, w); });
     // Scenes arrive ahead of their tick; the truth switches at the same tick as the codec.
     connection->set_on_scene_update([this](const protocol::SceneUpdate& u) {
       if (truth_) truth_->set_scene(u.effective_tick, u.scene);
     });
-    connection->set_on_session_end([this, i](const client::ClientSession& s, const std::string&) {
-      clients_[i].session_ended = true;
-      clients_[i].closed_bytes += s.stats().tcp.bytes_in + s.stats().udp.bytes_in;
-      clients_[i].closed_keyframes += s.stats().keyframes_complete;
-      clients_[i].closed.add(s.stats());
-    });
-    clients_[i].connection = connection;
+    connection->set_on_session_end([this, i](const client::ClientSession& s, const std::string&) { clients_[i].end_session(s); });
+    SimClient& c = clients_[i];
+    c.connection = connection;
+    c.started_s = Clock::now();
+    c.traffic.sample(c.started_s, 0);
     connection->start();
   }
 
@@ -204,18 +124,10 @@ class Driver {
 
   void on_welcome(std::size_t i, const protocol::Welcome& w) {
     if (!truth_) {
-      facts_.tick_period_s = w.tick_period_s;
-      facts_.tick_rate_hz = static_cast<int>(std::lround(1.0 / w.tick_period_s));
-      facts_.interval_ticks = w.stream.rate_hz ? std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(
-                                                                               facts_.tick_rate_hz / double(w.stream.rate_hz))))
-                                               : 1;
-      facts_.grid = w.stream.grid;
-      facts_.bounds = ErrorBounds{w.stream.height_step_m / 2.0, w.stream.normals ? w.stream.slope_step / 2.0 : 0.0};
-      facts_.epoch_s = static_cast<double>(w.epoch_unix_ms) / 1000.0;
-      // FrameTimeline's default: three send intervals behind (Fiedler's snapshot interpolation).
-      facts_.interpolation_delay_s = 3.0 * facts_.interval_ticks * facts_.tick_period_s;
+      facts_ = StreamFacts::from(w);
       truth_.emplace(facts_.tick_rate_hz);
       truth_->set_scene(0, w.scene);
+      warn_if_server_differs(w);
     } else {
       truth_->set_scene(w.current_tick, w.scene);
     }
@@ -225,24 +137,35 @@ class Driver {
     if (!c.tally) c.tally.emplace(facts_.tick_period_s, facts_.interval_ticks);
   }
 
-  Tick end_tick() const { return tick_at_unix(start_unix_ + o_.ramp_s + o_.duration_s - 1.0); }
-
-  Tick tick_at_unix(double unix_s) const {
-    const double ticks = (unix_s - facts_.epoch_s) / facts_.tick_period_s;
-    return ticks <= 0 ? 0u : static_cast<Tick>(std::floor(ticks));
+  void warn_if_server_differs(const protocol::Welcome& w) const {
+    const Scenario* scenario = o_.scenario.empty() ? nullptr : find_scenario(o_.scenario);
+    if (!scenario) return;
+    if (const std::string why = server_mismatch(scenario->server, facts_.tick_rate_hz, w.epoch_unix_ms, unix_now_s()); !why.empty())
+      std::fprintf(stderr, "ocean-loadtest: warning: the server does not run as scenario %s needs (%s): %s; "
+                   "start it with client/loadtest/local_server.py\n", o_.scenario.c_str(), describe(scenario->server).c_str(), why.c_str());
   }
+
+  Tick end_tick() const { return facts_.tick_at_unix(start_unix_ + o_.ramp_s + o_.duration_s - 1.0); }
 
   void on_frame(std::size_t i, const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
     SimClient& c = clients_[i];
     if (!truth_ || !c.tally || measuring_done_) return;
-    // The schedule owes frames up to one second before the end; later ones may still be in flight.
-    if (tick > end_tick()) return;
+    // The schedule owes frames up to one second before the end; later ones may still be in flight,
+    // and count only as a client's first frame.
+    const bool owed = tick <= end_tick();
+    if (!owed && c.first_frame_s) return;
     const double now_unix = unix_now_s();
     const FrameError error = checked_error(frame, tick);
+    const bool within_bound = within_bounds(error, facts_.bounds);
+    if (within_bound && !c.first_frame_s) {
+      c.first_frame_s = arrival_s;
+      c.traffic.set_first_frame(arrival_s);
+    }
+    if (!owed) return;
     ClientTally& tally = *c.tally;
     tally.clock().observe(tick, arrival_s);
     FrameOutcome outcome;
-    outcome.within_bound = within_bounds(error, facts_.bounds);
+    outcome.within_bound = within_bound;
     outcome.on_time = arrived_on_time(arrival_s, tick, *tally.clock().offset_s(), facts_.tick_period_s,
                                       facts_.interpolation_delay_s);
     if (!tally.record(tick, outcome, error.height_m)) return;
@@ -252,11 +175,10 @@ class Driver {
     ++second_frames_;
     if (outcome.within_bound && outcome.on_time) ++second_ok_;
     if (!outcome.within_bound) ++second_bad_;
-    if (i == 0 && !record_path_.empty() && record_error_.empty() && (!recorded_tick_ || tick > *recorded_tick_)) {
+    if (i == 0 && recorder_ && record_error_.empty() && (!recorded_tick_ || tick > *recorded_tick_)) {
       recorded_tick_ = tick;
       try {
-        if (!recorder_) recorder_.emplace(record_path_, facts_.grid, facts_.grid);
-        recorder_->append(frame.height);
+        recorder_->append(tick, facts_.grid, frame.height);
       } catch (const std::exception& e) {
         record_error_ = std::string("--record: ") + e.what();
       }
@@ -276,6 +198,25 @@ class Driver {
         schedule_second(second);
       }
     });
+  }
+
+  // Every 100 ms, each started client's received bytes, for its busiest second (ReceiveRate).
+  void schedule_sample(int k) {
+    const double due = start_steady_ + k * kSampleS;
+    const double wait = std::max(0.0, due - Clock::now());
+    sample_timer_.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(wait)));
+    sample_timer_.async_wait([this, k](const std::error_code& ec) {
+      if (ec || measuring_done_) return;
+      sample_traffic();
+      // A loop that fell behind skips the samples it missed instead of bunching them.
+      const int next = std::max(k + 1, static_cast<int>(std::floor((Clock::now() - start_steady_) / kSampleS)) + 1);
+      schedule_sample(next);
+    });
+  }
+
+  void sample_traffic() {
+    const double now = Clock::now();
+    for (std::size_t i = 0; i < launched_; ++i) clients_[i].traffic.sample(now, clients_[i].bytes());
   }
 
   double next_launch_time() const {
@@ -321,14 +262,17 @@ class Driver {
   }
 
   void finish() {
+    sample_traffic();
     measuring_done_ = true;
+    sample_timer_.cancel();
     end_unix_ = unix_now_s();
     end_wall_steady_ = Clock::now();
     cpu_end_ = own_cpu_s();
     server_cpu_end_ = process_cpu_s(o_.server_pid);
-    end_bytes_ = 0;
+    end_bytes_ = end_datagrams_ = 0;
     for (const SimClient& c : clients_) {
       end_bytes_ += c.bytes();
+      end_datagrams_ += c.udp_datagrams();
       if (c.connection && c.connection->connected()) ++connected_at_end_;
     }
     for (SimClient& c : clients_)
@@ -345,6 +289,7 @@ class Driver {
     s.transport = o_.transport;
     s.link = o_.link_text;
     s.scenario = o_.scenario;
+    s.bandwidth_bps = o_.bandwidth_bps;
     const double wall = end_wall_steady_ - start_steady_;
     s.duration_s = wall;
     s.loadtest_cpu_pct = wall > 0 ? 100.0 * (cpu_end_ - cpu_start_) / wall : 0.0;
@@ -353,26 +298,15 @@ class Driver {
     s.interpolation_delay_ms = facts_.interpolation_delay_s * 1e3;
     const Tick last_tick = truth_ ? end_tick() : 0;
     double client_seconds = 0.0;
+    std::vector<ClientConnectionFacts> facts(clients_.size());
     for (std::size_t i = 0; i < clients_.size(); ++i) {
       const SimClient& c = clients_[i];
+      facts[i] = c.connection_facts();
+      c.add_counters_to(s);
       const double started = o_.ramp_s * static_cast<double>(i) / static_cast<double>(clients_.size());
       client_seconds += std::max(0.0, wall - started);
-      s.keyframes += c.keyframes();
-      SessionCounts counts = c.closed;
-      if (const auto* session = c.live_session()) counts.add(session->stats());
-      s.chunks_rejected_by_codec += counts.codec_rejected;
-      s.messages_rejected += counts.messages_rejected;
-      s.keyframe_requests += counts.keyframe_requests;
-      s.transport_fallbacks += counts.transport_fallbacks;
-      s.frames_recovered += counts.frames_recovered;
-      for (std::size_t r = 0; r < counts.codec_by_reason.size(); ++r)
-        if (counts.codec_by_reason[r]) s.codec_rejections[std::string(codec::to_string(static_cast<codec::ChunkError>(r)))] += counts.codec_by_reason[r];
-      if (c.connection) {
-        const auto& k = c.connection->counters();
-        if (k.connects > 1) s.reconnects += k.connects - 1;
-      }
       if (!truth_) continue;
-      const Tick start_tick = c.welcome_tick.value_or(tick_at_unix(start_unix_ + started));
+      const Tick start_tick = c.welcome_tick.value_or(facts_.tick_at_unix(start_unix_ + started));
       ClientTally empty(facts_.tick_period_s, facts_.interval_ticks);
       const ClientTally& t = c.tally ? *c.tally : empty;
       const std::uint64_t expected = t.expected(start_tick, last_tick);
@@ -388,10 +322,20 @@ class Driver {
     if (!truth_) s.frames_expected = 0;
     s.frames_ok_pct = s.frames_expected ? 100.0 * std::min(s.frames_ok, s.frames_expected) / s.frames_expected : 0.0;
     s.kbps_mean = client_seconds > 0 ? end_bytes_ * 8.0 / 1000.0 / client_seconds : 0.0;
+    s.kbps_mean_ip = client_seconds > 0 ? (end_bytes_ + kIpUdpHeaderBytes * end_datagrams_) * 8.0 / 1000.0 / client_seconds : 0.0;
+    const ConnectionFigures figures = connection_figures(facts);
+    s.ttff_max_s = figures.ttff_max_s;
+    s.ttff_p50_s = figures.ttff_p50_s;
+    s.clients_without_frame = figures.clients_without_frame;
+    s.kbps_peak_1s = figures.kbps_peak_1s;
+    s.kbps_peak_1s_p50 = figures.kbps_peak_1s_p50;
+    s.kbps_peak_1s_startup = figures.kbps_peak_1s_startup;
+    s.kbps_calm = figures.kbps_calm;
     s.latency_p50_ms = latency_all_.percentile(50) * 1e3;
     s.latency_p99_ms = latency_all_.percentile(99) * 1e3;
     s.latency_max_ms = latency_all_.max_s() * 1e3;
     s.truth_evaluations = truth_ ? truth_->evaluations() : 0;
+    s.scenes = truth_ ? static_cast<int>(truth_->scenes()) : 0;
     s.truth_checks = truth_checks_;
     for (const auto& memo : memos_) {
       s.decodes_run += memo->counts().misses;
@@ -403,20 +347,22 @@ class Driver {
   const LoadtestOptions& o_;
   asio::io_context io_;
   std::vector<SimClient> clients_;
-  asio::steady_timer tick_timer_;
+  asio::steady_timer tick_timer_, sample_timer_;
+  static constexpr double kSampleS = 0.1;
+  static constexpr int kIpUdpHeaderBytes = 28;  // IPv4 20 + UDP 8, per datagram
   std::size_t launched_ = 0;
   std::optional<GroundTruth> truth_;
   StreamFacts facts_;
   LatencyHistogram latency_all_, latency_second_;
-  std::uint64_t second_frames_ = 0, second_ok_ = 0, second_bad_ = 0, last_bytes_ = 0, end_bytes_ = 0;
+  std::uint64_t second_frames_ = 0, second_ok_ = 0, second_bad_ = 0, last_bytes_ = 0, end_bytes_ = 0, end_datagrams_ = 0;
   std::vector<SeriesRow> series_;
   double start_steady_ = 0.0, end_steady_ = 0.0, end_wall_steady_ = 0.0, start_unix_ = 0.0, end_unix_ = 0.0;
   double cpu_start_ = 0.0, cpu_end_ = 0.0;
   std::optional<double> server_cpu_start_, server_cpu_end_;
   bool measuring_done_ = false;
   int connected_at_end_ = 0;
-  std::string record_path_, record_error_;
-  std::optional<codec::NpyWriter> recorder_;
+  std::string record_error_;
+  std::optional<FrameRecorder> recorder_;
   std::optional<Tick> recorded_tick_;  // client 0's file holds frames in tick order
   std::vector<std::unique_ptr<codec::DecodeMemo>> memos_;
   std::map<std::uint64_t, FrameError> verdicts_;  // by ReconstructedFrame::shared_id

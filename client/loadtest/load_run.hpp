@@ -14,7 +14,8 @@ namespace ocean::loadtest {
 struct LoadRunResult {
   LoadSummary summary;
   std::vector<SeriesRow> series;
-  std::string error;  // a failure that made the run meaningless (e.g. --record could not open)
+  // A failure that made the run meaningless: no client ever got a Welcome, or --record failed.
+  std::string error;
 };
 
 // Runs to completion (ramp + duration); progress lines go to stderr when options.progress.

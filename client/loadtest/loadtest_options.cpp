@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 
 #include "profile.hpp"
 #include "scenario.hpp"
@@ -44,23 +45,28 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
   app.add_option("--clients", o.clients, "number of simulated clients, 1..100000");
   app.add_option("--ramp", o.ramp_s, "seconds over which the clients start, >= 0");
   app.add_option("--duration", o.duration_s, "seconds measured after the ramp, > 0");
-  app.add_option("--scenario", o.scenario, "a named set of --profile/--transport/--link (see --list-scenarios)");
+  app.add_option("--scenario", o.scenario, "a named set of --profile/--transport/--link/--bandwidth (see --list-scenarios; some need a server started for them)");
   app.add_option("--profile", o.profile, "stream profile to ask for: " + profile_names());
   app.add_option("--transport", o.transport, "udp or tcp");
   app.add_option("--link", o.link_text, "link impairment, e.g. rate=256kbit,delay=80ms,jitter=20ms,loss=5%,reorder=1%,dup=0.5% (\"\" or none = none)");
+  std::string bandwidth;
+  app.add_option("--bandwidth", bandwidth,
+                 "bandwidth each client announces in its Hello: bits/s or a rate such as 32kbit (0 = unstated; "
+                 "default: the scenario's, else the link's rate)");
   app.add_option("--seed", o.seed, "seed of the link randomness");
   app.add_option("--server-pid", o.server_pid, "pid of a local server, for server_cpu_pct from /proc");
   app.add_flag("--json", o.json, "print one JSON summary object as the last stdout line");
   bool quiet = false;
   app.add_flag("--quiet", quiet, "no progress line on stderr");
-  app.add_flag("--list-scenarios", o.list_scenarios, "print the scenarios and exit");
+  app.add_flag("--list-scenarios", o.list_scenarios,
+               "print the scenarios (with --json: as one JSON array, server needs included) and exit");
   bool own_decode = false;
   app.add_flag("--no-shared-decode", own_decode,
                "every client decodes every frame itself (default: clients that got identical bytes on an identical "
                "state share one decode, which gives bit-identical frames at a fraction of the CPU)");
   app.add_option("--csv", o.csv_path, "write a per-second series to this CSV file");
   app.add_option("--plot", o.plot_path, "render kbps, on-time % and latency over time to this PNG (gnuplot)");
-  app.add_option("--record", o.record_path, "record client 0's reconstructed heights to this .npy file");
+  app.add_option("--record", o.record_path, "record client 0's reconstructed heights to this .npy file, and each frame's tick to FILE.ticks.npy (int64)");
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
   try {
@@ -93,8 +99,9 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
     result.error = "--duration: must be in (0, 86400] seconds";
     return result;
   }
+  const Scenario* scenario = nullptr;
   if (!o.scenario.empty()) {
-    const Scenario* s = find_scenario(o.scenario);
+    const Scenario* s = scenario = find_scenario(o.scenario);
     if (!s) {
       result.error = "--scenario: unknown scenario '" + o.scenario + "'; known: " + scenario_names();
       return result;
@@ -120,6 +127,17 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
       return result;
     }
     o.link = link.spec;
+  }
+  if (app.count("--bandwidth") == 0 && scenario && !scenario->bandwidth.empty()) bandwidth = scenario->bandwidth;
+  if (!bandwidth.empty()) {
+    const auto bps = parse_rate_bps(bandwidth);
+    if (!bps || *bps > 1e12) {
+      result.error = "--bandwidth: '" + bandwidth + "' is not a rate: bits/s, or e.g. 32kbit, 2mbit, 4kbps (bytes)";
+      return result;
+    }
+    o.bandwidth_bps = static_cast<std::uint64_t>(std::llround(*bps));
+  } else {
+    o.bandwidth_bps = static_cast<std::uint64_t>(std::llround(o.link.rate_bps));  // what a client on it would know
   }
   return result;
 }

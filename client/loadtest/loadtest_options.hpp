@@ -21,6 +21,8 @@ struct LoadtestOptions {
   std::string transport = "udp";
   std::string link_text;     // as given (or from the scenario); "" = no impairment
   LinkSpec link;
+  // Hello.bandwidth_bps: --bandwidth, else the scenario's, else the link's rate (0 = unstated).
+  std::uint64_t bandwidth_bps = 0;
   std::uint64_t seed = 1;    // link randomness; client i uses seed + i
   int server_pid = 0;       // 0 = none
   bool json = false;

@@ -1,4 +1,5 @@
 // ocean-loadtest: parses the flags, runs the load, prints the table / JSON and writes the series.
+// Exit status: 0 ran; 1 the run failed (no client ever connected, an output not written); 2 bad flags.
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -6,19 +7,7 @@
 
 #include "load_run.hpp"
 #include "loadtest_options.hpp"
-#include "scenario.hpp"
-
-namespace {
-
-void list_scenarios() {
-  std::printf("%-14s %-8s %-9s %-60s %s\n", "scenario", "profile", "transport", "link", "stands for");
-  for (const ocean::loadtest::Scenario& s : ocean::loadtest::all_scenarios())
-    std::printf("%-14.*s %-8.*s %-9.*s %-60.*s %.*s\n", int(s.name.size()), s.name.data(), int(s.profile.size()),
-                s.profile.data(), int(s.transport.size()), s.transport.data(), int(s.link.empty() ? 4 : s.link.size()),
-                s.link.empty() ? "none" : s.link.data(), int(s.why.size()), s.why.data());
-}
-
-}  // namespace
+#include "scenario_listing.hpp"
 
 int main(int argc, char** argv) {
   using namespace ocean::loadtest;
@@ -33,16 +22,13 @@ int main(int argc, char** argv) {
   }
   const LoadtestOptions& options = parsed.options;
   if (options.list_scenarios) {
-    list_scenarios();
+    if (options.json) std::cout << scenarios_json() << std::endl;
+    else print_scenarios(std::cout);
     return 0;
   }
   try {
     const LoadRunResult result = run_load(options);
     int status = 0;
-    if (!result.error.empty()) {
-      std::cerr << "ocean-loadtest: " << result.error << "\n";
-      status = 1;
-    }
     if (!options.csv_path.empty() || !options.plot_path.empty()) {
       const std::string csv = options.csv_path.empty() ? options.plot_path + ".csv" : options.csv_path;
       if (std::string e = write_series_csv(csv, result.series); !e.empty()) {
@@ -60,6 +46,11 @@ int main(int argc, char** argv) {
     }
     print_table(options.json ? std::cerr : std::cout, result.summary);
     if (options.json) std::cout << to_json(result.summary) << std::endl;
+    // Last, so it is the line a reader of the output sees.
+    if (!result.error.empty()) {
+      std::cerr << "ocean-loadtest: " << result.error << "\n";
+      status = 1;
+    }
     return status;
   } catch (const std::exception& e) {
     std::cerr << "ocean-loadtest: " << e.what() << "\n";

@@ -1,5 +1,9 @@
 #include "scenario.hpp"
 
+#include <cmath>
+
+#include "link_spec.hpp"
+
 namespace ocean::loadtest {
 namespace {
 
@@ -14,6 +18,16 @@ constexpr Scenario kScenarios[] = {
      "a network that blocks UDP: frames over TCP, whose losses show up as delay"},
     {"flaky-edge", "mobile", "udp", "rate=128kbit,delay=150ms,jitter=60ms,loss=15%,reorder=5%,dup=2%",
      "the worst link we promise to survive: EDGE-class rate, heavy jitter and loss"},
+    {"edge-2g", "mobile", "udp", "rate=32kbit,delay=300ms,jitter=50ms,loss=3%",
+     "a phone on a 2G EDGE cell: a 32 kbit/s pipe, long delay; the first frame must come within 2 s"},
+    {"gprs", "lite", "udp", "rate=16kbit,delay=300ms,jitter=50ms,loss=2%",
+     "the thinnest link we stream to: GPRS, 16 kbit/s, the lite profile", {}, {0, 0, {}, "mobile,desktop,lite"}},
+    {"weather-front", "mobile", "udp", "rate=256kbit,delay=80ms,jitter=20ms,loss=2%",
+     "a 3G phone while the weather changes every 2.5 s: every scene key, depth and spectrum included",
+     {}, {0, 0, "weather-front", {}}},
+    {"old-epoch", "mobile", "udp", "delay=20ms",
+     "a fleet whose epoch is 11 years back, ticking at 240 Hz: ticks beyond 32 bits",
+     {}, {240, 4018, {}, {}}},
 };
 
 }  // namespace
@@ -24,6 +38,36 @@ const Scenario* find_scenario(std::string_view name) {
   for (const Scenario& s : kScenarios)
     if (s.name == name) return &s;
   return nullptr;
+}
+
+std::uint64_t announced_bandwidth_bps(const Scenario& s) {
+  if (!s.bandwidth.empty()) return static_cast<std::uint64_t>(std::llround(parse_rate_bps(s.bandwidth).value_or(0.0)));
+  return static_cast<std::uint64_t>(std::llround(parse_link_spec(s.link).spec.rate_bps));
+}
+
+std::string describe(const ServerNeeds& n) {
+  std::string out;
+  auto add = [&](const std::string& item) { out += (out.empty() ? "" : " ") + item; };
+  if (n.tick_rate_hz) add("tick-rate=" + std::to_string(n.tick_rate_hz));
+  if (n.epoch_days_ago) add("epoch=now-" + std::to_string(n.epoch_days_ago) + "d");
+  if (!n.schedule.empty()) add("schedule=" + std::string(n.schedule));
+  if (!n.profiles.empty()) add("profiles=" + std::string(n.profiles));
+  return out;
+}
+
+}  // namespace ocean::loadtest
+
+namespace ocean::loadtest {
+
+std::string server_mismatch(const ServerNeeds& n, int tick_rate_hz, std::int64_t epoch_unix_ms, double now_unix_s) {
+  std::string out;
+  if (n.tick_rate_hz && n.tick_rate_hz != tick_rate_hz)
+    out += "it ticks at " + std::to_string(tick_rate_hz) + " Hz, not " + std::to_string(n.tick_rate_hz);
+  const double days_ago = (now_unix_s - static_cast<double>(epoch_unix_ms) / 1000.0) / 86400.0;
+  if (n.epoch_days_ago && std::fabs(days_ago - n.epoch_days_ago) > 2.0)
+    out += (out.empty() ? "" : "; ") + std::string("its epoch is ") + std::to_string(std::lround(days_ago)) +
+           " days ago, not " + std::to_string(n.epoch_days_ago);
+  return out;
 }
 
 }  // namespace ocean::loadtest

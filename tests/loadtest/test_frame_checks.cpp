@@ -4,6 +4,7 @@
 #include "client_tally.hpp"
 #include "frame_verdict.hpp"
 #include "ground_truth.hpp"
+#include "stream_facts.hpp"
 
 using namespace ocean::loadtest;
 
@@ -110,4 +111,20 @@ TEST_CASE("client tally: late, bad, stalls, and expected vs received") {
   ClientTally every_other(1.0 / 30, 2);
   CHECK(every_other.expected(7, 15) == 4);  // 8, 10, 12, 14 from the Welcome when no frame came
   CHECK(every_other.expected(20, 15) == 0);
+}
+
+TEST_CASE("stream facts: the tick of a time, full 64 bits past 2^32 as the wire carries it") {
+  ocean::protocol::Welcome w;
+  w.tick_period_s = 1.0 / 240;
+  w.epoch_unix_ms = 0;
+  w.stream.rate_hz = 30;
+  const StreamFacts f = StreamFacts::from(w);
+  CHECK(f.tick_rate_hz == 240);
+  CHECK(f.interval_ticks == 8);
+  CHECK(f.tick_at_unix(10.0) == 2400u);
+  const double eleven_years_s = 4018.0 * 86400.0;
+  const auto true_tick = static_cast<std::uint64_t>(eleven_years_s * 240);
+  CHECK(true_tick > 0xFFFFFFFFull);
+  CHECK(f.tick_at_unix(eleven_years_s + 1e-4) == true_tick);
+  CHECK(f.tick_at_unix(-5.0) == 0u);
 }

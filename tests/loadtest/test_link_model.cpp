@@ -19,6 +19,13 @@ std::vector<std::uint8_t> numbered(std::uint32_t n, std::size_t size = 100) {
   return b;
 }
 
+// What client_links.cpp gives TCP: rate and delay, a queue that never drops.
+LinkSpec tcp_view_for_test() {
+  LinkSpec t = spec_of("rate=80kbit,delay=10ms");
+  t.queue_bytes = 0xFFFFFFFFu;
+  return t;
+}
+
 std::uint32_t number_of(const std::vector<std::uint8_t>& b) {
   std::uint32_t n = 0;
   std::memcpy(&n, b.data(), sizeof n);
@@ -95,4 +102,32 @@ TEST_CASE("link model: one seed impairs the same packets the same way") {
   };
   CHECK(run(5) == run(5));
   CHECK(run(5) != run(6));
+}
+
+TEST_CASE("link model: models sharing a bottleneck queue behind each other's bytes") {
+  // 80 kbit/s = 10 kB/s: a 10 kB TCP message holds the link for 1 s, and a datagram sent just after
+  // it leaves only then, however empty its own model is.
+  auto down = std::make_shared<Bottleneck>(80000);
+  LinkModel tcp(tcp_view_for_test(), 1, down);
+  LinkModel udp(spec_of("rate=80kbit,delay=10ms"), 2, down);
+  tcp.send(numbered(1, 10000), 0.0);
+  udp.send(numbered(2, 100), 0.001);
+  CHECK(tcp.next_due() == Approx(1.0 + 0.010));
+  CHECK(udp.next_due() == Approx(1.0 + 0.010 + 100 * 8.0 / 80000));
+  CHECK(down->backlog_bytes(0.5) == Approx(5100).margin(1));
+}
+
+TEST_CASE("link model: a shared backlog makes the UDP queue drop, never the TCP one") {
+  auto down = std::make_shared<Bottleneck>(80000);
+  LinkModel tcp(tcp_view_for_test(), 1, down);
+  LinkModel udp(spec_of("rate=80kbit,queue=4kB"), 2, down);
+  tcp.send(numbered(1, 8000), 0.0);
+  udp.send(numbered(2, 100), 0.0);  // 8 kB ahead of it: over its 4 kB queue
+  CHECK(udp.stats().queue_drops == 1);
+  tcp.send(numbered(3, 8000), 0.0);  // TCP's queue is unbounded
+  CHECK(tcp.stats().queue_drops == 0);
+  CHECK(tcp.in_flight() == 2);
+  udp.send(numbered(4, 100), 1.5);  // 16 kB queued, 15 kB gone by 1.5 s: 1 kB ahead, it fits
+  CHECK(udp.stats().queue_drops == 1);
+  CHECK(udp.next_due() == Approx(1.6 + 0.01).margin(1e-6));
 }

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 using ocean::loadtest::parse_link_spec;
+using ocean::loadtest::parse_rate_bps;
 
 TEST_CASE("link spec: the issue's example parses with units") {
   auto r = parse_link_spec("rate=256kbit,delay=80ms,jitter=20ms,loss=5%,reorder=1%,dup=0.5%");
@@ -37,4 +38,14 @@ TEST_CASE("link spec: each bad field is named") {
   CHECK_THAT(parse_link_spec("loss").error, Catch::Contains("not key=value"));
   CHECK_THAT(parse_link_spec("delay=10ms,jitter=20ms").error, Catch::Contains("jitter"));
   CHECK_THAT(parse_link_spec("queue=10").error, Catch::Contains("queue"));
+}
+
+TEST_CASE("link spec: a rate alone, as --bandwidth takes it") {
+  CHECK(parse_rate_bps("32kbit") == 32000.0);
+  CHECK(parse_rate_bps("2mbit") == 2e6);
+  CHECK(parse_rate_bps("4kbps") == 32000.0);
+  CHECK(parse_rate_bps(" 16000 ") == 16000.0);
+  CHECK_FALSE(parse_rate_bps("32 kbit/s"));
+  CHECK_FALSE(parse_rate_bps("-1"));
+  CHECK_FALSE(parse_rate_bps(""));
 }

@@ -51,3 +51,37 @@ TEST_CASE("options: bad values name their flag") {
   CHECK(ok.options.host == "10.0.0.2");
   CHECK(ok.options.port == "7100");
 }
+
+TEST_CASE("options: the announced bandwidth is --bandwidth, else the scenario's, else the link's rate") {
+  CHECK(parse_options({"--scenario", "mobile-3g"}).options.bandwidth_bps == 256000);
+  CHECK(parse_options({"--scenario", "desktop-lan"}).options.bandwidth_bps == 0);
+  CHECK(parse_options({"--scenario", "mobile-3g", "--link", "delay=5ms"}).options.bandwidth_bps == 0);
+  CHECK(parse_options({"--link", "rate=1mbit"}).options.bandwidth_bps == 1000000);
+  CHECK(parse_options({"--scenario", "mobile-3g", "--bandwidth", "32kbit"}).options.bandwidth_bps == 32000);
+  CHECK(parse_options({"--bandwidth", "16000"}).options.bandwidth_bps == 16000);
+  CHECK(parse_options({"--bandwidth", "4kbps"}).options.bandwidth_bps == 32000);
+  CHECK(parse_options({"--scenario", "mobile-3g", "--bandwidth", "0"}).options.bandwidth_bps == 0);
+  CHECK_THAT(parse_options({"--bandwidth", "fast"}).error, Catch::Contains("--bandwidth"));
+  CHECK_THAT(parse_options({"--bandwidth", "-5kbit"}).error, Catch::Contains("--bandwidth"));
+}
+
+TEST_CASE("scenarios: server needs are described, and a Welcome that differs is named") {
+  const Scenario* old = find_scenario("old-epoch");
+  REQUIRE(old);
+  CHECK(describe(old->server) == "tick-rate=240 epoch=now-4018d");
+  CHECK(describe(find_scenario("mobile-3g")->server).empty());
+  CHECK(describe(find_scenario("weather-front")->server) == "schedule=weather-front");
+  const double now = 1.8e9;
+  const std::int64_t epoch_ok = static_cast<std::int64_t>((now - 4018 * 86400.0) * 1000);
+  CHECK(server_mismatch(old->server, 240, epoch_ok, now).empty());
+  CHECK_THAT(server_mismatch(old->server, 30, epoch_ok, now), Catch::Contains("30 Hz"));
+  CHECK_THAT(server_mismatch(old->server, 240, 1767225600000, now), Catch::Contains("epoch"));
+  CHECK(server_mismatch(find_scenario("mobile-3g")->server, 30, 0, now).empty());
+}
+
+TEST_CASE("scenarios: the thin links announce their rate") {
+  CHECK(announced_bandwidth_bps(*find_scenario("edge-2g")) == 32000);
+  CHECK(announced_bandwidth_bps(*find_scenario("gprs")) == 16000);
+  CHECK(announced_bandwidth_bps(*find_scenario("old-epoch")) == 0);
+  CHECK(parse_options({"--scenario", "edge-2g"}).options.bandwidth_bps == 32000);
+}

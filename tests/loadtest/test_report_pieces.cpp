@@ -1,8 +1,14 @@
-// Percentiles, the per-second CSV and the JSON summary.
+// Percentiles, the per-second CSV, the JSON summary and the recording.
 #include <catch2/catch.hpp>
 
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <sstream>
+#include <unistd.h>
 
+#include "frame_recorder.hpp"
 #include "latency_histogram.hpp"
 #include "load_summary.hpp"
 #include "series_csv.hpp"
@@ -56,7 +62,40 @@ TEST_CASE("summary json: the fields the CTest wrapper reads, server cpu only whe
   CHECK_THAT(j, Catch::Contains("\"frames_bad\":0"));
   CHECK_THAT(j, Catch::Contains("\"link\":\"loss=5%\""));
   CHECK_THAT(j, !Catch::Contains("server_cpu_pct"));
+  CHECK_THAT(j, Catch::Contains("\"ttff_max_s\":null"));
+  CHECK_THAT(j, Catch::Contains("\"clients_without_frame\":0"));
+  s.ttff_max_s = 1.25;
+  s.kbps_peak_1s = 48;
+  CHECK_THAT(to_json(s), Catch::Contains("\"ttff_max_s\":1.25"));
+  CHECK_THAT(to_json(s), Catch::Contains("\"kbps_peak_1s\":48"));
   s.server_cpu_pct = 12.5;
   CHECK_THAT(to_json(s), Catch::Contains("\"server_cpu_pct\":12.5"));
   CHECK(j.find('\n') == std::string::npos);
+}
+
+TEST_CASE("frame recorder: the ticks file sits beside the heights, int64, one per frame") {
+  CHECK(ticks_path_for("/tmp/run.npy") == "/tmp/run.ticks.npy");
+  CHECK(ticks_path_for("/tmp/run") == "/tmp/run.ticks.npy");
+  const std::string path = "/tmp/ocean-loadtest-test-" + std::to_string(::getpid()) + ".npy";
+  {
+    FrameRecorder recorder(path);
+    const std::vector<float> heights(4 * 4, 0.5f);
+    recorder.append(5000000000LL, 4, heights);  // beyond 32 bits: the file keeps it whole
+    recorder.append(5000000008LL, 4, heights);
+    recorder.close();
+  }
+  std::ifstream in(ticks_path_for(path), std::ios::binary);
+  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(bytes.size() == 128 + 16);
+  const std::string header(bytes.begin(), bytes.begin() + 128);
+  CHECK_THAT(header, Catch::Contains("'descr': '<i8'"));
+  CHECK_THAT(header, Catch::Contains("'shape': (2,)"));
+  CHECK(header.back() == '\n');
+  std::int64_t first = 0, second = 0;
+  std::memcpy(&first, bytes.data() + 128, 8);
+  std::memcpy(&second, bytes.data() + 136, 8);
+  CHECK(first == 5000000000LL);
+  CHECK(second == 5000000008LL);
+  std::remove(path.c_str());
+  std::remove(ticks_path_for(path).c_str());
 }
