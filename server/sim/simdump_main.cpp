@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/json_writer.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cinttypes>
@@ -119,12 +121,16 @@ void print_summary(const ocean::sim::Ocean& ocean, const Options& o, const Tick&
 void print_json(const ocean::sim::Ocean& ocean, const Options& o, const Tick& tick) {
   const Frame& f = tick.frame;
   const FieldStats h = stats(f.height);
-  std::printf("{\"n_x\":%d,\"n_z\":%d,\"time_s\":%.17g,\"spectrum\":\"%s\",\"height_min\":%.9g,\"height_max\":%.9g,"
-              "\"height_std\":%.9g,\"hs\":%.9g,\"expected_hs\":%.9g,\"max_slope\":%.9g,\"tick_ms\":%.4f,"
-              "\"transforms\":%d,\"hash\":\"%016" PRIx64 "\"}\n",
-              f.n_x, f.n_z, f.time_s, o.spectrum.c_str(), h.min, h.max, h.std, 4.0 * h.std,
-              4.0 * std::sqrt(ocean.expected_variance()), max_slope(f), tick.median_ms,
-              ocean.transform_count({!o.no_slopes, o.choppy}), ocean::sim::frame_hash(f));
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016" PRIx64, ocean::sim::frame_hash(f));
+  ocean::common::JsonWriter json(ocean::common::JsonWriter::Style::compact);
+  json.integer("n_x", f.n_x).integer("n_z", f.n_z).number("time_s", f.time_s, 17);
+  json.text("spectrum", o.spectrum);
+  json.number("height_min", h.min, 9).number("height_max", h.max, 9).number("height_std", h.std, 9);
+  json.number("hs", 4.0 * h.std, 9).number("expected_hs", 4.0 * std::sqrt(ocean.expected_variance()), 9);
+  json.number("max_slope", max_slope(f), 9).fixed("tick_ms", tick.median_ms, 4);
+  json.integer("transforms", ocean.transform_count({!o.no_slopes, o.choppy})).text("hash", hash);
+  std::printf("%s\n", json.str().c_str());
 }
 
 }  // namespace
