@@ -9,6 +9,18 @@
 
 #include "client/viewer/viewer_options.hpp"
 #include "client/viewer/viewer_run.hpp"
+#include "profile.hpp"
+
+namespace {
+
+// "mobile, desktop, ...": the profile table's names, for --profile's help.
+std::string profile_names() {
+  std::string names;
+  for (const ocean::Profile& p : ocean::all_profiles()) names += (names.empty() ? "" : ", ") + std::string(p.name);
+  return names;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   ocean::viewer::ViewerOptions o;
@@ -16,7 +28,7 @@ int main(int argc, char** argv) {
   app.add_option("--server", o.server, "HOST:PORT of the server's TCP listener")->required();
   ocean::viewer::add_output_flags(
       app, o, {300, 10000000, "print one JSON summary {frames, fps, kbps, cpu_ms_per_frame, ...}"});
-  app.add_option("--profile", o.profile, "stream profile to ask for (mobile, desktop, desktop-choppy, lite)");
+  app.add_option("--profile", o.profile, "stream profile to ask for (" + profile_names() + ")");
   app.add_option("--transport", o.transport, "udp (falls back to tcp when UDP fails) or tcp")
       ->check(CLI::IsMember({"udp", "tcp"}));
   app.add_option("--record", o.record_path, "write the heights of every received frame to this .npy");
