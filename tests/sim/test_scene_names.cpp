@@ -6,29 +6,34 @@
 
 using namespace ocean::sim;
 
-TEST_CASE("spectrum names map to kinds and back, in enum order") {
-  const std::vector<std::string> names = spectrum_names();
-  REQUIRE(names == std::vector<std::string>{"phillips", "jonswap"});
+namespace {
+
+// Every listed name maps to the enum value of its index, and back to itself.
+template <typename Kind>
+void check_round_trip(const std::vector<std::string>& names, std::optional<Kind> (*from_name)(std::string_view),
+                      std::string_view (*to_name)(Kind)) {
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const auto kind = spectrum_from_name(names[i]);
+    CAPTURE(names[i]);
+    const std::optional<Kind> kind = from_name(names[i]);
     REQUIRE(kind);
     CHECK(static_cast<std::size_t>(*kind) == i);
-    CHECK(spectrum_name(*kind) == names[i]);
+    CHECK(to_name(*kind) == names[i]);
   }
+}
+
+}  // namespace
+
+TEST_CASE("spectrum names map to kinds and back, in enum order") {
+  REQUIRE(spectrum_names() == std::vector<std::string>{"phillips", "jonswap"});
+  check_round_trip(spectrum_names(), spectrum_from_name, spectrum_name);
   CHECK_FALSE(spectrum_from_name("Phillips"));
   CHECK_FALSE(spectrum_from_name(""));
   CHECK(spectrum_name(static_cast<SpectrumKind>(7)).empty());
 }
 
 TEST_CASE("spreading names map to kinds and back, in enum order") {
-  const std::vector<std::string> names = spreading_names();
-  REQUIRE(names == std::vector<std::string>{"cos2s", "donelan-banner", "hasselmann"});
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    const auto kind = spreading_from_name(names[i]);
-    REQUIRE(kind);
-    CHECK(static_cast<std::size_t>(*kind) == i);
-    CHECK(spreading_name(*kind) == names[i]);
-  }
+  REQUIRE(spreading_names() == std::vector<std::string>{"cos2s", "donelan-banner", "hasselmann"});
+  check_round_trip(spreading_names(), spreading_from_name, spreading_name);
   CHECK_FALSE(spreading_from_name("donelan_banner"));
   CHECK(spreading_name(static_cast<SpreadingKind>(9)).empty());
 }
