@@ -133,6 +133,34 @@ struct Ours {
   bool bitwise = true;
 };
 
+// Prints one JSON line per method; returns how many of ours failed the goal (within the error
+// bound, at most half of delta_zstd's bitrate, decoded bit for bit as encoded).
+int print_results(const Profile& p, int n, const Tally& raw, const Tally& q16z, const Tally& delta,
+                  const std::vector<Ours>& ours) {
+  int failures = 0;
+  for (const Tally* t : {&raw, &q16z, &delta}) std::printf("%s\n", common_json(*t, p, n).str().c_str());
+  const double delta_kbps = delta.bytes * 8.0 / (delta.frames / p.rate_hz) / 1000.0;
+  for (const Ours& o : ours) {
+    const double secs = o.tally.frames / p.rate_hz;
+    const double kbps = o.tally.bytes * 8.0 / secs / 1000.0;
+    const bool within = o.tally.max_err <= 0.5 * double(p.height_step_m) &&
+                        o.tally.max_slope_err <= 0.5 * double(p.slope_step);
+    const bool pass = within && kbps <= 0.5 * delta_kbps && o.bitwise;
+    failures += pass ? 0 : 1;
+    common::JsonWriter line = common_json(o.tally, p, n);
+    line.fixed("kbps_height", o.height_bits / secs / 1000.0, 4).fixed("kbps_slope", o.slope_bits / secs / 1000.0, 4);
+    line.fixed("kbps_overhead", kbps - (o.height_bits + o.slope_bits) / secs / 1000.0, 4);
+    line.integer("envelope_bytes_per_chunk", codec::kEnvelopeOverheadBytes);
+    line.fixed("chunks_per_frame", double(o.chunks) / o.tally.frames, 3);
+    line.fixed("payload_bytes_per_frame", double(o.payload) / o.tally.frames, 2);
+    line.fixed("corrections_per_frame", double(o.corrections) / o.tally.frames, 3);
+    line.integer("key_bytes", o.key_bytes).integer("key_chunks", o.key_chunks).boolean("bitwise_match", o.bitwise);
+    line.boolean("within_bound", within).boolean("half_of_delta_zstd", kbps <= 0.5 * delta_kbps);
+    std::printf("%s\n", line.str().c_str());
+  }
+  return failures;
+}
+
 int run_codec(int argc, char** argv) {
   std::string profiles_arg = "mobile,desktop";
   double seconds = 10.0;
@@ -305,26 +333,7 @@ int run_codec(int argc, char** argv) {
       }
     }
 
-    for (const Tally* t : {&raw, &q16z, &delta}) std::printf("%s\n", common_json(*t, *p, n).str().c_str());
-    const double delta_kbps = delta.bytes * 8.0 / (delta.frames / p->rate_hz) / 1000.0;
-    for (const Ours& o : ours) {
-      const double secs = o.tally.frames / p->rate_hz;
-      const double kbps = o.tally.bytes * 8.0 / secs / 1000.0;
-      const bool within = o.tally.max_err <= 0.5 * double(p->height_step_m) &&
-                          o.tally.max_slope_err <= 0.5 * double(p->slope_step);
-      const bool pass = within && kbps <= 0.5 * delta_kbps && o.bitwise;
-      failures += pass ? 0 : 1;
-      common::JsonWriter line = common_json(o.tally, *p, n);
-      line.fixed("kbps_height", o.height_bits / secs / 1000.0, 4).fixed("kbps_slope", o.slope_bits / secs / 1000.0, 4);
-      line.fixed("kbps_overhead", kbps - (o.height_bits + o.slope_bits) / secs / 1000.0, 4);
-      line.integer("envelope_bytes_per_chunk", codec::kEnvelopeOverheadBytes);
-      line.fixed("chunks_per_frame", double(o.chunks) / o.tally.frames, 3);
-      line.fixed("payload_bytes_per_frame", double(o.payload) / o.tally.frames, 2);
-      line.fixed("corrections_per_frame", double(o.corrections) / o.tally.frames, 3);
-      line.integer("key_bytes", o.key_bytes).integer("key_chunks", o.key_chunks).boolean("bitwise_match", o.bitwise);
-      line.boolean("within_bound", within).boolean("half_of_delta_zstd", kbps <= 0.5 * delta_kbps);
-      std::printf("%s\n", line.str().c_str());
-    }
+    failures += print_results(*p, n, raw, q16z, delta, ours);
     std::fflush(stdout);
   }
   (void)json;
