@@ -171,13 +171,11 @@ void NetworkThread::on_frame(const codec::ReconstructedFrame& frame, Tick tick) 
 
 void NetworkThread::publish(const client::ClientConnection& connection, double now) {
   const client::ClientSession* session = connection.session();
-  const std::uint64_t bytes = bytes_done_ + (session ? session_bytes(*session) : 0);
-  if (last_publish_s_ > 0.0 && now > last_publish_s_) {
-    const double instant = (bytes - last_bytes_) * 8.0 / 1000.0 / (now - last_publish_s_);
-    kbps_ += (instant - kbps_) * 0.3;  // about a second of smoothing at 5 publications per second
-  }
-  last_bytes_ = bytes;
-  last_publish_s_ = now;
+  // Once a session ends its bytes are in bytes_done_, but the connection keeps it as session()
+  // until the next one starts: only a connected session's bytes are still to be added.
+  const bool live = session && connection.connected();
+  const std::uint64_t bytes = bytes_done_ + (live ? session_bytes(*session) : 0);
+  const double kbps = kbps_.update(bytes, now);
   double expected = expected_done_, received = received_done_;
   if (session_ticks_.any) {
     expected += std::floor((session_ticks_.last - session_ticks_.first) / ticks_per_frame_ + 0.5) + 1.0;
@@ -187,7 +185,7 @@ void NetworkThread::publish(const client::ClientConnection& connection, double n
   std::lock_guard lock(mutex_);
   stats_.frames_received = frames_received_.load();
   stats_.bytes_in = bytes;
-  stats_.kbps = kbps_;
+  stats_.kbps = kbps;
   stats_.rtt_ms = session ? session->stats().rtt_smoothed_s * 1e3 : 0.0;
   stats_.loss_pct = expected > 0 ? std::max(0.0, 100.0 * (1.0 - received / expected)) : 0.0;
   stats_.connects = connection.counters().connects;

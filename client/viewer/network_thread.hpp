@@ -13,6 +13,7 @@
 #include <string>
 #include <thread>
 
+#include "client/viewer/kbps_meter.hpp"
 #include "client_connection.hpp"
 #include "shared_timeline.hpp"
 
@@ -91,8 +92,7 @@ class NetworkThread {
   } session_ticks_;
   double expected_done_ = 0.0, received_done_ = 0.0;  // frames of ended sessions (for loss)
   std::uint64_t bytes_done_ = 0;                      // bytes of ended sessions
-  std::uint64_t last_bytes_ = 0;
-  double last_publish_s_ = 0.0, kbps_ = 0.0;
+  KbpsMeter kbps_;
   double cpu_start_ms_ = 0.0, record_ms_ = 0.0;
   double ticks_per_frame_ = 1.0;
   struct Recording;

@@ -1,24 +1,12 @@
 // StreamView: grid changes, blending and upload on the render thread.
 #include "client/viewer/stream_view.hpp"
 
-#include <algorithm>
-
 #include "client/viewer/thread_cpu_clock.hpp"
 
 namespace ocean::viewer {
 
 bool StreamView::init(const render::RendererDesc& desc, const CameraPose& pose, std::string& error) {
-  if (!renderer_.init(desc)) {
-    error = renderer_.error();
-    return false;
-  }
-  if (!hud_.init(error)) return false;
-  constexpr float kRadPerDeg = 3.14159265f / 180.0f;
-  camera_.position = {0.0, pose.eye_height_m, 0.0};
-  camera_.pitch_rad = pose.pitch_deg * kRadPerDeg;
-  camera_.yaw_rad = pose.yaw_deg * kRadPerDeg;
-  camera_.far_m = std::max(camera_.far_m, renderer_.desc().view_distance_m * 1.6f);
-  return true;
+  return scene_.init(desc, pose, error);
 }
 
 bool StreamView::update(NetworkThread& net, double now) {
@@ -27,8 +15,8 @@ bool StreamView::update(NetworkThread& net, double now) {
     const bool same_grid = shape.grid == shape_.grid && shape.patch_x_m == shape_.patch_x_m &&
                            shape.patch_z_m == shape_.patch_z_m;
     if (!same_grid && shape.grid > 0) {
-      if (!renderer_.set_grid(shape.grid, shape.patch_x_m, shape.patch_z_m)) {
-        error_ = "stream grid " + std::to_string(shape.grid) + ": " + renderer_.error();
+      if (!scene_.renderer.set_grid(shape.grid, shape.patch_x_m, shape.patch_z_m)) {
+        error_ = "stream grid " + std::to_string(shape.grid) + ": " + scene_.renderer.error();
         return false;
       }
       // The old frame's samples do not fit the new grid: nothing is shown until a frame of it arrives.
@@ -45,7 +33,7 @@ bool StreamView::update(NetworkThread& net, double now) {
     return true;
   }
   const bool slopes = slope_x_.size() == samples && slope_z_.size() == samples;
-  renderer_.upload_frame(height_.data(), slopes ? slope_x_.data() : nullptr, slopes ? slope_z_.data() : nullptr);
+  scene_.renderer.upload_frame(height_.data(), slopes ? slope_x_.data() : nullptr, slopes ? slope_z_.data() : nullptr);
   upload_cpu_ms_ += thread_cpu_ms() - t0;
   ++uploads_;
   return true;

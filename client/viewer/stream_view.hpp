@@ -7,15 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "client/render/hud_overlay.hpp"
-#include "client/render/renderer.hpp"
 #include "client/viewer/network_thread.hpp"
+#include "client/viewer/view_scene.hpp"
 
 namespace ocean::viewer {
-
-struct CameraPose {
-  float eye_height_m = 10.0f, pitch_deg = -6.0f, yaw_deg = 0.0f;
-};
 
 class StreamView {
  public:
@@ -24,9 +19,10 @@ class StreamView {
   // when the renderer refuses the stream's grid.
   bool update(NetworkThread& net, double now);
 
-  render::Renderer& renderer() { return renderer_; }
-  render::HudOverlay& hud() { return hud_; }
-  render::Camera& camera() { return camera_; }
+  ViewScene& scene() { return scene_; }
+  render::Renderer& renderer() { return scene_.renderer; }
+  render::HudOverlay& hud() { return scene_.hud; }
+  render::Camera& camera() { return scene_.camera; }
   const std::string& error() const { return error_; }
   const StreamShape& shape() const { return shape_; }
   const client::RenderedFrame& last_frame() const { return last_; }
@@ -37,9 +33,7 @@ class StreamView {
   std::uint64_t held_frames() const { return held_; }        // rendered with no new blend (empty timeline)
 
  private:
-  render::Renderer renderer_;
-  render::HudOverlay hud_;
-  render::Camera camera_;
+  ViewScene scene_;
   StreamShape shape_;
   client::RenderedFrame last_;
   std::vector<float> height_, slope_x_, slope_z_;

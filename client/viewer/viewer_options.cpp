@@ -1,4 +1,4 @@
-// Parsing of ocean-viewer's compound option values.
+// Parsing of ocean-viewer's HOST:PORT option value.
 #include "client/viewer/viewer_options.hpp"
 
 #include <cstdio>
@@ -18,16 +18,6 @@ bool parse_server_address(const std::string& text, std::string& host, std::strin
   char tail = 0;
   if (std::sscanf(port.c_str(), "%d%c", &value, &tail) != 1 || value < 1 || value > 65535) {
     error = "--server port must be a number 1..65535, got '" + port + "'";
-    return false;
-  }
-  return true;
-}
-
-bool parse_size(const std::string& text, int& width, int& height, std::string& error) {
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width <= 0 || height <= 0 ||
-      width > 16384 || height > 16384) {
-    error = "--size must be WIDTHxHEIGHT, each 1..16384, got '" + text + "'";
     return false;
   }
   return true;

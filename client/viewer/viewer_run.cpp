@@ -1,68 +1,23 @@
-// Headless and window front ends of ocean-viewer, and its JSON summary.
-#include "fps_meter.hpp"
+// ocean-viewer's FrameSource over the network, its two front ends and its JSON summary.
 #include "client/viewer/viewer_run.hpp"
 
-#include <chrono>
 #include <cstdio>
 #include <memory>
 
-#include "client/render/camera_controls.hpp"
-#include "client/render/framebuffer_readback.hpp"
-#include "client/render/offscreen_target.hpp"
-#include "client/viewer/app_window.hpp"
-#include "client/viewer/headless_context.hpp"
-#include "client/viewer/png_file.hpp"
 #include "client/viewer/stream_view.hpp"
+#include "client/viewer/viewer_loops.hpp"
+#include "common/json_writer.hpp"
 #include "profile.hpp"
 
 namespace ocean::viewer {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-render::RendererDesc renderer_desc(const ViewerOptions& o) {
-  render::RendererDesc desc;
-  desc.view_distance_m = o.view_distance_m;
-  desc.lod0_distance_m = o.lod0_distance_m;
-  return desc;
-}
-
-CameraPose camera_pose(const ViewerOptions& o) { return {o.eye_height_m, o.pitch_deg, o.yaw_deg}; }
+constexpr int kHeadlessDefaultFrames = 300;
 
 double latency_ms(const StreamView& view, const NetworkStats& net) {
   const double delay_s = view.shape().send_interval_s > 0 ? 3.0 * view.shape().send_interval_s : 0.0;
   return delay_s * 1e3 + net.rtt_ms / 2.0;
-}
-
-render::HudStats hud_stats(double fps, const StreamView& view, const NetworkStats& net, double delay_ms) {
-  char extra[160];
-  std::snprintf(extra, sizeof extra, "%s %s grid %d rx %llu reconnects %llu", net.connected ? "connected" : "reconnecting",
-                net.path.c_str(), view.shape().grid, static_cast<unsigned long long>(net.frames_received),
-                static_cast<unsigned long long>(net.connects > 0 ? net.connects - 1 : 0));
-  return {fps, net.kbps, delay_ms + net.rtt_ms / 2.0, net.loss_pct, view.shape().profile, extra};
-}
-
-void fill_summary(ViewerSummary& s, int frames, double seconds, const StreamView& view, NetworkThread& net,
-                  double delay_ms) {
-  s.frames = frames;
-  s.seconds = seconds;
-  s.fps = seconds > 0 ? frames / seconds : 0.0;
-  s.net = net.stats();
-  s.profile = view.shape().profile;
-  s.grid = view.shape().grid;
-  s.grid_changes = view.grid_changes();
-  s.uploads = view.uploads();
-  s.held_frames = view.held_frames();
-  const client::TimelineCounters tc = net.timeline().counters();
-  s.timeline_stalls = tc.stalls;
-  s.frames_late = tc.frames_late;
-  s.decode_ms_per_frame = frames ? s.net.cpu_ms / frames : 0.0;
-  s.upload_ms_per_frame = frames ? view.upload_cpu_ms() / frames : 0.0;
-  s.cpu_ms_per_frame = s.decode_ms_per_frame + s.upload_ms_per_frame;
-  s.latency_ms = delay_ms + s.net.rtt_ms / 2.0;
 }
 
 double interpolation_delay_ms(const ViewerOptions& o, const StreamView& view) {
@@ -70,11 +25,107 @@ double interpolation_delay_ms(const ViewerOptions& o, const StreamView& view) {
   return latency_ms(view, {});
 }
 
-// Reasons are free text; JSON strings may not hold quotes, backslashes or control characters.
-std::string json_safe(std::string text) {
-  for (char& c : text)
-    if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20) c = '\'';
-  return text;
+std::string no_first_frame_reason(const ViewerOptions& o, const NetworkStats& s) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "no frame from %s:%s within %.1f s (--first-frame-timeout); connects %llu%s%s",
+                o.host.c_str(), o.port.c_str(), o.first_frame_timeout_s, static_cast<unsigned long long>(s.connects),
+                s.last_close_reason.empty() ? "" : ", last close: ", s.last_close_reason.c_str());
+  std::string reason = buf;
+  std::snprintf(buf, sizeof buf, "; last session: %llu chunks received, %llu refused by the codec, %llu messages rejected, "
+                "%llu keyframe requests", static_cast<unsigned long long>(s.chunks_received),
+                static_cast<unsigned long long>(s.chunks_rejected), static_cast<unsigned long long>(s.messages_rejected),
+                static_cast<unsigned long long>(s.keyframe_requests));
+  return reason + buf;
+}
+
+// The stream an ocean-server sends: received on the NetworkThread, blended and uploaded by the
+// StreamView at each frame's time on the connection's clock.
+class NetworkSource final : public FrameSource {
+ public:
+  NetworkSource(const ViewerOptions& options, NetworkThreadConfig config) : options_(options), net_(std::move(config)) {}
+
+  bool init(std::string& error) override {
+    return view_.init(options_.renderer_desc(), options_.camera_pose(), error);
+  }
+  void start() override { net_.start(); }
+  bool wait_for_first_frame(std::string& error) override {
+    if (net_.wait_for_first_frame(options_.first_frame_timeout_s)) return true;
+    error = no_first_frame_reason(options_, net_.stats());
+    return false;
+  }
+  double frame_time_s(int, double) const override { return client::ClientConnection::now_s(); }
+  bool update(double t_s, std::string& error) override {
+    if (view_.update(net_, t_s)) return true;
+    error = view_.error();
+    return false;
+  }
+  render::HudStats hud_stats(double fps) const override;
+  void stop() override {
+    if (stopped_) return;
+    bytes_before_stop_ = net_.stats().bytes_in;  // what arrived while frames were rendered
+    net_.stop();
+    stopped_ = true;
+  }
+  ViewScene& scene() override { return view_.scene(); }
+
+  void fill_summary(ViewerSummary& summary, const LoopResult& loop);
+
+ private:
+  const ViewerOptions& options_;
+  NetworkThread net_;
+  StreamView view_;
+  bool stopped_ = false;
+  std::uint64_t bytes_before_stop_ = 0;
+};
+
+render::HudStats NetworkSource::hud_stats(double fps) const {
+  const NetworkStats net = net_.stats();
+  char extra[160];
+  std::snprintf(extra, sizeof extra, "%s %s grid %d rx %llu reconnects %llu", net.connected ? "connected" : "reconnecting",
+                net.path.c_str(), view_.shape().grid, static_cast<unsigned long long>(net.frames_received),
+                static_cast<unsigned long long>(net.connects > 0 ? net.connects - 1 : 0));
+  const double delay_ms = interpolation_delay_ms(options_, view_);
+  return {fps, net.kbps, delay_ms + net.rtt_ms / 2.0, net.loss_pct, view_.shape().profile, extra};
+}
+
+void NetworkSource::fill_summary(ViewerSummary& s, const LoopResult& loop) {
+  const int frames = loop.frames;
+  s.frames = frames;
+  s.seconds = loop.seconds;
+  s.fps = loop.seconds > 0 ? frames / loop.seconds : 0.0;
+  s.kbps = loop.seconds > 0 ? bytes_before_stop_ * 8.0 / 1000.0 / loop.seconds : 0.0;
+  s.net = net_.stats();
+  s.profile = view_.shape().profile;
+  s.grid = view_.shape().grid;
+  s.grid_changes = view_.grid_changes();
+  s.uploads = view_.uploads();
+  s.held_frames = view_.held_frames();
+  const client::TimelineCounters tc = net_.timeline().counters();
+  s.timeline_stalls = tc.stalls;
+  s.frames_late = tc.frames_late;
+  s.decode_ms_per_frame = frames ? s.net.cpu_ms / frames : 0.0;
+  s.upload_ms_per_frame = frames ? view_.upload_cpu_ms() / frames : 0.0;
+  s.cpu_ms_per_frame = s.decode_ms_per_frame + s.upload_ms_per_frame;
+  s.latency_ms = interpolation_delay_ms(options_, view_) + s.net.rtt_ms / 2.0;
+  if (loop.screenshot_written) s.screenshot = options_.screenshot;
+  s.gl = loop.gl;
+}
+
+LoopSettings loop_settings(const ViewerOptions& o) {
+  return {"ocean-viewer", o.width, o.height, o.headless && o.frames <= 0 ? kHeadlessDefaultFrames : o.frames,
+          o.screenshot, o.hud};
+}
+
+using LoopFunction = int (*)(FrameSource&, const LoopSettings&, LoopResult&, std::string&);
+
+int run_with(LoopFunction loop, const ViewerOptions& o, ViewerSummary& summary, std::string& error) {
+  NetworkThreadConfig net_config;
+  if (!make_network_config(o, net_config, error)) return 1;
+  auto source = std::make_unique<NetworkSource>(o, std::move(net_config));
+  LoopResult result;
+  const int code = loop(*source, loop_settings(o), result, error);
+  if (code == 0) source->fill_summary(summary, result);
+  return code;
 }
 
 }  // namespace
@@ -107,130 +158,27 @@ bool make_network_config(const ViewerOptions& o, NetworkThreadConfig& config, st
 }
 
 int run_headless(const ViewerOptions& o, ViewerSummary& summary, std::string& error) {
-  NetworkThreadConfig net_config;
-  if (!make_network_config(o, net_config, error)) return 1;
-  HeadlessContext context;
-  if (!context.create(error)) {
-    error = "headless GL context: " + error;
-    return 1;
-  }
-  auto view = std::make_unique<StreamView>();
-  render::OffscreenTarget target;
-  if (!view->init(renderer_desc(o), camera_pose(o), error) || !target.create(o.width, o.height, error)) return 1;
-  summary.gl = context.description();
-
-  NetworkThread net(net_config);
-  net.start();
-  if (!net.wait_for_first_frame(o.first_frame_timeout_s)) {
-    const NetworkStats s = net.stats();
-    net.stop();
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "no frame from %s:%s within %.1f s (--first-frame-timeout); connects %llu%s%s",
-                  o.host.c_str(), o.port.c_str(), o.first_frame_timeout_s, static_cast<unsigned long long>(s.connects),
-                  s.last_close_reason.empty() ? "" : ", last close: ", s.last_close_reason.c_str());
-    error = buf;
-    std::snprintf(buf, sizeof buf, "; last session: %llu chunks received, %llu refused by the codec, %llu messages rejected, "
-                  "%llu keyframe requests", static_cast<unsigned long long>(s.chunks_received),
-                  static_cast<unsigned long long>(s.chunks_rejected), static_cast<unsigned long long>(s.messages_rejected),
-                  static_cast<unsigned long long>(s.keyframe_requests));
-    error += buf;
-    return 1;
-  }
-  const int frames = o.frames > 0 ? o.frames : 300;
-  const auto start = Clock::now();
-  for (int i = 0; i < frames; ++i) {
-    const double now = client::ClientConnection::now_s();
-    if (!view->update(net, now)) {
-      error = view->error();
-      net.stop();
-      return 1;
-    }
-    target.bind();
-    view->renderer().draw(view->camera(), o.width, o.height, now);
-    if (o.hud) {
-      const double elapsed = seconds_since(start);
-      view->hud().draw(hud_stats(elapsed > 0 ? (i + 1) / elapsed : 0.0, *view, net.stats(), interpolation_delay_ms(o, *view)),
-                       o.width, o.height);
-    }
-    glFinish();  // count the rasterisation in the frame time, as a swap would
-  }
-  const double seconds = seconds_since(start);
-  const std::uint64_t bytes_before_stop = net.stats().bytes_in;
-  net.stop();
-  fill_summary(summary, frames, seconds, *view, net, interpolation_delay_ms(o, *view));
-  summary.kbps = seconds > 0 ? bytes_before_stop * 8.0 / 1000.0 / seconds : 0.0;
-  if (!o.screenshot.empty()) {
-    if (!write_png(o.screenshot, o.width, o.height, render::read_framebuffer_rgba(o.width, o.height), error)) return 1;
-    summary.screenshot = o.screenshot;
-  }
-  return 0;
+  return run_with(run_headless_loop, o, summary, error);
 }
 
 int run_window(const ViewerOptions& o, ViewerSummary& summary, std::string& error) {
-  NetworkThreadConfig net_config;
-  if (!make_network_config(o, net_config, error)) return 1;
-  AppWindow window;
-  if (!window.open({o.width, o.height, "ocean-viewer", true}, error)) return 1;
-  auto view = std::make_unique<StreamView>();
-  if (!view->init(renderer_desc(o), camera_pose(o), error)) return 1;
-  NetworkThread net(net_config);
-  net.start();
-  const auto start = Clock::now();
-  auto last = start;
-  FpsMeter fps_meter;
-  int frame = 0;
-  while (!window.should_close() && (o.frames <= 0 || frame < o.frames)) {
-    const auto now = Clock::now();
-    const double dt = std::chrono::duration<double>(now - last).count();
-    last = now;
-    const double fps = fps_meter.tick(std::chrono::duration<double>(now - start).count());
-    render::apply_fly_input(view->camera(), window.poll(), dt);
-    const double t = client::ClientConnection::now_s();
-    if (!view->update(net, t)) {
-      error = view->error();
-      net.stop();
-      return 1;
-    }
-    int w = 0, h = 0;
-    window.framebuffer_size(w, h);
-    view->renderer().draw(view->camera(), w, h, t);
-    if (window.hud_visible()) view->hud().draw(hud_stats(fps, *view, net.stats(), interpolation_delay_ms(o, *view)), w, h);
-    ++frame;
-    if (!o.screenshot.empty() && o.frames > 0 && frame == o.frames) {
-      if (write_png(o.screenshot, w, h, render::read_framebuffer_rgba(w, h), error))
-        summary.screenshot = o.screenshot;
-      else
-        std::fprintf(stderr, "ocean-viewer: %s\n", error.c_str());
-    }
-    window.swap();
-  }
-  const double seconds = seconds_since(start);
-  const std::uint64_t bytes = net.stats().bytes_in;
-  net.stop();
-  fill_summary(summary, frame, seconds, *view, net, interpolation_delay_ms(o, *view));
-  summary.kbps = seconds > 0 ? bytes * 8.0 / 1000.0 / seconds : 0.0;
-  return 0;
+  return run_with(run_window_loop, o, summary, error);
 }
 
 std::string summary_json(const ViewerSummary& s) {
-  char buf[2048];
-  std::snprintf(
-      buf, sizeof buf,
-      "{\"frames\": %d, \"fps\": %.2f, \"kbps\": %.1f, \"cpu_ms_per_frame\": %.4f, \"decode_ms_per_frame\": %.4f, "
-      "\"upload_ms_per_frame\": %.4f, \"profile\": \"%s\", \"grid\": %d, \"frames_received\": %llu, "
-      "\"latency_ms\": %.1f, \"rtt_ms\": %.2f, \"loss_pct\": %.2f, \"uploads\": %llu, \"held_frames\": %llu, "
-      "\"timeline_stalls\": %llu, \"frames_late\": %llu, \"grid_changes\": %llu, \"connects\": %llu, "
-      "\"transport\": \"%s\", \"frames_recorded\": %llu, \"decode_ms_per_received_frame\": %.4f, "
-      "\"last_close_reason\": \"%s\", \"seconds\": %.3f, \"screenshot\": \"%s\", \"gl\": \"%s\"}",
-      s.frames, s.fps, s.kbps, s.cpu_ms_per_frame, s.decode_ms_per_frame, s.upload_ms_per_frame, s.profile.c_str(),
-      s.grid, static_cast<unsigned long long>(s.net.frames_received), s.latency_ms, s.net.rtt_ms, s.net.loss_pct,
-      static_cast<unsigned long long>(s.uploads), static_cast<unsigned long long>(s.held_frames),
-      static_cast<unsigned long long>(s.timeline_stalls), static_cast<unsigned long long>(s.frames_late),
-      static_cast<unsigned long long>(s.grid_changes), static_cast<unsigned long long>(s.net.connects),
-      s.net.path.c_str(), static_cast<unsigned long long>(s.net.frames_recorded),
-      s.net.frames_received ? s.net.cpu_ms / s.net.frames_received : 0.0, json_safe(s.net.last_close_reason).c_str(), s.seconds, s.screenshot.c_str(),
-      s.gl.c_str());
-  return buf;
+  common::JsonWriter json;
+  json.integer("frames", s.frames).fixed("fps", s.fps, 2).fixed("kbps", s.kbps, 1);
+  json.fixed("cpu_ms_per_frame", s.cpu_ms_per_frame, 4).fixed("decode_ms_per_frame", s.decode_ms_per_frame, 4);
+  json.fixed("upload_ms_per_frame", s.upload_ms_per_frame, 4).text("profile", s.profile).integer("grid", s.grid);
+  json.integer("frames_received", s.net.frames_received).fixed("latency_ms", s.latency_ms, 1);
+  json.fixed("rtt_ms", s.net.rtt_ms, 2).fixed("loss_pct", s.net.loss_pct, 2).integer("uploads", s.uploads);
+  json.integer("held_frames", s.held_frames).integer("timeline_stalls", s.timeline_stalls);
+  json.integer("frames_late", s.frames_late).integer("grid_changes", s.grid_changes).integer("connects", s.net.connects);
+  json.text("transport", s.net.path).integer("frames_recorded", s.net.frames_recorded);
+  json.fixed("decode_ms_per_received_frame", s.net.frames_received ? s.net.cpu_ms / s.net.frames_received : 0.0, 4);
+  json.text("last_close_reason", s.net.last_close_reason).fixed("seconds", s.seconds, 3);
+  json.text("screenshot", s.screenshot).text("gl", s.gl);
+  return json.str();
 }
 
 }  // namespace ocean::viewer

@@ -1,5 +1,5 @@
-// The networked viewer's two front ends over one NetworkThread and one StreamView: headless (EGL,
-// N frames, screenshot, a summary) and the GLFW window. main() only parses and picks one.
+// The networked viewer: its FrameSource (a NetworkThread feeding a StreamView) run by the shared
+// headless and window loops (viewer_loops.hpp), and its summary. main() only parses and picks one.
 #pragma once
 
 #include <cstdint>

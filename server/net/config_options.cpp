@@ -2,12 +2,14 @@
 
 #include "epoch.hpp"
 #include "quoted.hpp"
+#include "scene_names.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace ocean::server {
@@ -70,18 +72,19 @@ std::string show_optional_address(const std::optional<ListenAddress>& address, c
   return address ? address->to_string() : absent;
 }
 
-const char* spectrum_name(sim::SpectrumKind kind) {
-  return kind == sim::SpectrumKind::jonswap ? "jonswap" : "phillips";
+// Sets target from one of the names in sim's table (scene_names.hpp).
+template <typename Kind>
+std::string apply_name(Kind& target, std::string_view value, std::optional<Kind> (*from_name)(std::string_view),
+                       std::vector<std::string> (*names)()) {
+  const std::optional<Kind> kind = from_name(value);
+  if (!kind) return quoted(value) + " is not one of " + sim::join_names(names());
+  target = *kind;
+  return {};
 }
 
-const char* spreading_name(sim::SpreadingKind kind) {
-  switch (kind) {
-    case sim::SpreadingKind::cos2s: return "cos2s";
-    case sim::SpreadingKind::hasselmann: return "hasselmann";
-    case sim::SpreadingKind::donelan_banner: break;
-  }
-  return "donelan-banner";
-}
+// The value names --help shows: "phillips|jonswap" and "cos2s|donelan-banner|hasselmann".
+const std::string kSpectrumChoices = sim::join_names(sim::spectrum_names(), "|", "|");
+const std::string kSpreadingChoices = sim::join_names(sim::spreading_names(), "|", "|");
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -125,23 +128,16 @@ const ConfigOption kOptions[] = {
        return error;
      },
      [](const ServerConfig& c) { return show_number(c.scene.patch_x_m); }},
-    {"spectrum", "phillips|jonswap", "wave spectrum", ValueKind::text, true,
-     [](ServerConfig& c, std::string_view v) -> std::string {
-       if (v == "phillips") c.scene.spectrum = sim::SpectrumKind::phillips;
-       else if (v == "jonswap") c.scene.spectrum = sim::SpectrumKind::jonswap;
-       else return quoted(v) + " is not one of phillips, jonswap";
-       return {};
+    {"spectrum", kSpectrumChoices, "wave spectrum", ValueKind::text, true,
+     [](ServerConfig& c, std::string_view v) {
+       return apply_name(c.scene.spectrum, v, sim::spectrum_from_name, sim::spectrum_names);
      },
-     [](const ServerConfig& c) { return std::string(spectrum_name(c.scene.spectrum)); }},
-    {"spreading", "cos2s|donelan-banner|hasselmann", "directional spreading (JONSWAP only)", ValueKind::text, true,
-     [](ServerConfig& c, std::string_view v) -> std::string {
-       if (v == "cos2s") c.scene.spreading = sim::SpreadingKind::cos2s;
-       else if (v == "donelan-banner") c.scene.spreading = sim::SpreadingKind::donelan_banner;
-       else if (v == "hasselmann") c.scene.spreading = sim::SpreadingKind::hasselmann;
-       else return quoted(v) + " is not one of cos2s, donelan-banner, hasselmann";
-       return {};
+     [](const ServerConfig& c) { return std::string(sim::spectrum_name(c.scene.spectrum)); }},
+    {"spreading", kSpreadingChoices, "directional spreading (JONSWAP only)", ValueKind::text, true,
+     [](ServerConfig& c, std::string_view v) {
+       return apply_name(c.scene.spreading, v, sim::spreading_from_name, sim::spreading_names);
      },
-     [](const ServerConfig& c) { return std::string(spreading_name(c.scene.spreading)); }},
+     [](const ServerConfig& c) { return std::string(sim::spreading_name(c.scene.spreading)); }},
     {"wind-speed", "M/S", "wind speed U10 in m/s, in [0, 100]", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.wind_speed_mps); },
      [](const ServerConfig& c) { return show_number(c.scene.wind_speed_mps); }},

@@ -1,6 +1,7 @@
 // Server: owns the network io_context and everything on it (signals, the client TCP acceptor and
 // UDP socket, the metrics endpoint) plus the tick loop on its own simulation thread. Frames reach
-// the network thread through a small queue; sessions (phase 2) plug in through the three handlers.
+// the network thread through a small queue; the session hub plugs in through the frame, connection,
+// datagram and stop handlers.
 #pragma once
 
 #include "bounded_queue.hpp"

@@ -18,7 +18,7 @@ class ServerMetrics {
   Counter& ticks_late;       // ticks run after the following tick was already due
   Counter& ticks_skipped;    // ticks never run (catch-up policy jumped over them)
   Summary& tick_seconds;     // simulation time per tick, all profiles
-  Summary& encode_seconds;   // encoder time per frame (phase 2)
+  Summary& encode_seconds;   // encoder time of one profile stream in a tick that encoded
   Counter& frames_dropped;   // computed frames the network side had no room for
   Gauge& current_tick;       // the last tick index run
   Counter& scene_changes;    // scheduled scene changes applied

@@ -2,6 +2,7 @@
 #include "scene_params.hpp"
 
 #include "param_message.hpp"
+#include "scene_names.hpp"
 
 #include <cmath>
 
@@ -9,6 +10,12 @@ namespace ocean::sim {
 namespace {
 
 bool power_of_two_in(int n, int lo, int hi) { return n >= lo && n <= hi && (n & (n - 1)) == 0; }
+
+// "phillips (0) or jonswap (1)": the valid names with the enum values a bad value is shown against.
+std::string numbered(std::vector<std::string> names) {
+  for (std::size_t i = 0; i < names.size(); ++i) names[i] += " (" + std::to_string(i) + ")";
+  return join_names(names, ", ", " or ");
+}
 
 }  // namespace
 
@@ -21,12 +28,10 @@ std::string validate(const SceneParams& p) {
     return bad_param("patch_x_m", p.patch_x_m, "[0.01, 1e6] metres");
   if (!(std::isfinite(p.patch_z_m) && p.patch_z_m >= 0.01 && p.patch_z_m <= 1e6))
     return bad_param("patch_z_m", p.patch_z_m, "[0.01, 1e6] metres");
-  if (p.spectrum != SpectrumKind::phillips && p.spectrum != SpectrumKind::jonswap)
-    return bad_param("spectrum", static_cast<int>(p.spectrum), "phillips (0) or jonswap (1)");
-  if (p.spreading != SpreadingKind::cos2s && p.spreading != SpreadingKind::donelan_banner &&
-      p.spreading != SpreadingKind::hasselmann)
-    return bad_param("spreading", static_cast<int>(p.spreading),
-                     "cos2s (0), donelan_banner (1) or hasselmann (2)");
+  if (spectrum_name(p.spectrum).empty())
+    return bad_param("spectrum", static_cast<int>(p.spectrum), numbered(spectrum_names()));
+  if (spreading_name(p.spreading).empty())
+    return bad_param("spreading", static_cast<int>(p.spreading), numbered(spreading_names()));
   // 100 m/s is beyond any hurricane; larger values only overflow the JONSWAP constants.
   if (!(p.wind_speed_mps >= 0.0 && p.wind_speed_mps <= 100.0))
     return bad_param("wind_speed_mps", p.wind_speed_mps, "[0, 100] m/s");

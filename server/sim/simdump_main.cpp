@@ -2,15 +2,17 @@
 // hash of every field's bytes (--hash, for the cross-process determinism test) or both as JSON.
 #include "frame_hash.hpp"
 #include "ocean.hpp"
+#include "scene_names.hpp"
 
 #include <CLI/CLI.hpp>
+
+#include "common/json_writer.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -29,8 +31,8 @@ struct Options {
   bool choppy = false;
   bool no_slopes = false;
   double lambda = 1.0;
-  std::string spectrum = "phillips";
-  std::string spreading = "donelan-banner";
+  std::string spectrum = std::string(ocean::sim::spectrum_name(SceneParams{}.spectrum));
+  std::string spreading = std::string(ocean::sim::spreading_name(SceneParams{}.spreading));
   bool summary = false;
   bool hash = false;
   bool json = false;
@@ -96,7 +98,9 @@ void print_summary(const ocean::sim::Ocean& ocean, const Options& o, const Tick&
   std::printf("  grid       %d x %d%s\n", f.n_x, f.n_z, o.band ? " (band of the full grid)" : " (full frame)");
   std::printf("  full grid  %d x %d over a %g x %g m patch (dx = %g m)\n", p.size_x, p.size_z, p.patch_x_m,
               p.patch_z_m, p.patch_x_m / f.n_x);
-  const std::string spectrum_name = o.spectrum == "jonswap" ? o.spectrum + " (" + o.spreading + ")" : o.spectrum;
+  std::string spectrum_name(ocean::sim::spectrum_name(p.spectrum));
+  if (p.spectrum == ocean::sim::SpectrumKind::jonswap)
+    spectrum_name += " (" + std::string(ocean::sim::spreading_name(p.spreading)) + ")";
   std::printf("  spectrum   %s, wind %g m/s towards %g deg, fetch %g m, amplitude %g, depth %g m, seed %" PRIu64
               "\n",
               spectrum_name.c_str(), p.wind_speed_mps, p.wind_dir_deg, p.fetch_m, p.amplitude, p.depth_m, p.seed);
@@ -119,12 +123,16 @@ void print_summary(const ocean::sim::Ocean& ocean, const Options& o, const Tick&
 void print_json(const ocean::sim::Ocean& ocean, const Options& o, const Tick& tick) {
   const Frame& f = tick.frame;
   const FieldStats h = stats(f.height);
-  std::printf("{\"n_x\":%d,\"n_z\":%d,\"time_s\":%.17g,\"spectrum\":\"%s\",\"height_min\":%.9g,\"height_max\":%.9g,"
-              "\"height_std\":%.9g,\"hs\":%.9g,\"expected_hs\":%.9g,\"max_slope\":%.9g,\"tick_ms\":%.4f,"
-              "\"transforms\":%d,\"hash\":\"%016" PRIx64 "\"}\n",
-              f.n_x, f.n_z, f.time_s, o.spectrum.c_str(), h.min, h.max, h.std, 4.0 * h.std,
-              4.0 * std::sqrt(ocean.expected_variance()), max_slope(f), tick.median_ms,
-              ocean.transform_count({!o.no_slopes, o.choppy}), ocean::sim::frame_hash(f));
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016" PRIx64, ocean::sim::frame_hash(f));
+  ocean::common::JsonWriter json(ocean::common::JsonWriter::Style::compact);
+  json.integer("n_x", f.n_x).integer("n_z", f.n_z).number("time_s", f.time_s, 17);
+  json.text("spectrum", ocean::sim::spectrum_name(ocean.params().spectrum));
+  json.number("height_min", h.min, 9).number("height_max", h.max, 9).number("height_std", h.std, 9);
+  json.number("hs", 4.0 * h.std, 9).number("expected_hs", 4.0 * std::sqrt(ocean.expected_variance()), 9);
+  json.number("max_slope", max_slope(f), 9).fixed("tick_ms", tick.median_ms, 4);
+  json.integer("transforms", ocean.transform_count({!o.no_slopes, o.choppy})).text("hash", hash);
+  std::printf("%s\n", json.str().c_str());
 }
 
 }  // namespace
@@ -146,11 +154,12 @@ int main(int argc, char** argv) {
   app.add_option("--lambda", o.lambda, "choppiness used with --choppy")->capture_default_str();
   app.add_flag("--no-slopes", o.no_slopes, "skip the slope fields");
   app.add_option("--seed", s.seed, "random seed of h0");
-  app.add_option("--spectrum", o.spectrum, "phillips or jonswap")
-      ->check(CLI::IsMember({"phillips", "jonswap"}))
+  using ocean::sim::join_names;
+  app.add_option("--spectrum", o.spectrum, join_names(ocean::sim::spectrum_names(), ", ", " or "))
+      ->check(CLI::IsMember(ocean::sim::spectrum_names()))
       ->capture_default_str();
-  app.add_option("--spreading", o.spreading, "JONSWAP spreading: cos2s, donelan-banner or hasselmann")
-      ->check(CLI::IsMember({"cos2s", "donelan-banner", "hasselmann"}))
+  app.add_option("--spreading", o.spreading, "JONSWAP spreading: " + join_names(ocean::sim::spreading_names(), ", ", " or "))
+      ->check(CLI::IsMember(ocean::sim::spreading_names()))
       ->capture_default_str();
   app.add_option("--wind", s.wind_speed_mps, "wind speed U10 in m/s")->capture_default_str();
   app.add_option("--wind-dir", s.wind_dir_deg, "direction the wind blows towards, degrees from +x to +z");
@@ -162,12 +171,8 @@ int main(int argc, char** argv) {
 
   if (o.size) s.size_x = s.size_z = o.size;
   if (o.patch_m) s.patch_x_m = s.patch_z_m = o.patch_m;
-  s.spectrum = o.spectrum == "jonswap" ? ocean::sim::SpectrumKind::jonswap : ocean::sim::SpectrumKind::phillips;
-  const std::map<std::string, ocean::sim::SpreadingKind> spreadings = {
-      {"cos2s", ocean::sim::SpreadingKind::cos2s},
-      {"donelan-banner", ocean::sim::SpreadingKind::donelan_banner},
-      {"hasselmann", ocean::sim::SpreadingKind::hasselmann}};
-  s.spreading = spreadings.at(o.spreading);
+  s.spectrum = *ocean::sim::spectrum_from_name(o.spectrum);  // IsMember checked the names
+  s.spreading = *ocean::sim::spreading_from_name(o.spreading);
   s.choppiness = o.choppy ? o.lambda : 0.0;
 
   try {

@@ -11,13 +11,14 @@
 #include <CLI/CLI.hpp>
 #include <zstd.h>
 
+#include "common/json_writer.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <map>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -53,20 +54,20 @@ struct Tally {
 // The minimum is reported next to the median: on a shared machine it is the steadier figure.
 double min_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
 
-std::string common_json(const Tally& t, const Profile& p, int n) {
+// The fields every method reports; ours adds its own before printing.
+common::JsonWriter common_json(const Tally& t, const Profile& p, int n) {
   const double seconds = t.frames / p.rate_hz;
   const double kbps = t.bytes * 8.0 / seconds / 1000.0;
-  std::ostringstream o;
-  o.precision(6);
-  o << "{\"bench\":\"codec\",\"profile\":\"" << p.name << "\",\"method\":\"" << t.method << "\"";
-  if (t.lag) o << ",\"lag\":" << t.lag;
-  o << ",\"grid\":" << n << ",\"rate_hz\":" << p.rate_hz << ",\"frames\":" << t.frames << ",\"kbps\":" << kbps
-    << ",\"bits_per_sample\":" << t.bytes * 8.0 / (t.frames * n * n) << ",\"max_err_m\":" << t.max_err
-    << ",\"rms_err_m\":" << std::sqrt(t.sum_sq / std::max(1.0, t.count)) << ",\"max_slope_err\":" << t.max_slope_err
-    << ",\"height_step_m\":" << p.height_step_m << ",\"slope_step\":" << p.slope_step
-    << ",\"encode_us\":" << bench::median(t.enc_us) << ",\"decode_us\":" << bench::median(t.dec_us)
-    << ",\"encode_us_min\":" << min_of(t.enc_us) << ",\"decode_us_min\":" << min_of(t.dec_us);
-  return o.str();
+  common::JsonWriter json(common::JsonWriter::Style::compact);
+  json.text("bench", "codec").text("profile", p.name).text("method", t.method);
+  if (t.lag) json.integer("lag", t.lag);
+  json.integer("grid", n).integer("rate_hz", p.rate_hz).number("frames", t.frames).number("kbps", kbps);
+  json.number("bits_per_sample", t.bytes * 8.0 / (t.frames * n * n)).number("max_err_m", t.max_err);
+  json.number("rms_err_m", std::sqrt(t.sum_sq / std::max(1.0, t.count))).number("max_slope_err", t.max_slope_err);
+  json.number("height_step_m", p.height_step_m).number("slope_step", p.slope_step);
+  json.number("encode_us", bench::median(t.enc_us)).number("decode_us", bench::median(t.dec_us));
+  json.number("encode_us_min", min_of(t.enc_us)).number("decode_us_min", min_of(t.dec_us));
+  return json;
 }
 
 // ---- baselines --------------------------------------------------------------------------------
@@ -131,6 +132,34 @@ struct Ours {
   double height_bits = 0, slope_bits = 0;
   bool bitwise = true;
 };
+
+// Prints one JSON line per method; returns how many of ours failed the goal (within the error
+// bound, at most half of delta_zstd's bitrate, decoded bit for bit as encoded).
+int print_results(const Profile& p, int n, const Tally& raw, const Tally& q16z, const Tally& delta,
+                  const std::vector<Ours>& ours) {
+  int failures = 0;
+  for (const Tally* t : {&raw, &q16z, &delta}) std::printf("%s\n", common_json(*t, p, n).str().c_str());
+  const double delta_kbps = delta.bytes * 8.0 / (delta.frames / p.rate_hz) / 1000.0;
+  for (const Ours& o : ours) {
+    const double secs = o.tally.frames / p.rate_hz;
+    const double kbps = o.tally.bytes * 8.0 / secs / 1000.0;
+    const bool within = o.tally.max_err <= 0.5 * double(p.height_step_m) &&
+                        o.tally.max_slope_err <= 0.5 * double(p.slope_step);
+    const bool pass = within && kbps <= 0.5 * delta_kbps && o.bitwise;
+    failures += pass ? 0 : 1;
+    common::JsonWriter line = common_json(o.tally, p, n);
+    line.fixed("kbps_height", o.height_bits / secs / 1000.0, 4).fixed("kbps_slope", o.slope_bits / secs / 1000.0, 4);
+    line.fixed("kbps_overhead", kbps - (o.height_bits + o.slope_bits) / secs / 1000.0, 4);
+    line.integer("envelope_bytes_per_chunk", codec::kEnvelopeOverheadBytes);
+    line.fixed("chunks_per_frame", double(o.chunks) / o.tally.frames, 3);
+    line.fixed("payload_bytes_per_frame", double(o.payload) / o.tally.frames, 2);
+    line.fixed("corrections_per_frame", double(o.corrections) / o.tally.frames, 3);
+    line.integer("key_bytes", o.key_bytes).integer("key_chunks", o.key_chunks).boolean("bitwise_match", o.bitwise);
+    line.boolean("within_bound", within).boolean("half_of_delta_zstd", kbps <= 0.5 * delta_kbps);
+    std::printf("%s\n", line.str().c_str());
+  }
+  return failures;
+}
 
 int run_codec(int argc, char** argv) {
   std::string profiles_arg = "mobile,desktop";
@@ -304,25 +333,7 @@ int run_codec(int argc, char** argv) {
       }
     }
 
-    for (const Tally* t : {&raw, &q16z, &delta}) std::printf("%s}\n", common_json(*t, *p, n).c_str());
-    const double delta_kbps = delta.bytes * 8.0 / (delta.frames / p->rate_hz) / 1000.0;
-    for (const Ours& o : ours) {
-      const double secs = o.tally.frames / p->rate_hz;
-      const double kbps = o.tally.bytes * 8.0 / secs / 1000.0;
-      const bool within = o.tally.max_err <= 0.5 * double(p->height_step_m) &&
-                          o.tally.max_slope_err <= 0.5 * double(p->slope_step);
-      const bool pass = within && kbps <= 0.5 * delta_kbps && o.bitwise;
-      failures += pass ? 0 : 1;
-      std::printf("%s,\"kbps_height\":%.4f,\"kbps_slope\":%.4f,\"kbps_overhead\":%.4f,\"envelope_bytes_per_chunk\":%zu,"
-                  "\"chunks_per_frame\":%.3f,\"payload_bytes_per_frame\":%.2f,\"corrections_per_frame\":%.3f,"
-                  "\"key_bytes\":%zu,\"key_chunks\":%zu,\"bitwise_match\":%s,\"within_bound\":%s,"
-                  "\"half_of_delta_zstd\":%s}\n",
-                  common_json(o.tally, *p, n).c_str(), o.height_bits / secs / 1000.0, o.slope_bits / secs / 1000.0,
-                  kbps - (o.height_bits + o.slope_bits) / secs / 1000.0, codec::kEnvelopeOverheadBytes,
-                  double(o.chunks) / o.tally.frames, double(o.payload) / o.tally.frames,
-                  double(o.corrections) / o.tally.frames, o.key_bytes, o.key_chunks, o.bitwise ? "true" : "false",
-                  within ? "true" : "false", kbps <= 0.5 * delta_kbps ? "true" : "false");
-    }
+    failures += print_results(*p, n, raw, q16z, delta, ours);
     std::fflush(stdout);
   }
   (void)json;

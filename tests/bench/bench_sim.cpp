@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/json_writer.hpp"
+
 #include <cstdio>
 #include <ctime>
 #include <string>
@@ -90,10 +92,12 @@ int run_sim(int argc, char** argv) {
     const double fft_c = ocean::bench::median(fft_cpu);
     const int transforms = ocean.transform_count(request);
     if (json) {
-      std::printf("{\"bench\":\"sim\",\"size\":%d,\"iterations\":%d,\"tick_ms\":%.4f,\"fft_ms\":%.4f,\"ratio\":%.4f,"
-                  "\"transforms\":%d,\"tick_cpu_ms\":%.4f,\"fft_cpu_ms\":%.4f,\"ratio_cpu\":%.4f,\"band\":%d,"
-                  "\"band_tick_ms\":%.4f,\"threads\":1}\n",
-                  size, n, tick, fft, tick / fft, transforms, tick_c, fft_c, tick_c / fft_c, band_n, band_tick);
+      ocean::common::JsonWriter out(ocean::common::JsonWriter::Style::compact);
+      out.text("bench", "sim").integer("size", size).integer("iterations", n).fixed("tick_ms", tick, 4);
+      out.fixed("fft_ms", fft, 4).fixed("ratio", tick / fft, 4).integer("transforms", transforms);
+      out.fixed("tick_cpu_ms", tick_c, 4).fixed("fft_cpu_ms", fft_c, 4).fixed("ratio_cpu", tick_c / fft_c, 4);
+      out.integer("band", band_n).fixed("band_tick_ms", band_tick, 4).integer("threads", 1);
+      std::printf("%s\n", out.str().c_str());
     } else {
       std::printf("sim %4dx%-4d tick %.3f ms  bare FFTs %.3f ms (%d c2r)  ratio %.3f  (CPU time: %.3f / %.3f = %.3f)"
                   "  | %dx%d band tick %.3f ms  [median of %d]\n",

@@ -3,6 +3,7 @@
 // is a clear error; a restarted server (even with another grid) is reconnected to and followed.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -156,7 +157,18 @@ TEST_CASE("the viewer reconnects to a restarted server, holds the picture meanwh
   config.connection.reconnect_max_s = 0.5;
   NetworkThread net(config);
   net.start();
-  const auto render = [&] { return view.update(net, client::ClientConnection::now_s()); };
+  // The byte count and rate the HUD shows stay sane across the restart: the count never goes back
+  // (it did: the ended session was counted twice until the next one began, then the rate underflowed).
+  std::uint64_t bytes_seen = 0;
+  bool bytes_went_back = false;
+  double max_kbps = 0.0;
+  const auto render = [&] {
+    const NetworkStats stats = net.stats();
+    bytes_went_back = bytes_went_back || stats.bytes_in < bytes_seen;
+    bytes_seen = std::max(bytes_seen, stats.bytes_in);
+    max_kbps = std::max(max_kbps, stats.kbps);
+    return view.update(net, client::ClientConnection::now_s());
+  };
 
   REQUIRE(wait_until([&] { return render() && view.uploads() >= 10; }, kPatienceS));
   CHECK(view.shape().grid == 64);
@@ -181,4 +193,6 @@ TEST_CASE("the viewer reconnects to a restarted server, holds the picture meanwh
   CHECK(server->sessions() == 1);
   net.stop();
   CHECK(net.stats().connects >= 2);
+  CHECK_FALSE(bytes_went_back);
+  CHECK(max_kbps < 1e5);  // the test streams are a few hundred kbit/s
 }

@@ -1,0 +1,30 @@
+// ViewScene: the renderer, HUD and camera every viewer front end draws with, set up the same way
+// from the same options (renderer distances, camera pose). Its GL objects belong to the context
+// current at init; release_gl() frees them while that context is still current.
+#pragma once
+
+#include <string>
+
+#include "client/render/camera.hpp"
+#include "client/render/hud_overlay.hpp"
+#include "client/render/renderer.hpp"
+
+namespace ocean::viewer {
+
+// Where the camera starts: above the origin at eye_height_m, looking along -z turned by yaw.
+struct CameraPose {
+  float eye_height_m = 10.0f, pitch_deg = -6.0f, yaw_deg = 0.0f;
+};
+
+struct ViewScene {
+  render::Renderer renderer;
+  render::HudOverlay hud;
+  render::Camera camera;
+
+  // Needs a current GL context. Inits the renderer and HUD and places the camera, its far plane
+  // beyond the renderer's view distance. False with a reason.
+  bool init(const render::RendererDesc& desc, const CameraPose& pose, std::string& error);
+  void release_gl();
+};
+
+}  // namespace ocean::viewer
