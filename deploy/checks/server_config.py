@@ -10,7 +10,8 @@ def server_options(deploy_dir):
     source = deploy_dir.parent / "server" / "net" / "config_options.cpp"
     if not source.is_file():
         return None
-    entry = re.compile(r'\{"([a-z0-9-]+)",\s*"[^"]*",\s*"(?:[^"\\]|\\.)*",\s*ValueKind::\w+,\s*(true|false)')
+    # The value name is a string literal or a named constant (the sim's name lists).
+    entry = re.compile(r'\{"([a-z0-9-]+)",\s*(?:"[^"]*"|\w+),\s*"(?:[^"\\]|\\.)*",\s*ValueKind::\w+,\s*(true|false)')
     options = {m.group(1): m.group(2) == "true" for m in entry.finditer(source.read_text())}
     return options or None
 
