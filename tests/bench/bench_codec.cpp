@@ -5,6 +5,9 @@
 
 #include "decoder.hpp"
 #include "encoder.hpp"
+#include "frame_records.hpp"
+#include "stream_wire.hpp"
+#include "wire_params.hpp"
 #include "ocean.hpp"
 #include "profile.hpp"
 
@@ -127,8 +130,13 @@ struct Ours {
   Tally tally;
   std::unique_ptr<codec::Encoder> enc;
   std::unique_ptr<codec::Decoder> dec;
-  std::map<std::uint32_t, codec::StateId> ids;
+  std::map<Tick, codec::StateId> ids;
   std::size_t key_bytes = 0, key_chunks = 0, chunks = 0, payload = 0, corrections = 0;
+  std::size_t key_bytes_explicit = 0;  // the same key as version-1 coefficients, for comparison
+  // Bytes on the wire as ocean-server sends them: one frames datagram per chunk, plus 28 bytes of
+  // IPv4/UDP header each; `bundled`: each datagram also carries copies of the 2 frames before it.
+  double ip_bytes = 0, ip_bytes_bundled = 0;
+  std::vector<codec::Chunk> recent;  // the last two single-chunk frames, oldest first
   double height_bits = 0, slope_bits = 0;
   bool bitwise = true;
 };
@@ -154,7 +162,10 @@ int print_results(const Profile& p, int n, const Tally& raw, const Tally& q16z, 
     line.fixed("chunks_per_frame", double(o.chunks) / o.tally.frames, 3);
     line.fixed("payload_bytes_per_frame", double(o.payload) / o.tally.frames, 2);
     line.fixed("corrections_per_frame", double(o.corrections) / o.tally.frames, 3);
-    line.integer("key_bytes", o.key_bytes).integer("key_chunks", o.key_chunks).boolean("bitwise_match", o.bitwise);
+    line.fixed("kbps_ip", o.ip_bytes * 8.0 / secs / 1000.0, 3);
+    line.fixed("kbps_ip_redundancy2", o.ip_bytes_bundled * 8.0 / secs / 1000.0, 3);
+    line.integer("key_bytes", o.key_bytes).integer("key_chunks", o.key_chunks);
+    line.integer("key_bytes_explicit", o.key_bytes_explicit).boolean("bitwise_match", o.bitwise);
     line.boolean("within_bound", within).boolean("half_of_delta_zstd", kbps <= 0.5 * delta_kbps);
     std::printf("%s\n", line.str().c_str());
   }
@@ -203,6 +214,7 @@ int run_codec(int argc, char** argv) {
     }
     sim::SceneParams scene;
     sim::Ocean ocean(scene);
+    const codec::SceneModelParams model = codec::scene_model_params(server::wire_scene(scene));
     const int n = p->grid;
     const StreamConfig config = StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m);
     const int frames = std::max(8, static_cast<int>(seconds * p->rate_hz));
@@ -222,14 +234,35 @@ int run_codec(int argc, char** argv) {
       eo.history_ticks = 64;
       ours[i].enc = std::make_unique<codec::Encoder>(config, eo);
       ours[i].dec = std::make_unique<codec::Decoder>(config);
+      ours[i].enc->set_scene(0, 0, model);
+      ours[i].dec->add_scene(0, 0, model);
       ours[i].tally.method = "ours";
       ours[i].tally.lag = lags[i];
     }
 
     sim::Frame f;
     std::vector<float> h, sx, sz, normals(m * 4);
+    // Ticks as a server counts them about a year after its epoch: their varints cost what they
+    // cost in service.
+    constexpr Tick kTick0 = 1'000'000'000;
     for (int tick = 0; tick <= frames; ++tick) {
-      ocean.evaluate_band(double(tick) / p->rate_hz, n, n, f, sim::FrameRequest{true, false});
+      ocean.evaluate_band(codec::tick_time_s(static_cast<std::int64_t>(kTick0) + tick, p->rate_hz), n, n, f,
+                          sim::FrameRequest{true, false});
+      if (tick == 1) {  // the explicit (version 1) key of the same tick, for comparison
+        codec::EncoderOptions eo;
+        eo.key_precision_bits = key_bits;
+        eo.key_velocity_extra_bits = vel_bits;
+        eo.modeled_key_max_correction_share = -1.0;
+        codec::Encoder explicit_keys(config, eo);
+        explicit_keys.set_scene(0, 0, model);
+        sim::Frame before;
+        ocean.evaluate_band(codec::tick_time_s(static_cast<std::int64_t>(kTick0), p->rate_hz), n, n, before,
+                            sim::FrameRequest{true, false});
+        explicit_keys.add_truth(kTick0, {before.height, before.slope_x, before.slope_z});
+        explicit_keys.add_truth(kTick0 + 1, {f.height, f.slope_x, f.slope_z});
+        for (const Chunk& c : explicit_keys.encode_key(kTick0 + 1)->chunks)
+          for (Ours& o : ours) o.key_bytes_explicit += c.payload.size();
+      }
       const bool steady = tick >= 2;  // tick 1 is the key for ours; the baselines skip it too
 
       // raw_f32: height + unit normal (-sx, 1, -sz)/len per vertex.
@@ -295,7 +328,7 @@ int run_codec(int argc, char** argv) {
 
       // ours: key at tick 1 (its velocity needs tick 0), then deltas from tick - lag (tick 1 at first).
       for (Ours& o : ours) {
-        const std::uint32_t t = static_cast<std::uint32_t>(tick);
+        const Tick t = kTick0 + static_cast<Tick>(tick);
         t0 = bench::now_ms();
         o.enc->add_truth(t, {f.height, f.slope_x, f.slope_z});
         if (tick == 0) continue;
@@ -303,7 +336,7 @@ int run_codec(int argc, char** argv) {
         if (tick == 1)
           e = o.enc->encode_key(t);
         else
-          e = o.enc->encode_delta(t, o.ids.at(t > std::uint32_t(o.tally.lag) ? t - o.tally.lag : 1));
+          e = o.enc->encode_delta(t, o.ids.at(std::max<Tick>(kTick0 + 1, t - static_cast<Tick>(o.tally.lag))));
         t1 = bench::now_ms();
         o.ids[t] = e->id;
         for (const Chunk& c : e->chunks)
@@ -321,6 +354,19 @@ int run_codec(int argc, char** argv) {
           continue;
         }
         o.tally.bytes += double(bytes + e->chunks.size() * codec::kEnvelopeOverheadBytes);
+        for (const Chunk& c : e->chunks) {
+          const protocol::FrameRecord record{c.tick, c.baseline, c.key, c.index, c.count, c.payload};
+          o.ip_bytes += double(protocol::frames_datagram(std::span(&record, 1)).size() + codec::kIpUdpHeaderBytes);
+        }
+        if (e->chunks.size() == 1) {
+          std::vector<protocol::FrameRecord> bundle;
+          for (const Chunk& c : o.recent) bundle.push_back({c.tick, c.baseline, c.key, c.index, c.count, c.payload});
+          const Chunk& c = e->chunks.front();
+          bundle.push_back({c.tick, c.baseline, c.key, c.index, c.count, c.payload});
+          o.ip_bytes_bundled += double(protocol::frames_datagram(bundle).size() + codec::kIpUdpHeaderBytes);
+          o.recent.push_back(c);
+          if (o.recent.size() > 2) o.recent.erase(o.recent.begin());
+        }
         o.tally.frames += 1;
         o.payload += bytes;
         o.chunks += e->chunks.size();
