@@ -32,10 +32,12 @@ constexpr std::size_t max_chunk_payload(std::size_t max_message_bytes) {
 inline constexpr std::uint16_t kMaxChunksPerFrame = 4096;
 // Records in one frames datagram from ocean-server: the newest plus up to 7 unacknowledged copies.
 inline constexpr std::size_t kMaxBundleChunks = 8;
-// tick - baseline of a delta frame, in ticks: the client keeps the frames of its 32-tick ack
-// window, so a baseline at most this old is one it still holds (PROTOCOL.md section 7) - except
-// its newest complete frame (a key that arrived late on a thin link), which it keeps however old.
-inline constexpr std::uint32_t kMaxBaselineGap = 32;
+// tick - baseline of a delta frame, in ticks: the client keeps the frames of the 64 ticks before
+// its newest complete one, so a baseline at most this old is one it still holds (PROTOCOL.md
+// section 7) - except its newest complete frame (a key that arrived late on a thin link), which it
+// keeps however old. 64 ticks (2.1 s at 30 Hz) cover the acks of a 2G link (600+ ms round trip)
+// with room for jitter and queueing.
+inline constexpr std::uint32_t kMaxBaselineGap = 64;
 // The largest tick - baseline a record may carry (the decoder advances that many steps).
 inline constexpr std::uint32_t kMaxFrameLag = 1024;
 

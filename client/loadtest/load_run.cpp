@@ -1,5 +1,7 @@
 #include "load_run.hpp"
 
+#include "frame_timeline.hpp"
+
 #include <asio/io_context.hpp>
 #include <asio/steady_timer.hpp>
 #include <chrono>
@@ -166,8 +168,11 @@ class Driver {
     tally.clock().observe(tick, arrival_s);
     FrameOutcome outcome;
     outcome.within_bound = within_bound;
-    outcome.on_time = arrived_on_time(arrival_s, tick, *tally.clock().offset_s(), facts_.tick_period_s,
-                                      facts_.interpolation_delay_s);
+    // The viewer's jitter buffer (FrameTimeline) adds delay on a jittery link; judge by the same.
+    const double delay = client::FrameTimeline::adaptive_delay(
+        tally.clock(), facts_.interpolation_delay_s, static_cast<double>(facts_.interval_ticks) * facts_.tick_period_s);
+    max_delay_s_ = std::max(max_delay_s_, delay);
+    outcome.on_time = arrived_on_time(arrival_s, tick, *tally.clock().offset_s(), facts_.tick_period_s, delay);
     if (!tally.record(tick, outcome, error.height_m)) return;
     const double latency = now_unix - (facts_.epoch_s + truth_->time_of(tick));
     latency_all_.add(latency);
@@ -296,6 +301,7 @@ class Driver {
     if (server_cpu_start_ && server_cpu_end_ && wall > 0) s.server_cpu_pct = 100.0 * (*server_cpu_end_ - *server_cpu_start_) / wall;
     s.error_bound_m = facts_.bounds.height_m;
     s.interpolation_delay_ms = facts_.interpolation_delay_s * 1e3;
+    s.interpolation_delay_max_ms = max_delay_s_ * 1e3;
     const Tick last_tick = truth_ ? end_tick() : 0;
     double client_seconds = 0.0;
     std::vector<ClientConnectionFacts> facts(clients_.size());
@@ -360,6 +366,7 @@ class Driver {
   double cpu_start_ = 0.0, cpu_end_ = 0.0;
   std::optional<double> server_cpu_start_, server_cpu_end_;
   bool measuring_done_ = false;
+  double max_delay_s_ = 0.0;  // the largest jitter-adapted delay any client's frame was judged by
   int connected_at_end_ = 0;
   std::string record_error_;
   std::optional<FrameRecorder> recorder_;

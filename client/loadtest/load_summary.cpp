@@ -82,6 +82,7 @@ std::string to_json(const LoadSummary& s) {
   field("transport_fallbacks", u(s.transport_fallbacks));
   field("frames_recovered", u(s.frames_recovered));
   field("interpolation_delay_ms", num(s.interpolation_delay_ms));
+  field("interpolation_delay_max_ms", num(s.interpolation_delay_max_ms));
   field("duration_s", num(s.duration_s));
   field("profile", json_string(s.profile));
   field("transport", json_string(s.transport));
@@ -135,6 +136,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   row("clients without frame", std::to_string(s.clients_without_frame));
   row("latency p50/p99/max ms", num(s.latency_p50_ms) + " / " + num(s.latency_p99_ms) + " / " + num(s.latency_max_ms));
   row("interpolation delay ms", num(s.interpolation_delay_ms));
+  row("interpolation delay max ms", num(s.interpolation_delay_max_ms));
   row("server cpu %", s.server_cpu_pct ? num(*s.server_cpu_pct) : "(unknown: pass --server-pid)");
   row("loadtest cpu %", num(s.loadtest_cpu_pct));
 }

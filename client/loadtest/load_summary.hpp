@@ -38,7 +38,8 @@ struct LoadSummary {
   std::optional<double> ttff_max_s, ttff_p50_s;
   int clients_without_frame = 0;
   double latency_p50_ms = 0.0, latency_p99_ms = 0.0, latency_max_ms = 0.0;
-  double interpolation_delay_ms = 0.0;
+  double interpolation_delay_ms = 0.0;      // the base: three send intervals
+  double interpolation_delay_max_ms = 0.0;  // the most any client's jitter buffer added up to
   std::optional<double> server_cpu_pct;
   double loadtest_cpu_pct = 0.0;
   double duration_s = 0.0;

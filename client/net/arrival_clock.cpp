@@ -16,12 +16,18 @@ void ArrivalClock::observe(Tick tick, double arrival_s) {
   next_ = (next_ + 1) % offsets_.size();
   filled_ = std::min(filled_ + 1, offsets_.size());
   offset_ = *std::min_element(offsets_.begin(), offsets_.begin() + static_cast<std::ptrdiff_t>(filled_));
+  if (filled_ < 8) return;
+  sorted_.assign(offsets_.begin(), offsets_.begin() + static_cast<std::ptrdiff_t>(filled_));
+  const auto p95 = sorted_.begin() + static_cast<std::ptrdiff_t>((filled_ * 95 + 99) / 100 - 1);
+  std::nth_element(sorted_.begin(), p95, sorted_.end());
+  jitter_ = *p95 - *offset_;
 }
 
 void ArrivalClock::reset() {
   next_ = 0;
   filled_ = 0;
   offset_.reset();
+  jitter_ = 0.0;
 }
 
 }  // namespace ocean::client

@@ -1,6 +1,7 @@
 // ArrivalClock: estimates where the server's tick clock is on the client's clock from frame
 // arrivals. Each arrival gives offset = arrival - tick * period; the minimum over a sliding window
-// is the least-delayed frame, which rides out jitter (queueing only ever adds delay). Pure.
+// is the least-delayed frame, which rides out jitter (queueing only ever adds delay). The spread
+// of the window above that minimum is the jitter a buffer must absorb. Pure.
 #pragma once
 
 #include "tick.hpp"
@@ -21,6 +22,8 @@ class ArrivalClock {
   // Client time of tick 0 (the server clock offset plus the fastest one-way delay); nullopt
   // before the first arrival.
   std::optional<double> offset_s() const { return offset_; }
+  // How much later than the fastest arrival 95 % of the window's arrivals came (0 before 8).
+  double jitter_s() const { return jitter_; }
   double tick_period_s() const { return period_; }
   void reset();
 
@@ -30,6 +33,8 @@ class ArrivalClock {
   std::size_t next_ = 0;
   std::size_t filled_ = 0;
   std::optional<double> offset_;
+  double jitter_ = 0.0;
+  std::vector<double> sorted_;  // scratch
 };
 
 }  // namespace ocean::client

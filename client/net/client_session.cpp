@@ -168,7 +168,7 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   codec::DecoderOptions options;
   // Keyframes on TCP may use chunks up to the session's message limit.
   options.max_payload = std::max(codec::kDefaultMaxPayload, protocol::max_chunk_payload(welcome.max_message_bytes));
-  options.history_ticks = protocol::kAckWindowTicks;
+  options.history_ticks = protocol::kMaxBaselineGap;
   if (config_.decode_memo) options.memo = config_.decode_memo(config);
   try {
     decoder_ = std::make_unique<codec::Decoder>(config, options);
@@ -224,7 +224,8 @@ void ClientSession::handle_frames(std::span<const std::uint8_t> block, wire::Tra
     last_rx_ = now;
     last_udp_rx_ = now;
   }
-  bool completed = false;
+  // Acks go out from update() at most every ack_interval_s: on a thin uplink one Ack per frame
+  // would cost more than half of a 32 kbit/s link.
   for (std::size_t i = 0; i < records_.size() && state_ == State::streaming; ++i) {
     const protocol::FrameRecord& record = records_[i];
     const bool last = i + 1 == records_.size();
@@ -233,12 +234,8 @@ void ClientSession::handle_frames(std::span<const std::uint8_t> block, wire::Tra
       ++stats_.chunks_redundant;
       continue;
     }
-    if (handle_record(record, now)) {
-      completed = true;
-      if (!last) ++stats_.frames_recovered;
-    }
+    if (handle_record(record, now) && !last) ++stats_.frames_recovered;
   }
-  if (completed && state_ == State::streaming) send_ack(now);
 }
 
 bool ClientSession::handle_record(const protocol::FrameRecord& record, double now) {

@@ -14,6 +14,7 @@ FrameTimeline::FrameTimeline(FrameTimelineConfig config)
     throw std::invalid_argument("FrameTimelineConfig.max_clock_slew must be in (0, 1)");
   const double interval = config.send_interval_s > 0.0 ? config.send_interval_s : config.tick_period_s;
   delay_s_ = config.interpolation_delay_s > 0.0 ? config.interpolation_delay_s : config.delay_intervals * interval;
+  send_interval_s_ = interval;
   frames_.resize(config.capacity);
   used_.assign(config.capacity, false);
 }
@@ -72,8 +73,11 @@ void FrameTimeline::fill(TimelineFrame& slot, const codec::ReconstructedFrame& f
 
 TimelineSample FrameTimeline::sample(double now) {
   TimelineSample out;
-  const auto target = clock_.offset_s();
-  if (!target) return out;
+  const auto offset = clock_.offset_s();
+  if (!offset) return out;
+  // More delay on a jittery link: the render clock's target moves back by the excess.
+  const std::optional<double> target =
+      *offset + (config_.adapt_to_jitter ? adaptive_delay_s() - delay_s_ : 0.0);
   const double period = config_.tick_period_s;
   if (!rendering_) {
     rendering_ = true;

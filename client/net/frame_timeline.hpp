@@ -14,6 +14,8 @@
 #include "arrival_clock.hpp"
 #include "frame_reconstruction.hpp"
 
+#include <algorithm>
+
 namespace ocean::client {
 
 struct FrameTimelineConfig {
@@ -21,6 +23,9 @@ struct FrameTimelineConfig {
   double send_interval_s = 0.0;          // time between frames the server sends; 0 = tick_period_s
   double delay_intervals = 3.0;          // render this many send intervals behind the newest frame
   double interpolation_delay_s = 0.0;    // if > 0, used instead of delay_intervals * send interval
+  // A jittery link gets more delay: at least the clock's jitter (ArrivalClock::jitter_s) plus one
+  // send interval, reached by slewing like the clock itself.
+  bool adapt_to_jitter = true;
   std::size_t capacity = 16;             // frames held; the oldest goes first
   std::size_t clock_window = 64;         // arrivals the clock minimum is taken over
   double max_clock_slew = 0.02;          // the render clock runs at most 2% fast or slow to follow the estimate
@@ -80,6 +85,11 @@ class FrameTimeline {
                     std::vector<float>& slope_z);
 
   double interpolation_delay_s() const { return delay_s_; }
+  // The delay the jitter asks for now (>= interpolation_delay_s()).
+  double adaptive_delay_s() const { return adaptive_delay(clock_, delay_s_, send_interval_s_); }
+  static double adaptive_delay(const ArrivalClock& clock, double base_delay_s, double send_interval_s) {
+    return std::max(base_delay_s, clock.jitter_s() + send_interval_s);
+  }
   const TimelineCounters& counters() const { return counters_; }
   const ArrivalClock& clock() const { return clock_; }
   std::size_t frames_held() const;
@@ -94,6 +104,7 @@ class FrameTimeline {
   Extrapolator extrapolator_;
   codec::ReconstructedFrame predicted_;  // the extrapolator's scratch
   double delay_s_;
+  double send_interval_s_;
   ArrivalClock clock_;
   std::vector<TimelineFrame> frames_;
   std::vector<bool> used_;

@@ -94,10 +94,16 @@ class FakeServer {
     if (!welcomed_) return;
     const bool via_udp = udp_ready_ && !key_needed_;
     std::shared_ptr<const codec::EncodedFrame> frame;
+    bool tcp_until_acked = false;  // as ocean-server: UDP deltas only from an acked baseline
     if (!key_needed_) {
-      std::optional<std::uint32_t> base;
+      std::optional<Tick> base;
       if (via_udp && options_.trust_acks) {
-        if (acked_ && tick_ - acked_->latest_tick <= protocol::kMaxBaselineGap) base = acked_->latest_tick;
+        if (acked_ && tick_ - acked_->latest_tick <= protocol::kMaxBaselineGap) {
+          base = acked_->latest_tick;
+        } else if (!acked_ && tick_ - last_tcp_ <= protocol::kMaxBaselineGap) {
+          base = last_tcp_;
+          tcp_until_acked = true;
+        }
       } else if (last_sent_ && tick_ - *last_sent_ <= protocol::kMaxBaselineGap) {
         base = via_udp ? *last_sent_ : last_tcp_;
       }
@@ -108,7 +114,7 @@ class FakeServer {
     sent_[tick_] = frame->id;
     frames_[tick_] = frame;
     last_sent_ = tick_;
-    const bool udp = udp_ready_ && !frame->key;
+    const bool udp = udp_ready_ && !frame->key && !tcp_until_acked;
     if (!udp) last_tcp_ = tick_;
     if (frame->key) ++keyframes_sent;
     for (const codec::Chunk& c : frame->chunks) {

@@ -34,7 +34,7 @@ TEST_CASE("session: handshake, UDP proof and a lossless stream reproduce the enc
   CHECK(s.keyframes_complete == 1);
   CHECK(h.delivered.size() == 60);  // every tick from the key on
   CHECK(h.frame_mismatches == 0);
-  CHECK(h.acks_checked >= 59);
+  CHECK(h.acks_checked >= 12);  // one per ack interval (0.1 s, checked every 33 ms tick) while frames complete
   CHECK(h.ack_mismatches == 0);
   REQUIRE(s.latest_tick);
   CHECK(*s.latest_tick == h.server.tick());
@@ -57,7 +57,7 @@ TEST_CASE("session: UDP loss and reordering never corrupt a frame, acks name exa
     INFO("seed " << seed);
     CHECK(h.frame_mismatches == 0);
     CHECK(h.ack_mismatches == 0);
-    CHECK(h.acks_checked > 150);
+    CHECK(h.acks_checked > 60);  // about one per ack interval (0.1 s, checked every tick)
     CHECK(s.frames_complete > 200);           // ~85% of the frames arrive
     CHECK(s.frames_complete < 300);           // and some did not
     CHECK(h.server.keyframes_sent <= 3);      // the stream recovers from acked baselines, not keys
