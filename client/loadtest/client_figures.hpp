@@ -11,7 +11,7 @@ struct ClientConnectionFacts {
   std::optional<double> ttff_s;     // connection attempt start to first complete in-bound frame
   std::optional<double> peak_kbps;  // busiest 1 s from the first frame on (none: no such window)
   double startup_peak_kbps = 0.0;   // busiest 1 s that starts before the first frame
-  std::optional<double> calm_kbps;  // median 100 ms rate from the first frame on
+  std::optional<double> calm_kbps;  // median 1 s window from the first frame on
 };
 
 struct ConnectionFigures {

@@ -130,7 +130,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   row("kbit/s per client", num(s.kbps_mean) + " (with IP/UDP headers " + num(s.kbps_mean_ip) + ")");
   row("peak 1 s kbit/s max/p50", num(s.kbps_peak_1s) + " / " + num(s.kbps_peak_1s_p50) + " (from the first frame on)");
   row("peak 1 s kbit/s startup", num(s.kbps_peak_1s_startup) + " (windows before the first frame)");
-  row("calm kbit/s", num(s.kbps_calm) + " (median 100 ms rate after the first frame)");
+  row("calm kbit/s", num(s.kbps_calm) + " (median 1 s window after the first frame)");
   auto seconds = [](const std::optional<double>& v) { return v ? num(*v) : std::string("none"); };
   row("first frame s max/p50", seconds(s.ttff_max_s) + " / " + seconds(s.ttff_p50_s));
   row("clients without frame", std::to_string(s.clients_without_frame));

@@ -9,9 +9,6 @@ void ReceiveRate::sample(double t_s, std::uint64_t bytes) {
   while (window_.size() > 1 && t_s - window_.front().t_s > kWindowS + kSlackS) window_.pop_front();
   if (window_.size() < 2) return;
   auto steady = [&](const Sample& start) { return first_frame_s_ && start.t_s >= *first_frame_s_; };
-  const Sample& previous = window_[window_.size() - 2];
-  if (steady(previous) && t_s > previous.t_s)
-    steady_interval_kbps_.push_back(static_cast<float>((bytes - previous.bytes) * 8.0 / 1000.0 / (t_s - previous.t_s)));
   // Of the windows ending here, the one starting earliest holds the most bytes; of those starting
   // from the first frame on, likewise the earliest such.
   auto per_window = [&](const Sample& start) {
@@ -23,12 +20,15 @@ void ReceiveRate::sample(double t_s, std::uint64_t bytes) {
   if (first_steady != window_.end() - 1) {
     peak_bytes_ = std::max(peak_bytes_, per_window(*first_steady));
     ++steady_windows_;
+    // Whole 1 s windows only: a 100 ms interval holds 2, 3 or 4 datagrams, too coarse a rate.
+    if (t_s - first_steady->t_s >= kWindowS - kSlackS)
+      steady_window_kbps_.push_back(static_cast<float>(per_window(*first_steady) * 8.0 / 1000.0));
   }
 }
 
 std::optional<double> ReceiveRate::calm_kbps() const {
-  if (steady_interval_kbps_.empty()) return std::nullopt;
-  std::vector<float> sorted = steady_interval_kbps_;
+  if (steady_window_kbps_.empty()) return std::nullopt;
+  std::vector<float> sorted = steady_window_kbps_;
   const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>((sorted.size() - 1) / 2);
   std::nth_element(sorted.begin(), middle, sorted.end());
   return *middle;

@@ -4,8 +4,8 @@
 //    sample never stretches one). Windows that start at or after the client's first frame give
 //    its steady peak, the others (the connection's own start: handshake and first keyframe) its
 //    startup peak, so one does not hide the other.
-//  - calm: the median rate of its sampling intervals from the first frame on, the stream's rate
-//    between bursts: a keyframe lifts only the few intervals it arrives in.
+//  - calm: the median rate of its whole 1 s windows from the first frame on, the stream's rate
+//    between bursts: a keyframe or a SceneUpdate lifts only the windows it arrives in.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +32,7 @@ class ReceiveRate {
   double peak_kbps() const { return peak_bytes_ * 8.0 / 1000.0; }
   double startup_peak_kbps() const { return startup_peak_bytes_ * 8.0 / 1000.0; }
   bool has_steady_window() const { return steady_windows_ > 0; }
-  // Median kbit/s of the steady sampling intervals; none before the first one.
+  // Median kbit/s of the steady 1 s windows; none before the first one.
   std::optional<double> calm_kbps() const;
 
  private:
@@ -44,7 +44,7 @@ class ReceiveRate {
   std::optional<double> first_frame_s_;
   double peak_bytes_ = 0.0, startup_peak_bytes_ = 0.0;
   std::uint64_t steady_windows_ = 0;
-  std::vector<float> steady_interval_kbps_;
+  std::vector<float> steady_window_kbps_;
 };
 
 }  // namespace ocean::loadtest

@@ -236,6 +236,11 @@ void ClientSession::handle_frames(std::span<const std::uint8_t> block, wire::Tra
     }
     if (handle_record(record, now) && !last) ++stats_.frames_recovered;
   }
+  // A key is acked at once: until the server hears of it, deltas come on TCP (larger).
+  if (ack_pending_ && stats_.keyframes_complete > keys_acked_ && state_ == State::streaming) {
+    keys_acked_ = stats_.keyframes_complete;
+    send_ack(now);
+  }
 }
 
 bool ClientSession::handle_record(const protocol::FrameRecord& record, double now) {

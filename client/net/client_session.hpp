@@ -114,6 +114,7 @@ class ClientSession {
   double last_progress_ = 0.0;        // last completed frame (or the Welcome)
   double last_keyframe_request_ = -1e300;
   bool ack_pending_ = false;          // a frame completed since the last Ack
+  std::uint64_t keys_acked_ = 0;      // keyframes_complete when the last key was acked at once
   std::uint32_t ping_seq_ = 0;
   codec::ChunkError last_chunk_error_ = codec::ChunkError::ok;
 };

@@ -98,6 +98,7 @@ void SessionHub::serve(Session& session, Tick tick, double now_s,
       return;
     }
     for (const SharedBytes& message : frame.messages) session.link->send(message);
+    session.tcp_frames_mark = session.link->enqueued_total();
     session.need_key = session.key_requested = false;
     session.last_key_s = now_s;
     session.baselines.record_sent(tick, frame.encoded->id, true, true);
@@ -110,9 +111,10 @@ void SessionHub::serve(Session& session, Tick tick, double now_s,
   }
   const SharedFrame& frame = stream.delta(tick, *base);
   bases.emplace_back(&stream, *base);
-  // UDP only once TCP has flushed: a datagram overtaking the TCP frames before it would leave them
-  // complete but older than what the client already shows.
-  if (udp && session.baselines.is_acked(*base) && session.link->queued_bytes() == 0) {
+  // UDP only once the TCP frames before it are written: a datagram overtaking them would leave them
+  // complete but older than what the client already shows. (Control messages queued on TCP, such
+  // as a SceneUpdate, do not hold the stream back.)
+  if (udp && session.baselines.is_acked(*base) && session.link->written_through(session.tcp_frames_mark)) {
     if (!send_udp_frame(session, tick, frame, now_s)) {
       metrics.frames_skipped_bandwidth.inc();
       return;
@@ -130,6 +132,7 @@ void SessionHub::serve(Session& session, Tick tick, double now_s,
       return;  // the baseline stays the last queued frame, or a key once it ages out
     }
     for (const SharedBytes& message : frame.messages) session.link->send(message);
+    session.tcp_frames_mark = session.link->enqueued_total();
     session.baselines.record_sent(tick, frame.encoded->id, true);
     metrics.frames_sent("tcp").inc();
     metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));

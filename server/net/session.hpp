@@ -36,6 +36,7 @@ struct Session {
   std::optional<asio::ip::udp::endpoint> udp;  // proven by a UdpHello
   BaselineTracker baselines;
   std::deque<RecentFrame> recent_udp;       // the last kMaxUdpRedundancy single-chunk UDP frames
+  std::uint64_t tcp_frames_mark = 0;        // TcpLink::enqueued_total() after the last frame queued on TCP
   bool need_key = true;                     // the next frame must be a key
   bool key_requested = false;               // a KeyframeRequest waits for its rate limit
   double last_key_s = -std::numeric_limits<double>::infinity();

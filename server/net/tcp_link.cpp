@@ -52,6 +52,7 @@ void TcpLink::do_read() {
 void TcpLink::send(SharedBytes message) {
   if (closed_) return;
   queued_bytes_ += message->size();
+  enqueued_total_ += message->size();
   peak_queued_bytes_ = std::max(peak_queued_bytes_, queued_bytes_);
   queue_.push_back(std::move(message));
   do_write();

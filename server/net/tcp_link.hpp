@@ -47,6 +47,10 @@ class TcpLink : public std::enable_shared_from_this<TcpLink> {
   void close(const std::string& reason);
 
   std::size_t queued_bytes() const { return queued_bytes_; }
+  // Bytes ever queued; a message queued when this was `mark` has been written once
+  // written_through(mark) holds.
+  std::uint64_t enqueued_total() const { return enqueued_total_; }
+  bool written_through(std::uint64_t mark) const { return enqueued_total_ - queued_bytes_ >= mark; }
   std::size_t max_queue_bytes() const { return max_queue_bytes_; }
   std::size_t peak_queued_bytes() const { return peak_queued_bytes_; }
   std::size_t framer_buffered_bytes() const { return framer_.buffered_bytes(); }
@@ -66,6 +70,7 @@ class TcpLink : public std::enable_shared_from_this<TcpLink> {
   std::array<std::uint8_t, 16 * 1024> read_buffer_{};
   std::deque<SharedBytes> queue_;
   std::size_t queued_bytes_ = 0;
+  std::uint64_t enqueued_total_ = 0;
   std::size_t peak_queued_bytes_ = 0;
   std::size_t max_queue_bytes_;
   TokenBucket bucket_{0.0, 0.0, 0.0};

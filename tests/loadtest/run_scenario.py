@@ -104,7 +104,7 @@ def main():
         try:
             # warn level: little output to buffer
             server = local_server.start(args.server_bin, ["--listen", f"127.0.0.1:{port}", "--metrics-listen", "off",
-                                                          "--max-clients", "64", "--log-level", "warn"] + extra, port)
+                                                          "--max-clients", str(max(64, 2 * int(args.clients))), "--log-level", "warn"] + extra, port)
         except RuntimeError as e:
             print(e, file=sys.stderr)
             return 1
