@@ -346,8 +346,8 @@ TEST_CASE("scene model cost", "[scene_model][timing]") {
   }
 }
 
-TEST_CASE("state_at reproduces the spec's test vectors", "[scene_model]") {
-  // scene_model_spec.md lists these: any implementation must reach the same hash_state (FNV-1a of
+TEST_CASE("state_at reproduces the test vectors of CODEC.md 12.2", "[scene_model]") {
+  // CODEC.md 12.2 lists these: any implementation must reach the same hash_state (FNV-1a of
   // prev.re, prev.im, cur.re, cur.im). Streams: patch 256 m, height step 0.01, 240 ticks per second.
   SceneModelParams phillips;
   SceneModelParams cos2s_37;

@@ -1,0 +1,402 @@
+// Generator of the codec test vectors (CODEC.md section 12): two short streams of the lite profile
+// as ocean-server would send them to one client - the Welcome, a SceneUpdate, every chunk with
+// its envelope and its frames datagram, a few chunks a decoder must refuse, and what a decoder
+// shows once each frame completes. The truth is the scene model's own field with a few samples
+// pushed off by 0.6 step, so keys are modeled and frames carry height and slope corrections;
+// lite_explicit's truth comes from another seed, so its key falls back to explicit coefficients.
+//
+// Runs in memory on every test run (checking that the decoder shows exactly the encoder's
+// reconstruction); writes the files only when OCEAN_WRITE_CODEC_VECTORS names a folder:
+//   OCEAN_WRITE_CODEC_VECTORS=tests/codec/vectors build/tests/codec/test_codec_vectors "[generate]"
+#include "codec_vectors.hpp"
+
+#include "chunk_body.hpp"
+#include "decoder.hpp"
+#include "encoder.hpp"
+#include "frame_records.hpp"
+#include "message_builders.hpp"
+#include "scene_model.hpp"
+#include "state_hash.hpp"
+#include "stream_wire.hpp"
+#include "wire_limits.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <random>
+
+using namespace ocean;
+using namespace ocean::codec;
+using namespace ocean::codec::vectors;
+
+namespace {
+
+// Ten years of ticks at 30 Hz (beyond 2^33), on the 16-tick key grid of lite under 30 Hz ticks.
+constexpr Tick kKeyTick = 9'467'280'000;
+constexpr int kTickRateHz = 30;
+
+protocol::SceneParams base_scene() {
+  protocol::SceneParams s;
+  s.size_x = 64;
+  s.size_z = 64;
+  s.patch_x_m = 64.0;
+  s.patch_z_m = 64.0;
+  s.spectrum = wire::Spectrum::jonswap;
+  s.spreading = wire::Spreading::donelan_banner;
+  s.wind_speed_mps = 8.0;
+  s.wind_dir_deg = 30.0;
+  s.fetch_m = 100000.0;
+  s.amplitude = 1.0;
+  s.depth_m = 0.0;
+  s.small_wave_m = 0.0;
+  s.choppiness = 0.0;
+  s.gravity_mps2 = 9.81;
+  s.seed = 42;
+  return s;
+}
+
+// A schedule entry (serial 1): stronger wind from another direction over 12 m of water.
+protocol::SceneParams next_scene() {
+  protocol::SceneParams s = base_scene();
+  s.wind_speed_mps = 11.0;
+  s.wind_dir_deg = 75.0;
+  s.depth_m = 12.0;
+  return s;
+}
+
+protocol::Welcome welcome_of(const protocol::SceneParams& scene) {
+  const Profile& lite = *find_profile(std::uint8_t{4});
+  protocol::Welcome w;
+  w.session_id = 0x1122334455667788ull;
+  w.stream.profile_id = lite.id;
+  w.stream.grid = lite.grid;
+  w.stream.patch_x_m = scene.patch_x_m;
+  w.stream.patch_z_m = scene.patch_z_m;
+  w.stream.gravity_mps2 = scene.gravity_mps2;
+  w.stream.depth_m = scene.depth_m;
+  w.stream.rate_hz = lite.rate_hz;
+  w.stream.height_step_m = lite.height_step_m;
+  w.stream.slope_step = lite.slope_step;
+  w.stream.disp_step_m = lite.disp_step_m;
+  w.stream.normals = lite.normals;
+  w.stream.choppy = lite.choppy;
+  w.scene = scene;
+  w.offered_profiles = {1, 4};
+  w.epoch_unix_ms = 1'400'000'000'000;
+  w.current_tick = kKeyTick - 5;
+  w.tick_period_s = 1.0 / kTickRateHz;
+  w.max_message_bytes = static_cast<std::uint32_t>(protocol::kDefaultMaxMessageBytes);
+  w.scene_serial = 0;
+  return w;
+}
+
+// What ClientSession gives its decoder (client_session.cpp handle_welcome).
+DecoderOptions client_decoder_options(const protocol::Welcome& w) {
+  DecoderOptions o;
+  o.max_payload = std::max(kDefaultMaxPayload, protocol::max_chunk_payload(w.max_message_bytes));
+  o.history_ticks = 32;
+  return o;
+}
+
+// What ocean-server gives its encoders (profile_stream.cpp stream_encoder_options).
+EncoderOptions server_encoder_options() {
+  EncoderOptions o;
+  o.max_payload = protocol::kMaxChunkPayloadUdp;
+  o.history_ticks = protocol::kMaxBaselineGap + 2;
+  o.key_history_ticks = protocol::kMaxFrameLag;
+  return o;
+}
+
+// The scene model's field of `scene` at `tick`, as floats, with `pushed` samples moved off by
+// 0.6 step (heights) or 0.6 slope step (slopes), alternating in sign.
+struct Push {
+  int channel;  // 0 height, 1 slope_x, 2 slope_z
+  std::uint32_t pos;
+};
+TruthView model_truth(const StreamConfig& stream, const protocol::SceneParams& scene, Tick tick,
+                      const std::vector<Push>& pushed, ReconstructedFrame& storage) {
+  StreamConfig with_depth = stream;
+  with_depth.depth_m = scene.depth_m;
+  const SceneModel model(with_depth, scene_model_params(scene));
+  ModalState state;
+  model.state_at(tick, state);
+  ModalModel modal(with_depth);
+  SampleFields fields;
+  modal.synthesize(state.cur, fields);
+  to_float(fields, stream, storage);
+  float sign = 1.0f;
+  for (const Push& p : pushed) {
+    std::vector<float>& channel = p.channel == 0 ? storage.height : p.channel == 1 ? storage.slope_x : storage.slope_z;
+    const float step = p.channel == 0 ? stream.height_step_m : stream.slope_step;
+    channel.at(p.pos) += sign * 0.6f * step;
+    sign = -sign;
+  }
+  return TruthView{storage.height, storage.slope_x, storage.slope_z};
+}
+
+std::string scene_fields(const protocol::SceneParams& s) {
+  return "size_x=" + std::to_string(s.size_x) + " size_z=" + std::to_string(s.size_z) +
+         " patch_x_m=" + text_of(s.patch_x_m) + " patch_z_m=" + text_of(s.patch_z_m) +
+         " spectrum=" + std::to_string(static_cast<int>(s.spectrum)) +
+         " spreading=" + std::to_string(static_cast<int>(s.spreading)) +
+         " wind_speed_mps=" + text_of(s.wind_speed_mps) + " wind_dir_deg=" + text_of(s.wind_dir_deg) +
+         " fetch_m=" + text_of(s.fetch_m) + " amplitude=" + text_of(s.amplitude) + " depth_m=" + text_of(s.depth_m) +
+         " small_wave_m=" + text_of(s.small_wave_m) + " choppiness=" + text_of(s.choppiness) +
+         " gravity_mps2=" + text_of(s.gravity_mps2) + " seed=" + std::to_string(s.seed);
+}
+
+// One sequence being written: the text lines, the float file, and a decoder fed exactly what the
+// lines say (its results are what the lines expect).
+class Writer {
+ public:
+  Writer(std::string name, std::string title) : name_(std::move(name)) {
+    text_ << "# " << name_ << ": " << title << "\n"
+          << "# Codec version 2 / protocol version 2 test vectors; the format is in protocol/codec/CODEC.md section 12.\n"
+          << "# Generated by tests/codec/make_codec_vectors.cpp, checked by tests/codec/test_codec_vectors.cpp.\n";
+  }
+
+  void comment(const std::string& text) { text_ << "# " << text << "\n"; }
+
+  Decoder& welcome(const protocol::Welcome& w) {
+    const protocol::Bytes bytes = protocol::encode(w);
+    text_ << "welcome hex=" << hex(bytes) << "\n";
+    const StreamConfig c = decoder_config(w);
+    text_ << "stream profile_id=" << int(c.profile_id) << " grid=" << c.grid << " patch_x_m=" << text_of(c.patch_x_m)
+          << " patch_z_m=" << text_of(c.patch_z_m) << " gravity_mps2=" << text_of(c.gravity_mps2)
+          << " depth_m=" << text_of(c.depth_m) << " rate_hz=" << c.rate_hz << " tick_rate_hz=" << c.tick_rate_hz
+          << " height_step_m=" << text_of(c.height_step_m) << " slope_step=" << text_of(c.slope_step)
+          << " disp_step_m=" << text_of(c.disp_step_m) << " normals=" << int(c.normals) << " choppy=" << int(c.choppy)
+          << " max_payload=" << client_decoder_options(w).max_payload << " history_ticks=32 max_lag=1024\n";
+    text_ << "scene from=0 serial=" << w.scene_serial << " tag=" << (w.scene_serial % 256) << " " << scene_fields(w.scene)
+          << "\n";
+    decoder_ = std::make_unique<Decoder>(c, client_decoder_options(w));
+    decoder_->add_scene(0, static_cast<std::uint8_t>(w.scene_serial), scene_model_params(w.scene));
+    config_ = c;
+    return *decoder_;
+  }
+
+  void scene_update(const protocol::SceneUpdate& u) {
+    text_ << "scene_update hex=" << hex(protocol::encode(u)) << "\n";
+    text_ << "scene from=" << u.effective_tick << " serial=" << u.serial << " tag=" << (u.serial % 256) << " "
+          << scene_fields(u.scene) << "\n";
+    decoder_->add_scene(u.effective_tick, static_cast<std::uint8_t>(u.serial), scene_model_params(u.scene));
+  }
+
+  // The scene model's state of `tick` (before any correction), for checking a scene model alone.
+  void model(Tick tick) {
+    ModalState s;
+    decoder_->scenes().model_state(tick, s);
+    text_ << "model tick=" << tick << " tag=" << int(decoder_->scenes().at(tick)->tag) << " state_hash=" << hex64(hash_state(s))
+          << "\n";
+  }
+
+  void chunk(const Chunk& c, const std::string& what, ChunkError expect = ChunkError::ok) {
+    const protocol::FrameRecord record{c.tick, c.baseline, c.key, c.index, c.count, c.payload};
+    const protocol::Bytes datagram = protocol::frames_datagram(std::span(&record, 1));
+    text_ << "chunk what=" << what << " tick=" << c.tick << " baseline=" << c.baseline << " key=" << int(c.key)
+          << " index=" << c.index << " count=" << c.count << " payload=" << hex(c.payload)
+          << " datagram=" << hex(datagram) << " expect=" << to_string(expect) << "\n";
+    const ChunkError got = decoder_->accept(c);
+    INFO(name_ << ": chunk " << what << " of tick " << c.tick);
+    REQUIRE(to_string(got) == to_string(expect));
+  }
+
+  // After the chunk that completed `frame`: what the decoder shows, which must be the encoder's own
+  // reconstruction bit for bit.
+  void frame(const EncodedFrame& frame) {
+    const ReconstructedFrame* shown = decoder_->just_completed();
+    INFO(name_ << ": frame " << frame.id.tick);
+    REQUIRE(shown);
+    REQUIRE(shown->tick == frame.id.tick);
+    REQUIRE(shown->complete);
+    REQUIRE(shown->height == frame.reconstruction.height);
+    REQUIRE(shown->slope_x == frame.reconstruction.slope_x);
+    REQUIRE(shown->slope_z == frame.reconstruction.slope_z);
+    const std::size_t offset = floats_.size();
+    for (const std::vector<float>* channel : {&shown->height, &shown->slope_x, &shown->slope_z})
+      for (float v : *channel) {
+        std::uint32_t bits;
+        std::memcpy(&bits, &v, 4);
+        for (int b = 0; b < 4; ++b) floats_.push_back(static_cast<std::uint8_t>(bits >> (8 * b)));
+      }
+    const std::span<const std::uint8_t> bytes(floats_.data() + offset, floats_.size() - offset);
+    text_ << "frame tick=" << shown->tick << " complete=1 offset=" << offset << " bytes=" << bytes.size()
+          << " fnv1a64=" << hex64(fnv1a64(bytes)) << " state_hash=" << hex64(hash_state(*decoder_->state(shown->tick)))
+          << " corrections=" << frame.stats.corrections_height << "," << frame.stats.corrections_slope;
+    auto samples = [&](const char* label, const std::vector<float>& v) {
+      text_ << " " << label << "=";
+      bool first = true;
+      for (std::uint32_t p : kSamplePositions) {
+        text_ << (first ? "" : ",") << text_of(v.at(p));
+        first = false;
+      }
+    };
+    text_ << " samples=";
+    bool first = true;
+    for (std::uint32_t p : kSamplePositions) {
+      text_ << (first ? "" : ",") << p;
+      first = false;
+    }
+    samples("height", shown->height);
+    samples("slope_x", shown->slope_x);
+    samples("slope_z", shown->slope_z);
+    text_ << "\n";
+  }
+
+  // A frame whose chunks all arrive in order.
+  void frame_in_order(const EncodedFrame& f, const std::string& what) {
+    for (const Chunk& c : f.chunks) chunk(c, what);
+    frame(f);
+  }
+
+  const StreamConfig& config() const { return config_; }
+
+  void write(const std::string& dir) const {
+    std::ofstream txt(dir + "/" + name_ + ".txt", std::ios::binary);
+    txt << text_.str();
+    std::ofstream f32(dir + "/" + name_ + ".f32", std::ios::binary);
+    f32.write(reinterpret_cast<const char*>(floats_.data()), static_cast<std::streamsize>(floats_.size()));
+    REQUIRE(txt.good());
+    REQUIRE(f32.good());
+  }
+
+ private:
+  std::string name_;
+  std::ostringstream text_;
+  std::vector<std::uint8_t> floats_;
+  std::unique_ptr<Decoder> decoder_;
+  StreamConfig config_;
+};
+
+// A copy of `c` whose header (and so its CRC) is edited; the body is kept.
+Chunk rebuilt(const Chunk& c, int grid_log2, const std::function<void(ChunkHeader&)>& edit) {
+  ChunkHeader h;
+  std::span<const std::uint8_t> body;
+  REQUIRE(parse_payload(view(c), 65536, grid_log2, h, body) == ChunkError::ok);
+  edit(h);
+  Chunk out = c;
+  out.payload = write_payload(h, view(c), grid_log2, body);
+  return out;
+}
+
+void lite_modeled(Writer& w) {
+  const protocol::SceneParams scene0 = base_scene(), scene1 = next_scene();
+  const protocol::Welcome welcome = welcome_of(scene0);
+  w.comment("The lite profile (32 x 32, 15 Hz, slopes) under 30 Hz server ticks: frames on even ticks.");
+  w.comment("K = " + std::to_string(kKeyTick) + " (ten years of 30 Hz ticks), the key tick.");
+  w.comment("Scene 0 from the Welcome; scene 1 (wind, direction and depth change) from tick " +
+            std::to_string(kKeyTick + 9) + " by a SceneUpdate.");
+  Decoder& dec = w.welcome(welcome);
+  (void)dec;
+  const StreamConfig& c = w.config();
+  const Tick change = kKeyTick + 9;
+  Encoder enc(c, server_encoder_options());
+  enc.set_scene(0, 0, scene_model_params(scene0));
+  enc.set_scene(change, 1, scene_model_params(scene1));
+  const protocol::SceneUpdate update{0, change, scene1, 1};
+
+  ReconstructedFrame truth;
+  auto feed = [&](Tick tick, const std::vector<Push>& pushed) {
+    enc.add_truth(tick, model_truth(c, tick < change ? scene0 : scene1, tick, pushed, truth));
+  };
+  for (Tick t = kKeyTick - 1; t <= kKeyTick + 12; ++t) {
+    std::vector<Push> pushed;
+    if (t == kKeyTick) pushed = {{0, 40}, {0, 300}, {0, 301}, {0, 1000}, {1, 77}, {1, 500}, {2, 600}, {2, 5}};
+    if (t == kKeyTick + 4) pushed = {{0, 123}, {0, 900}, {1, 64}, {2, 1023}};
+    if (t == kKeyTick + 10) pushed = {{0, 517}, {2, 200}};
+    feed(t, pushed);
+  }
+
+  w.comment("The key: the scene model's state of its tick; its truth has 4 heights and 4 slopes pushed off.");
+  w.model(kKeyTick);
+  const auto key = enc.encode_key(kKeyTick);
+  REQUIRE(key->chunks.size() == 1);
+  w.frame_in_order(*key, "modeled_key");
+  w.chunk(key->chunks[0], "again", ChunkError::duplicate_chunk);
+
+  w.comment("Deltas K+2 from K and K+4 from K (whose truth has 2 heights and 2 slopes pushed off). A height");
+  w.comment("correction folded into the state moves the next frames' slopes a little (the truth has no such");
+  w.comment("bump), so later frames carry some slope corrections too: `corrections` counts heights,slopes.");
+  const auto d2 = enc.encode_delta(kKeyTick + 2, key->id);
+  w.frame_in_order(*d2, "delta");
+  const auto d4 = enc.encode_delta(kKeyTick + 4, key->id);
+  w.frame_in_order(*d4, "delta");
+
+  w.comment("The SceneUpdate of scene 1 (sent a lead ahead of its effective tick).");
+  w.scene_update(update);
+  w.model(change);
+
+  const auto d6 = enc.encode_delta(kKeyTick + 6, d4->id);
+  w.comment("Refused: K+6 with its scene tag byte changed (the CRC covers it), then re-signed with tag 1.");
+  Chunk bad = d6->chunks[0];
+  bad.payload.at(3) ^= 1;
+  w.chunk(bad, "corrupted", ChunkError::checksum_mismatch);
+  w.chunk(rebuilt(d6->chunks[0], c.grid_log2(), [](ChunkHeader& h) { h.scene_tag = 1; }), "wrong_tag",
+          ChunkError::unknown_scene);
+  w.frame_in_order(*d6, "delta");
+
+  w.comment("K+10 from K+4 crosses the change at K+9: the state becomes scene 1's model state at K+9,");
+  w.comment("then advances one tick with scene 1's recurrence (depth 12 m); its truth has 1 height, 1 slope pushed off.");
+  const auto d10 = enc.encode_delta(kKeyTick + 10, d4->id);
+  w.frame_in_order(*d10, "delta");
+  const auto d12 = enc.encode_delta(kKeyTick + 12, d10->id);
+  w.frame_in_order(*d12, "delta");
+
+  w.comment("Refused: a delta of K+14 from K+8, a tick this client never completed.");
+  Chunk orphan;
+  orphan.tick = kKeyTick + 14;
+  orphan.baseline = kKeyTick + 8;
+  orphan.key = false;
+  orphan.index = 0;
+  orphan.count = 1;
+  ChunkHeader h;
+  h.normals = true;
+  h.whole = true;
+  h.scene_tag = 1;
+  const BodyLayout layout{0, 32u * 32u, true};
+  orphan.payload = write_payload(h, view(orphan), c.grid_log2(), encode_body(layout, 0, layout.total(), {}, Corrections{}));
+  w.chunk(orphan, "orphan", ChunkError::unknown_baseline);
+}
+
+void lite_explicit(Writer& w) {
+  const protocol::SceneParams scene0 = base_scene();
+  protocol::SceneParams other = scene0;
+  other.seed = 43;  // the truth is another sea than the one announced: the scene model misses it
+  const protocol::Welcome welcome = welcome_of(scene0);
+  const StreamConfig c = decoder_config(welcome);
+  Encoder enc(c, server_encoder_options());
+  enc.set_scene(0, 0, scene_model_params(scene0));
+  ReconstructedFrame truth;
+  for (Tick t = kKeyTick - 1; t <= kKeyTick + 4; ++t) enc.add_truth(t, model_truth(c, other, t, {}, truth));
+  const auto key = enc.encode_key(kKeyTick);
+  REQUIRE(key->chunks.size() >= 2);
+  w.comment("The stream of lite_modeled, but the truth is the scene model of seed 43 while the scene says 42:");
+  w.comment("the modeled key would need nearly every sample corrected, so the key is explicit (codec 1");
+  w.comment("coefficients, from the truth at K and K-1) in " + std::to_string(key->chunks.size()) +
+            " chunks, delivered last first. K = " + std::to_string(kKeyTick) + ".");
+  w.welcome(welcome);
+  for (auto it = key->chunks.rbegin(); it != key->chunks.rend(); ++it) w.chunk(*it, "explicit_key");
+  w.frame(*key);
+  w.comment("Deltas from the explicit key: K+2 from K, K+4 from K+2.");
+  const auto d2 = enc.encode_delta(kKeyTick + 2, key->id);
+  w.frame_in_order(*d2, "delta");
+  const auto d4 = enc.encode_delta(kKeyTick + 4, d2->id);
+  w.frame_in_order(*d4, "delta");
+}
+
+}  // namespace
+
+TEST_CASE("codec vectors: the generator's streams decode to the encoder's reconstructions", "[generate]") {
+  Writer modeled("lite_modeled", "a modeled key, deltas with corrections, a scene change, refusals");
+  lite_modeled(modeled);
+  Writer explicit_key("lite_explicit", "an explicit (coefficient) key in several chunks, then deltas");
+  lite_explicit(explicit_key);
+  if (const char* dir = std::getenv("OCEAN_WRITE_CODEC_VECTORS"); dir && *dir) {
+    modeled.write(dir);
+    explicit_key.write(dir);
+    WARN("codec vectors written to " << dir);
+  }
+}
