@@ -128,7 +128,7 @@ struct SceneUpdate {
   std::uint32_t request_id = 0;
   Tick effective_tick = 0;
   SceneParams scene;
-  std::uint32_t serial = 0;  // one more than the previous scene's; chunks name it mod 256
+  std::uint32_t serial = 0;  // differs from the previous scene's mod 256 (PROTOCOL.md 6.2); chunks name it mod 256
   bool operator==(const SceneUpdate&) const = default;
 };
 

@@ -77,6 +77,9 @@ ChunkError Decoder::accept(const ChunkView& c) {
   }
   if (const ChunkError e = check(c, h, layout); e != ChunkError::ok) return e;
   if (accept_remembered(c)) return ChunkError::ok;
+  // A scene whose model cannot be built for this stream names no state the decoder could use.
+  if (!pending_.count(c.tick) && (h.modeled || !c.key) && !scenes_.prepare(c.baseline, c.tick, c.key))
+    return ChunkError::unknown_scene;
   DecodedBody decoded;
   if (!decode_body(layout, h.item_begin, h.item_end, body, decoded)) return ChunkError::bad_value;
 

@@ -1,5 +1,5 @@
 // Deterministic elementary functions: argument reduction by exact scalings or a split constant,
-// then a fixed-length series in Horner form (see CODEC.md 3 and scene_model_spec.md).
+// then a fixed-length series in Horner form (see CODEC.md 3 and 7.6).
 #include "det_math.hpp"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // from + - * / and sqrt in double only (all correctly rounded by IEEE 754), plus exact operations
 // (floor, frexp, ldexp, comparisons), evaluated in a fixed order with fixed loop counts, so every
 // CPU, compiler and language gets the same bits (compile with -ffp-contract=off). The exact
-// operation order is normative: CODEC.md section 3 and scene_model_spec.md. Not for hot loops
+// operation order is normative: CODEC.md sections 3 and 7.6. Not for hot loops
 // (det_cos_sin is the batched form for the scene model's per-tick phases).
 #pragma once
 

@@ -3,7 +3,7 @@
 // change costs nothing. The codec keeps its own copy of the sim's formulas (scene_spectrum,
 // scene_spreading, scene_amplitude) written with det_ functions: clients never link the sim, and
 // the sim's libm results differ between platforms in the last bits, which would break the
-// closed loop. scene_model_spec.md is the normative description.
+// closed loop. CODEC.md 7.6 is the normative description.
 #pragma once
 
 #include "modal_model.hpp"

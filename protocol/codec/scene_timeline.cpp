@@ -46,14 +46,27 @@ Tick SceneTimeline::start_of(Tick tick) const {
   return std::prev(it)->first;
 }
 
-void SceneTimeline::model_state(Tick tick, ModalState& out) const {
-  const Held& held = held_at(tick);
+const SceneModel& SceneTimeline::model_of(const Held& held) const {
   if (!held.model) {
     StreamConfig with_depth = config_;
     with_depth.depth_m = held.entry.scene.depth_m;
     held.model = std::make_unique<SceneModel>(with_depth, held.entry.scene);
   }
-  held.model->state_at(tick, out);
+  return *held.model;
+}
+
+void SceneTimeline::model_state(Tick tick, ModalState& out) const { model_of(held_at(tick)).state_at(tick, out); }
+
+bool SceneTimeline::prepare(Tick from, Tick to, bool key) const {
+  if (!at(to) || (!key && !at(from))) return false;
+  const Tick start = start_of(to);
+  if (!key && start <= from) return true;  // within one scene: the recurrence alone
+  try {
+    (void)model_of(held_at(key ? to : start));
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
 }
 
 void SceneTimeline::advance(ModalState& state, Tick from, Tick to) const {

@@ -40,6 +40,10 @@ class SceneTimeline {
   // `state` of tick `from` becomes the state of tick `to` (>= from): replaced by the model state
   // at the last effective tick in (from, to], then advanced by the recurrence of that scene.
   void advance(ModalState& state, Tick from, Tick to) const;
+  // Builds what model_state(to) (key) or advance(from, to) (delta) will need; false when the scene
+  // model cannot be built (a scene that does not describe this stream). Afterwards those calls
+  // cannot throw, so a decoder checks this before it changes anything.
+  bool prepare(Tick from, Tick to, bool key) const;
 
   // Forgets entries no longer in force at `tick` or later.
   void forget_before(Tick tick);
@@ -48,6 +52,7 @@ class SceneTimeline {
  private:
   struct Held;
   const Held& held_at(Tick tick) const;
+  const SceneModel& model_of(const Held& held) const;
 
   StreamConfig config_;
   std::map<Tick, std::unique_ptr<Held>> entries_;

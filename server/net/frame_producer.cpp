@@ -47,9 +47,10 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
     ocean_ = std::make_unique<sim::Ocean>(scheduled);
     scene_changed_ = true;
   }
-  if (override_ && tick >= override_->from) {
-    ocean_ = std::make_unique<sim::Ocean>(override_->scene);
-    override_.reset();
+  if (!overrides_.empty() && overrides_.begin()->first <= tick) {
+    const auto due = overrides_.upper_bound(tick);
+    ocean_ = std::make_unique<sim::Ocean>(std::prev(due)->second);
+    overrides_.erase(overrides_.begin(), due);
     scene_changed_ = true;
   }
 

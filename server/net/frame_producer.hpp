@@ -8,6 +8,7 @@
 #include "tick_frames.hpp"
 
 #include <memory>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -26,7 +27,8 @@ class FrameProducer {
 
   // From tick `from` on, this scene replaces the active one (an admin change); it lasts
   // until the schedule reaches its next entry. The scene must pass sim::validate.
-  void override_scene(const sim::SceneParams& scene, std::int64_t from) { override_ = Override{scene, from}; }
+  // Several may wait (admin changes within one announcement lead), each from its own tick.
+  void override_scene(const sim::SceneParams& scene, std::int64_t from) { overrides_[from] = scene; }
   // True when the last produce() switched to a scheduled or overriding scene.
   bool scene_changed() const { return scene_changed_; }
   const sim::SceneParams& scene() const { return ocean_->params(); }
@@ -38,11 +40,7 @@ class FrameProducer {
   SceneSchedule schedule_;
   std::vector<const Profile*> profiles_;
   const sim::SceneParams* scheduled_scene_;  // the schedule entry last applied
-  struct Override {
-    sim::SceneParams scene;
-    std::int64_t from;
-  };
-  std::optional<Override> override_;
+  std::map<std::int64_t, sim::SceneParams> overrides_;  // by first tick
   std::unique_ptr<sim::Ocean> ocean_;
   std::shared_ptr<BufferPool> pool_;
   bool scene_changed_ = false;

@@ -186,7 +186,7 @@ void Server::do_receive() {
 
 void Server::request_scene(const sim::SceneParams& scene, std::int64_t from) {
   std::lock_guard lock(scene_request_mutex_);
-  scene_request_ = std::make_pair(scene, from);
+  scene_requests_.emplace_back(scene, from);
 }
 
 bool Server::send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to) {
@@ -200,8 +200,8 @@ void Server::on_tick(const TickDecision& decision) {
   const auto start = std::chrono::steady_clock::now();
   {
     std::lock_guard lock(scene_request_mutex_);
-    if (scene_request_) producer_.override_scene(scene_request_->first, scene_request_->second);
-    scene_request_.reset();
+    for (const auto& [scene, from] : scene_requests_) producer_.override_scene(scene, from);
+    scene_requests_.clear();
   }
   const double time_s = tick_loop_.clock().sim_time_s(decision.tick);
   std::shared_ptr<const TickFrames> frames = producer_.produce(decision.tick, time_s);

@@ -25,6 +25,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <vector>
 #include <span>
 
 namespace ocean::server {
@@ -103,7 +104,7 @@ class Server {
   DatagramHandler datagram_handler_;
   StopHandler stop_handler_;
   std::mutex scene_request_mutex_;
-  std::optional<std::pair<sim::SceneParams, std::int64_t>> scene_request_;  // guarded by scene_request_mutex_
+  std::vector<std::pair<sim::SceneParams, std::int64_t>> scene_requests_;  // guarded by scene_request_mutex_
 
   std::array<std::uint8_t, 1500> datagram_{};
   asio::ip::udp::endpoint datagram_sender_;

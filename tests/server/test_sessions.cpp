@@ -2,6 +2,12 @@
 // equal to the encoder's, shared encodings, refusals, timeouts and Bye on shutdown.
 #include "session_harness.hpp"
 
+#include "ocean.hpp"
+#include "scene_model.hpp"
+
+#include <chrono>
+#include <cmath>
+
 using namespace ocean::server;
 using namespace ocean::server::test;
 namespace proto = ocean::protocol;
@@ -170,4 +176,34 @@ TEST_CASE("a silent client is timed out with Bye") {
   }
   REQUIRE(client->byes.size() == 1);
   CHECK(client->byes[0].reason == ocean::wire::ByeReason::idle_timeout);
+}
+
+TEST_CASE("a session streams across tick 2^32, where the version-1 wire tick wrapped, within the bound of the sim") {
+  ServerConfig config = session_test_config();
+  const auto now_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                          std::chrono::system_clock::now().time_since_epoch()).count();
+  const ocean::Tick wrap = ocean::Tick{1} << 32;
+  // The server's tick is 1.5 s short of 2^32 when it starts.
+  config.epoch_unix_ms = now_ms - static_cast<std::int64_t>((wrap - 45) * 1000 / 30);
+  SessionHarness harness(config);
+  auto client = harness.client();
+  client->hello(hello_for(1, ocean::wire::Transport::udp));
+  REQUIRE(pump_until({client.get()}, [&] {
+    return !client->completed_heights.empty() && client->completed_heights.rbegin()->first > wrap + 30;
+  }));
+  CHECK(client->completed_heights.begin()->first < wrap);
+  CHECK(client->key_ticks.size() == 1);
+  harness.check_reconstructions(*client);
+  ocean::sim::Ocean ocean(config.scene);
+  ocean::sim::Frame truth;
+  const double bound = 0.5 * client->welcome->stream.height_step_m + 1e-5;
+  for (const auto& [tick, heights] : client->completed_heights) {
+    ocean.evaluate_band(ocean::codec::tick_time_s(static_cast<std::int64_t>(tick), 30), 64, 64, truth,
+                        ocean::sim::FrameRequest{true, false});
+    double worst = 0.0;
+    for (std::size_t i = 0; i < heights.size(); ++i)
+      worst = std::max(worst, std::fabs(double(heights[i]) - double(truth.height[i])));
+    INFO("tick " << tick);
+    CHECK(worst <= bound);
+  }
 }
