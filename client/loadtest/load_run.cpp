@@ -369,7 +369,7 @@ class Driver {
   double max_delay_s_ = 0.0;  // the largest jitter-adapted delay any client's frame was judged by
   int connected_at_end_ = 0;
   std::string record_error_;
-  std::optional<FrameRecorder> recorder_;
+  std::optional<client::FrameRecorder> recorder_;
   std::optional<Tick> recorded_tick_;  // client 0's file holds frames in tick order
   std::vector<std::unique_ptr<codec::DecodeMemo>> memos_;
   std::map<std::uint64_t, FrameError> verdicts_;  // by ReconstructedFrame::shared_id

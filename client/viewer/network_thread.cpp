@@ -10,7 +10,7 @@
 #include <asio/steady_timer.hpp>
 
 #include "client/viewer/thread_cpu_clock.hpp"
-#include "npy_writer.hpp"
+#include "frame_recorder.hpp"
 #include "profile.hpp"
 
 namespace ocean::viewer {
@@ -25,7 +25,7 @@ std::uint64_t session_bytes(const client::ClientSession& s) { return s.stats().t
 }  // namespace
 
 struct NetworkThread::Recording {
-  std::optional<codec::NpyWriter> writer;
+  std::optional<client::FrameRecorder> writer;  // heights, and each frame's tick beside them
   int grid = 0;
   std::optional<Tick> last_tick;  // the file holds frames in tick order
 };
@@ -152,12 +152,12 @@ void NetworkThread::on_frame(const codec::ReconstructedFrame& frame, Tick tick) 
   std::lock_guard lock(mutex_);
   try {
     if (!recording_->writer && stats_.record_error.empty()) {
-      recording_->writer.emplace(config_.record_path, grid, grid);
+      recording_->writer.emplace(config_.record_path);
       recording_->grid = grid;
     }
     if (recording_->writer && recording_->grid == grid && (!recording_->last_tick || tick > *recording_->last_tick)) {
       recording_->last_tick = tick;
-      recording_->writer->append(frame.height);
+      recording_->writer->append(static_cast<std::int64_t>(tick), grid, frame.height);
       ++stats_.frames_recorded;
     } else {
       ++stats_.frames_not_recorded;

@@ -14,6 +14,8 @@
 #include "series_csv.hpp"
 
 using namespace ocean::loadtest;
+using ocean::client::FrameRecorder;
+using ocean::client::ticks_path_for;
 
 TEST_CASE("latency histogram: nearest-rank percentiles to the bin") {
   LatencyHistogram h;

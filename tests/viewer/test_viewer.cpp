@@ -125,7 +125,26 @@ TEST_CASE("recording (--record) writes the heights of every received frame") {
   in.seekg(0, std::ios::end);
   CHECK(static_cast<std::uint64_t>(in.tellg()) == 128 + summary.net.frames_recorded * 32 * 32 * sizeof(float));
   in.close();
+  // Beside it, the tick of every recorded frame (int64), rising, one per frame.
+  const auto ticks_npy = temp_path("frames.ticks.npy");
+  std::ifstream ticks(ticks_npy, std::ios::binary);
+  REQUIRE(ticks);
+  ticks.seekg(0, std::ios::end);
+  const auto size = static_cast<std::uint64_t>(ticks.tellg());
+  REQUIRE(size >= 128);
+  const std::uint64_t count = (size - 128) / sizeof(std::int64_t);
+  CHECK(count == summary.net.frames_recorded);
+  ticks.seekg(128);
+  std::int64_t previous = -1;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::int64_t tick = 0;
+    ticks.read(reinterpret_cast<char*>(&tick), sizeof tick);
+    CHECK(tick > previous);
+    previous = tick;
+  }
+  ticks.close();
   std::filesystem::remove(npy);
+  std::filesystem::remove(ticks_npy);
 }
 
 TEST_CASE("no server: the headless viewer gives up after its timeout with a reason") {

@@ -1,4 +1,4 @@
-// FrameRecorder: --record FILE.npy - client 0's reconstructed heights (frames x grid x grid
+// FrameRecorder: --record FILE.npy (viewer, load test) - reconstructed heights (frames x grid x grid
 // float32, codec::NpyWriter) and, beside them in FILE.ticks.npy, the tick of every recorded frame
 // (int64, one per frame), so a recording can be compared with the sim tick by tick.
 #pragma once
@@ -11,7 +11,7 @@
 
 #include "npy_writer.hpp"
 
-namespace ocean::loadtest {
+namespace ocean::client {
 
 // A 1-D int64 NPY v1.0 file, appended to as it goes, its length patched into the header on close.
 class TickNpyWriter {
@@ -47,4 +47,4 @@ class FrameRecorder {
   std::optional<TickNpyWriter> ticks_;
 };
 
-}  // namespace ocean::loadtest
+}  // namespace ocean::client

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace ocean::loadtest {
+namespace ocean::client {
 namespace {
 constexpr std::size_t kHeaderBytes = 128;
 }
@@ -81,4 +81,4 @@ void FrameRecorder::close() {
   if (ticks_) ticks_->close();
 }
 
-}  // namespace ocean::loadtest
+}  // namespace ocean::client
