@@ -1,4 +1,4 @@
-// The tick file mirrors NpyWriter's layout: a fixed 128-byte header, so the shape can be patched.
+// The tick file has NpyWriter's layout: a fixed 128-byte header, so the length can be patched.
 #include "frame_recorder.hpp"
 
 #include <bit>
@@ -7,10 +7,6 @@
 #include <vector>
 
 namespace ocean::client {
-namespace {
-constexpr std::size_t kHeaderBytes = 128;
-}
-
 TickNpyWriter::TickNpyWriter(const std::string& path) : path_(path) {
   file_ = std::fopen(path.c_str(), "wb");
   if (!file_) throw std::runtime_error("cannot open " + path + " for writing");
@@ -24,23 +20,7 @@ TickNpyWriter::~TickNpyWriter() {
   }
 }
 
-void TickNpyWriter::write_header() {
-  char dict[kHeaderBytes];
-  const int len = std::snprintf(dict, sizeof dict, "{'descr': '<i8', 'fortran_order': False, 'shape': (%llu,), }",
-                                static_cast<unsigned long long>(count_));
-  const std::size_t dict_room = kHeaderBytes - 10;  // magic(6) + version(2) + length(2)
-  if (len < 0 || static_cast<std::size_t>(len) + 1 > dict_room) throw std::runtime_error("header too long for " + path_);
-  std::vector<char> h(kHeaderBytes, ' ');
-  std::memcpy(h.data(), "\x93NUMPY", 6);
-  h[6] = 1;
-  h[7] = 0;
-  h[8] = static_cast<char>(dict_room & 0xFF);
-  h[9] = static_cast<char>(dict_room >> 8);
-  std::memcpy(h.data() + 10, dict, static_cast<std::size_t>(len));
-  h[kHeaderBytes - 1] = '\n';
-  if (std::fseek(file_, 0, SEEK_SET) != 0 || std::fwrite(h.data(), 1, h.size(), file_) != h.size())
-    throw std::runtime_error("cannot write the header of " + path_);
-}
+void TickNpyWriter::write_header() { codec::write_npy_header(file_, path_, "<i8", "(" + std::to_string(count_) + ",)"); }
 
 void TickNpyWriter::append(std::int64_t value) {
   if (!file_) throw std::runtime_error(path_ + " is closed");

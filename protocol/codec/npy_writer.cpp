@@ -23,12 +23,13 @@ NpyWriter::~NpyWriter() {
   }
 }
 
-void NpyWriter::write_header() {
+void write_npy_header(std::FILE* file, const std::string& path, const char* descr, const std::string& shape) {
+  constexpr std::size_t kHeaderBytes = NpyWriter::kHeaderBytes;
   char dict[kHeaderBytes];
-  const int len = std::snprintf(dict, sizeof dict, "{'descr': '<f4', 'fortran_order': False, 'shape': (%llu, %d, %d), }",
-                                static_cast<unsigned long long>(frames_), rows_, cols_);
+  const int len = std::snprintf(dict, sizeof dict, "{'descr': '%s', 'fortran_order': False, 'shape': %s, }", descr,
+                                shape.c_str());
   const std::size_t dict_room = kHeaderBytes - 10;  // magic(6) + version(2) + length(2)
-  if (len < 0 || static_cast<std::size_t>(len) + 1 > dict_room) throw std::runtime_error("NpyWriter: header too long");
+  if (len < 0 || static_cast<std::size_t>(len) + 1 > dict_room) throw std::runtime_error("NPY header too long for " + path);
   std::vector<char> h(kHeaderBytes, ' ');
   const char magic[] = "\x93NUMPY";
   std::memcpy(h.data(), magic, 6);
@@ -38,8 +39,13 @@ void NpyWriter::write_header() {
   h[9] = static_cast<char>(dict_room >> 8);
   std::memcpy(h.data() + 10, dict, static_cast<std::size_t>(len));
   h[kHeaderBytes - 1] = '\n';
-  if (std::fseek(file_, 0, SEEK_SET) != 0 || std::fwrite(h.data(), 1, h.size(), file_) != h.size())
-    throw std::runtime_error("NpyWriter: cannot write the header of " + path_);
+  if (std::fseek(file, 0, SEEK_SET) != 0 || std::fwrite(h.data(), 1, h.size(), file) != h.size())
+    throw std::runtime_error("cannot write the NPY header of " + path);
+}
+
+void NpyWriter::write_header() {
+  write_npy_header(file_, path_, "<f4",
+                   "(" + std::to_string(frames_) + ", " + std::to_string(rows_) + ", " + std::to_string(cols_) + ")");
 }
 
 void NpyWriter::append(std::span<const float> frame) {

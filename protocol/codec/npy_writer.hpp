@@ -30,6 +30,10 @@ class NpyWriter {
   std::FILE* file_ = nullptr;
 };
 
+// Writes (or rewrites, at offset 0) the fixed-size NPY v1.0 header of an array of `descr` (e.g.
+// "<f4", "<i8") and `shape` (e.g. "(12, 64, 64)"); throws std::runtime_error naming the path.
+void write_npy_header(std::FILE* file, const std::string& path, const char* descr, const std::string& shape);
+
 // Writes a whole recording at once: frames.size() / (rows * cols) frames.
 void write_npy(const std::string& path, int rows, int cols, std::span<const float> frames);
 
