@@ -14,6 +14,7 @@ bool FramePredictor::predict(const codec::Decoder& decoder, Tick tick, codec::Re
   for (Tick t : decoder.complete_ticks())
     if (t <= tick) found = true, base = t;
   if (!found || tick - base > max_ticks_ahead_) return false;
+  if (tick > base && !decoder.scenes().prepare(base, tick, false)) return false;
   state_ = *decoder.state(base);
   // Through the decoder's scenes: a weather change announced ahead is predicted exactly too.
   decoder.scenes().advance(state_, base, tick);
