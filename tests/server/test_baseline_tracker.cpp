@@ -23,8 +23,8 @@ TEST_CASE("UDP baselines are the newest acked state; TCP ones the last queued") 
   CHECK(tracker.choose(13, false, held) == StateId{10, 1});  // TCP ignores UDP acks
   tracker.on_ack({40, 0});  // a tick never sent: changes nothing
   CHECK(tracker.choose(13, true, held) == StateId{11, 2});
-  // Beyond the 32-tick gap, or gone from the encoder, nothing qualifies: a key is due.
-  CHECK(!tracker.choose(11 + 33, true, held));
+  // Beyond the baseline window, or gone from the encoder, nothing qualifies: a key is due.
+  CHECK(!tracker.choose(11 + ocean::protocol::kMaxBaselineGap + 1, true, held));
   CHECK(!tracker.choose(13, true, [](StateId) { return false; }));
   tracker.reset();
   CHECK(!tracker.choose(13, true, held));
@@ -56,7 +56,7 @@ TEST_CASE("baselines prefer the grid, so sessions acking different ticks share o
   CHECK(a.is_acked(StateId{13, 13}));   // the newest acked stays usable
   CHECK(!a.is_acked(StateId{11, 11}));
   // Off the gap limit the grid state gives way to the newest acked one.
-  CHECK(a.choose(13 + 33, true, held) == std::nullopt);
+  CHECK(a.choose(13 + ocean::protocol::kMaxBaselineGap + 1, true, held) == std::nullopt);
   CHECK(a.choose(15, true, [](StateId s) { return s.tick != 12; }) == StateId{13, 13});
   CHECK(a.root_tick() == 8u);
 }
@@ -64,13 +64,14 @@ TEST_CASE("baselines prefer the grid, so sessions acking different ticks share o
 TEST_CASE("a key with nothing sent after it stays a baseline however late it is acked") {
   BaselineTracker t(4);
   t.record_sent(100, StateId{100, 1}, true, true);
-  // A thin link: the ack of the key arrives 60 ticks later, nothing else was sent meanwhile.
+  // A thin link: the ack of the key arrives long after, nothing else was sent meanwhile.
+  constexpr ocean::Tick late = 100 + ocean::protocol::kMaxBaselineGap + 20;
   t.on_ack({100, 0});
-  CHECK(t.choose(160, true, held) == StateId{100, 1});
+  CHECK(t.choose(late, true, held) == StateId{100, 1});
   CHECK(t.choose(100 + ocean::protocol::kMaxFrameLag + 4, true, held) == std::nullopt);
-  // Once later frames went out the client may have dropped the key: the ack window applies again.
-  t.record_sent(161, StateId{161, 2}, false);
-  CHECK(t.choose(164, true, held) == std::nullopt);
+  // Once later frames went out the client may have dropped the key: the baseline window applies.
+  t.record_sent(late + 1, StateId{late + 1, 2}, false);
+  CHECK(t.choose(late + 4, true, held) == std::nullopt);
 }
 
 TEST_CASE("a key starts a new root: nothing from before it is chosen again") {
