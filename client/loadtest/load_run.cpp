@@ -66,21 +66,26 @@ class Driver {
       // The figures of a run no client took part in are zeros, not a measurement.
       std::string why = clients_.empty() || !clients_[0].connection ? std::string("never started")
                                                                     : clients_[0].connection->counters().last_close_reason;
-      result.error = "no client ever connected to " + o_.host + ":" + o_.port + " (client 0: " +
+      result.error = "no client ever connected to " + server_names() + " (client 0: " +
                      (why.empty() ? "no answer" : why) + ")" + (result.error.empty() ? "" : "; " + result.error);
     }
     return result;
   }
 
  private:
+  std::string server_names() const {
+    std::string names;
+    for (const client::ServerEndpoint& s : o_.servers) names += (names.empty() ? "" : ",") + s.host + ":" + s.port;
+    return names;
+  }
+
   struct Clock {
     static double now() { return client::ClientConnection::now_s(); }
   };
 
   void start_client(std::size_t i) {
     client::ClientConnectionConfig config;
-    config.host = o_.host;
-    config.port = o_.port;
+    config.servers = o_.servers;
     config.session.profile_id = find_profile(o_.profile)->id;
     config.session.transport = o_.transport == "tcp" ? wire::Transport::tcp : wire::Transport::udp;
     config.session.client_name = "ocean-loadtest-" + std::to_string(i);

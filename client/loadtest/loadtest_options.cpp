@@ -1,7 +1,6 @@
 #include "loadtest_options.hpp"
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cmath>
 
 #include "profile.hpp"
@@ -22,26 +21,16 @@ std::string profile_names() {
   return names;
 }
 
-// "host:port" or "[v6]:port".
-bool split_server(const std::string& text, std::string& host, std::string& port) {
-  const auto colon = text.rfind(':');
-  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) return false;
-  host = text.substr(0, colon);
-  port = text.substr(colon + 1);
-  if (host.size() > 2 && host.front() == '[' && host.back() == ']') host = host.substr(1, host.size() - 2);
-  if (!std::all_of(port.begin(), port.end(), [](char c) { return c >= '0' && c <= '9'; })) return false;
-  const long n = std::stol(port.substr(0, 6));
-  return n >= 1 && n <= 65535;
-}
-
 }  // namespace
 
 OptionsResult parse_options(const std::vector<std::string>& args) {
   OptionsResult result;
   LoadtestOptions& o = result.options;
   CLI::App app{"ocean-loadtest: N simulated clients on one thread, each behind a simulated link, every frame checked against the sim"};
-  std::string server = o.host + ":" + o.port;
-  app.add_option("--server", server, "HOST:PORT of the server's TCP listener");
+  std::vector<std::string> server{o.host + ":" + o.port};
+  app.add_option("--server", server,
+                 "HOST:PORT of the server's TCP listener; a comma list (or the flag repeated) names replicas "
+                 "a client fails over to, round robin");
   app.add_option("--clients", o.clients, "number of simulated clients, 1..100000");
   app.add_option("--ramp", o.ramp_s, "seconds over which the clients start, >= 0");
   app.add_option("--duration", o.duration_s, "seconds measured after the ramp, > 0");
@@ -83,10 +72,9 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
   o.progress = !quiet;
   if (o.list_scenarios) return result;
 
-  if (!split_server(server, o.host, o.port)) {
-    result.error = "--server: '" + server + "' is not HOST:PORT with a port in 1..65535";
-    return result;
-  }
+  if (!client::parse_server_list(server, o.servers, result.error)) return result;
+  o.host = o.servers.front().host;
+  o.port = o.servers.front().port;
   if (o.clients < 1 || o.clients > 100000) {
     result.error = "--clients: " + std::to_string(o.clients) + " is out of range; allowed 1..100000";
     return result;

@@ -7,12 +7,15 @@
 #include <vector>
 
 #include "link_spec.hpp"
+#include "server_list.hpp"
 
 namespace ocean::loadtest {
 
 struct LoadtestOptions {
-  std::string host = "127.0.0.1";
+  std::string host = "127.0.0.1";  // servers[0], for messages
   std::string port = "7700";
+  // --server's list: every client fails over round robin through it (ClientConnectionConfig::servers).
+  std::vector<client::ServerEndpoint> servers{{"127.0.0.1", "7700"}};
   int clients = 10;
   double ramp_s = 1.0;       // clients start evenly spread over this long
   double duration_s = 10.0;  // measured time after the ramp

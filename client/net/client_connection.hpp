@@ -19,16 +19,10 @@
 
 #include "client_session.hpp"
 #include "packet_link.hpp"
+#include "server_list.hpp"
 #include "tcp_framer.hpp"
 
 namespace ocean::client {
-
-// One server to connect to: a host name or IP literal and its TCP port (a number or service name).
-struct ServerEndpoint {
-  std::string host;
-  std::string port;
-  bool operator==(const ServerEndpoint&) const = default;
-};
 
 struct ClientConnectionConfig {
   std::string host = "127.0.0.1";

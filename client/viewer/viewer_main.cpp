@@ -1,5 +1,6 @@
 // ocean-viewer: renders the sea an ocean-server streams, in a window or headless.
 //   ocean-viewer --server 127.0.0.1:7100                         window (W/S/A/D, drag, F, H, Q/Esc)
+//   ocean-viewer --server 10.0.0.1:7100,10.0.0.2:7100             fail over between replicas
 //   ocean-viewer --server 127.0.0.1:7100 --headless --frames 300 --size 1280x720 --screenshot out.png --json
 #include <cstdio>
 #include <cstdlib>
@@ -25,7 +26,10 @@ std::string profile_names() {
 int main(int argc, char** argv) {
   ocean::viewer::ViewerOptions o;
   CLI::App app{"Render the ocean an ocean-server streams, with the GLES 2 renderer"};
-  app.add_option("--server", o.server, "HOST:PORT of the server's TCP listener")->required();
+  app.add_option("--server", o.server,
+                 "HOST:PORT of the server's TCP listener; a comma list (or the flag repeated) names replicas to "
+                 "fail over to, round robin")
+      ->required();
   ocean::viewer::add_output_flags(
       app, o, {300, 10000000, "print one JSON summary {frames, fps, kbps, cpu_ms_per_frame, ...}"});
   app.add_option("--profile", o.profile, "stream profile to ask for (" + profile_names() + ")");
@@ -42,8 +46,11 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   std::string error;
-  if (!ocean::viewer::parse_server_address(o.server, o.host, o.port, error) ||
-      !ocean::viewer::parse_size(o.size, o.width, o.height, error)) {
+  if (ocean::client::parse_server_list(o.server, o.servers, error)) {
+    o.host = o.servers.front().host;
+    o.port = o.servers.front().port;
+  }
+  if (!error.empty() || !ocean::viewer::parse_size(o.size, o.width, o.height, error)) {
     std::fprintf(stderr, "ocean-viewer: %s\n", error.c_str());
     return 2;
   }

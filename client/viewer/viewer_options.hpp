@@ -1,17 +1,21 @@
 // ViewerOptions: everything ocean-viewer's command line sets - the flags both viewers share
-// (CommonViewerOptions) plus the network's own - and the parse of its HOST:PORT value.
+// (CommonViewerOptions) plus the network's own. --server is parsed by client::parse_server_list.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "client/viewer/viewer_flags.hpp"
+#include "server_list.hpp"
 
 namespace ocean::viewer {
 
 struct ViewerOptions : CommonViewerOptions {
-  std::string server = "127.0.0.1:7100";  // HOST:PORT of the server's TCP listener
-  std::string host = "127.0.0.1", port = "7100";
+  std::vector<std::string> server;  // --server values as given: HOST:PORT[,HOST:PORT...], repeatable
+  std::string host = "127.0.0.1", port = "7100";  // servers[0] when servers is set; for messages
+  // Replicas to fail over between, round robin; empty = {host, port} only.
+  std::vector<client::ServerEndpoint> servers;
   std::string profile;            // empty: the server's choice
   std::string transport = "udp";  // udp (falls back to tcp by itself) or tcp
   std::string record_path;        // .npy of every received frame's heights
@@ -19,8 +23,5 @@ struct ViewerOptions : CommonViewerOptions {
   double first_frame_timeout_s = 10.0;
   double interpolation_delay_s = 0.0;  // 0: three send intervals (FrameTimeline's default)
 };
-
-// Splits "host:port" / "[v6]:port"; false with a reason when it is not of that form.
-bool parse_server_address(const std::string& text, std::string& host, std::string& port, std::string& error);
 
 }  // namespace ocean::viewer

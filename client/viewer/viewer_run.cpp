@@ -133,6 +133,7 @@ int run_with(LoopFunction loop, const ViewerOptions& o, ViewerSummary& summary, 
 bool make_network_config(const ViewerOptions& o, NetworkThreadConfig& config, std::string& error) {
   config.connection.host = o.host;
   config.connection.port = o.port;
+  config.connection.servers = o.servers;
   config.connection.session.client_name = "ocean-viewer";
   config.connection.session.bandwidth_bps = o.bandwidth_bps;
   if (o.transport == "tcp") {

@@ -52,6 +52,20 @@ TEST_CASE("options: bad values name their flag") {
   CHECK(ok.options.port == "7100");
 }
 
+TEST_CASE("options: --server takes a comma list and repeats, in order; a bad entry is named") {
+  using ocean::client::ServerEndpoint;
+  const OptionsResult list = parse_options({"--server", "10.0.0.1:7100,[::1]:7200", "--server", "b.example:7300"});
+  REQUIRE(list.error.empty());
+  CHECK(list.options.servers ==
+        std::vector<ServerEndpoint>{{"10.0.0.1", "7100"}, {"::1", "7200"}, {"b.example", "7300"}});
+  CHECK(list.options.host == "10.0.0.1");
+  CHECK(parse_options({}).options.servers == std::vector<ServerEndpoint>{{"127.0.0.1", "7700"}});
+  CHECK_THAT(parse_options({"--server", "a:1,,b:2"}).error, Catch::Contains("empty entry"));
+  CHECK_THAT(parse_options({"--server", "a:1,b:0"}).error, Catch::Contains("'b:0'"));
+  CHECK_THAT(parse_options({"--server", "a:1,b"}).error, Catch::Contains("'b' is not HOST:PORT"));
+  CHECK_THAT(parse_options({"--server", "::1:7100"}).error, Catch::Contains("brackets"));
+}
+
 TEST_CASE("options: the announced bandwidth is --bandwidth, else the scenario's, else the link's rate") {
   CHECK(parse_options({"--scenario", "mobile-3g"}).options.bandwidth_bps == 256000);
   CHECK(parse_options({"--scenario", "desktop-lan"}).options.bandwidth_bps == 0);

@@ -1,0 +1,115 @@
+#include "admin_options.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fstream>
+#include <sstream>
+
+namespace ocean::admin {
+namespace {
+
+constexpr const char* kExitCodes =
+    "exit codes: 0 done (the change was announced, or --show printed the scene); 2 usage or config "
+    "(bad flag or value, unreadable token file); 3 refused by the server (unauthorized, out_of_range: its "
+    "reason on stderr); 4 server unreachable, connection lost, or no answer within --timeout";
+
+// The file's first line, trailing whitespace trimmed: a token file written by `echo` ends in \n,
+// and that newline is not part of the token the server holds.
+bool read_token_file(const std::string& path, std::string& token, std::string& error) {
+  std::ifstream in(path);
+  if (!in) {
+    error = "--token-file '" + path + "': cannot open it for reading";
+    return false;
+  }
+  std::getline(in, token);
+  while (!token.empty() && (token.back() == '\r' || token.back() == ' ' || token.back() == '\t')) token.pop_back();
+  if (token.empty()) {
+    error = "--token-file '" + path + "': the first line is empty; it must hold the admin token";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, const char* env_token) {
+  AdminOptionsResult result;
+  AdminOptions& o = result.options;
+  CLI::App app{"ocean-admin: change the scene an ocean-server runs (wind, amplitude, choppiness, spectrum), "
+               "or print the scene in force with --show. A change takes effect one second (the server's lead) "
+               "after the server accepts it, on every session of that server only"};
+  app.footer(kExitCodes);
+  std::string server, token_file, spectrum;
+  double wind_speed = 0, wind_dir = 0, amplitude = 0, choppiness = 0;
+  app.add_option("--server", server, "HOST:PORT of the server's TCP listener")->required();
+  app.add_option("--token-file", token_file, "file whose first line is the admin token (default: $OCEAN_ADMIN_TOKEN)");
+  app.add_flag("--show", o.show, "print the scene in force (and any announced for later ticks) as JSON; needs no token");
+  // The ranges are the protocol's (PROTOCOL.md 8, ParamChange): refusing here names the flag,
+  // where the server could only name the wire field.
+  auto* ws = app.add_option("--wind-speed", wind_speed, "wind speed, m/s, [0, 100]")->check(CLI::Range(0.0, 100.0));
+  auto* wd = app.add_option("--wind-dir", wind_dir, "direction the wind blows towards, degrees from +x towards +z, "
+                                                    "[-1e6, 1e6]")->check(CLI::Range(-1e6, 1e6));
+  auto* am = app.add_option("--amplitude", amplitude, "scale on the spectrum's energy, [0, 1e6]")->check(CLI::Range(0.0, 1e6));
+  auto* ch = app.add_option("--choppiness", choppiness, "horizontal displacement scale, [0, 100]")->check(CLI::Range(0.0, 100.0));
+  auto* sp = app.add_option("--spectrum", spectrum, "phillips or jonswap")->check(CLI::IsMember({"phillips", "jonswap"}));
+  app.add_option("--timeout", o.timeout_s, "seconds to wait for the server, [0.1, 600]")->check(CLI::Range(0.1, 600.0));
+
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    result.help = true;
+    result.error = app.help();
+    return result;
+  } catch (const CLI::ParseError& e) {
+    result.error = e.what();
+    return result;
+  }
+  std::vector<client::ServerEndpoint> servers;
+  if (!client::parse_server_list({server}, servers, result.error)) return result;
+  if (servers.size() != 1) {
+    // A change reaches only the replica it is sent to (README): one server, on purpose.
+    result.error = "--server: '" + server + "' names " + std::to_string(servers.size()) +
+                   " servers; ocean-admin changes one server at a time";
+    return result;
+  }
+  o.server = servers.front();
+  if (*ws) o.wind_speed_mps = wind_speed;
+  if (*wd) o.wind_dir_deg = wind_dir;
+  if (*am) o.amplitude = amplitude;
+  if (*ch) o.choppiness = choppiness;
+  if (*sp) o.spectrum = spectrum == "jonswap" ? wire::Spectrum::jonswap : wire::Spectrum::phillips;
+  const bool change = *ws || *wd || *am || *ch || *sp;
+  if (o.show == change) {
+    result.error = o.show ? "--show prints the scene and changes nothing: leave out the change flags"
+                          : "nothing to do: give --show, or at least one of --wind-speed, --wind-dir, "
+                            "--amplitude, --choppiness, --spectrum";
+    return result;
+  }
+  if (o.show) return result;
+  if (!token_file.empty()) {
+    if (!read_token_file(token_file, o.token, result.error)) return result;
+  } else if (env_token && *env_token) {
+    o.token = env_token;
+  } else {
+    result.error = "no admin token: give --token-file FILE or set OCEAN_ADMIN_TOKEN";
+    return result;
+  }
+  if (o.token.size() > 128) {
+    result.error = "the admin token is " + std::to_string(o.token.size()) + " bytes; the protocol allows at most 128";
+    return result;
+  }
+  return result;
+}
+
+protocol::ParamChange param_change(const AdminOptions& o) {
+  protocol::ParamChange change;
+  change.admin_token = o.token;
+  change.wind_speed_mps = o.wind_speed_mps;
+  change.wind_dir_deg = o.wind_dir_deg;
+  change.amplitude = o.amplitude;
+  change.choppiness = o.choppiness;
+  change.spectrum = o.spectrum;
+  return change;
+}
+
+}  // namespace ocean::admin

@@ -1,0 +1,44 @@
+// AdminOptions: what ocean-admin is told on its command line, and its exit codes. Parsing never
+// exits; an error names the flag and what it accepts.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "message_types.hpp"
+#include "server_list.hpp"
+
+namespace ocean::admin {
+
+// The exit codes, one per kind of failure, so scripts can tell a typo from a refusal from an outage.
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitUsage = 2,        // bad flag or value, unreadable/empty token file, no token
+  kExitRefused = 3,      // the server answered Error (unauthorized, out_of_range, ...)
+  kExitUnreachable = 4,  // no connection, the connection dropped, or no answer in --timeout
+};
+
+struct AdminOptions {
+  client::ServerEndpoint server;
+  std::string token;       // from --token-file, else $OCEAN_ADMIN_TOKEN
+  bool show = false;
+  double timeout_s = 5.0;  // for the whole exchange
+  // The change: each field present only when its flag was given (ParamChange: absent = unchanged).
+  std::optional<double> wind_speed_mps, wind_dir_deg, amplitude, choppiness;
+  std::optional<wire::Spectrum> spectrum;
+};
+
+struct AdminOptionsResult {
+  AdminOptions options;
+  std::string error;  // empty on success
+  bool help = false;  // --help: `error` holds the help text
+};
+
+// args excludes the program name; env_token is $OCEAN_ADMIN_TOKEN (null when unset).
+AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, const char* env_token);
+
+// The ParamChange the options ask for (request_id and token filled in by the caller).
+protocol::ParamChange param_change(const AdminOptions& options);
+
+}  // namespace ocean::admin
