@@ -134,7 +134,6 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
       add_scene(update.effective_tick, update.serial, update.scene);
       if (state_ != State::streaming) return;
       scene_ = update.scene;
-      scene_effective_tick_ = update.effective_tick;
       if (events_.on_scene_update) events_.on_scene_update(update);
       return;
     }
@@ -179,7 +178,6 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   add_scene(0, welcome.scene_serial, welcome.scene);  // in force since before any frame it will get
   if (state_ == State::closed) return;
   scene_ = welcome.scene;
-  scene_effective_tick_ = welcome.current_tick;
   max_message_bytes_ = welcome.max_message_bytes;
   state_ = State::streaming;
   welcome_at_ = now;

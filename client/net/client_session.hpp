@@ -60,10 +60,10 @@ class ClientSession {
   const ClientStats& stats() const { return stats_; }
   const std::string& close_reason() const { return close_reason_; }
   const std::string& last_error() const { return last_error_; }  // the last Error the server sent
-  // Valid once streaming: the Welcome, the current scene (after SceneUpdates) and the decoder.
+  // Valid once streaming: the Welcome, the newest scene announced (a SceneUpdate's scene takes
+  // effect at its effective tick, which may still be ahead; the decoder knows them all).
   const std::optional<protocol::Welcome>& welcome() const { return welcome_; }
   const protocol::SceneParams& scene() const { return scene_; }
-  Tick scene_effective_tick() const { return scene_effective_tick_; }
   const codec::Decoder* decoder() const { return decoder_.get(); }
   const ClientSessionConfig& config() const { return config_; }
 
@@ -97,7 +97,6 @@ class ClientSession {
   std::string last_error_;
   std::optional<protocol::Welcome> welcome_;
   protocol::SceneParams scene_;
-  Tick scene_effective_tick_ = 0;
   std::unique_ptr<codec::Decoder> decoder_;
   std::size_t max_message_bytes_;
   std::vector<std::uint8_t> scratch_;  // aligned copy of a misaligned input
