@@ -6,6 +6,7 @@
 #include "decoder.hpp"
 #include "encoder.hpp"
 #include "frame_records.hpp"
+#include "profile_stream.hpp"
 #include "stream_wire.hpp"
 #include "wire_params.hpp"
 #include "ocean.hpp"
@@ -355,14 +356,14 @@ int run_codec(int argc, char** argv) {
         }
         o.tally.bytes += double(bytes + e->chunks.size() * codec::kEnvelopeOverheadBytes);
         for (const Chunk& c : e->chunks) {
-          const protocol::FrameRecord record{c.tick, c.baseline, c.key, c.index, c.count, c.payload};
+          const protocol::FrameRecord record = server::record_of(c);
           o.ip_bytes += double(protocol::frames_datagram(std::span(&record, 1)).size() + codec::kIpUdpHeaderBytes);
         }
         if (e->chunks.size() == 1) {
           std::vector<protocol::FrameRecord> bundle;
-          for (const Chunk& c : o.recent) bundle.push_back({c.tick, c.baseline, c.key, c.index, c.count, c.payload});
+          for (const Chunk& c : o.recent) bundle.push_back(server::record_of(c));
           const Chunk& c = e->chunks.front();
-          bundle.push_back({c.tick, c.baseline, c.key, c.index, c.count, c.payload});
+          bundle.push_back(server::record_of(c));
           o.ip_bytes_bundled += double(protocol::frames_datagram(bundle).size() + codec::kIpUdpHeaderBytes);
           o.recent.push_back(c);
           if (o.recent.size() > 2) o.recent.erase(o.recent.begin());
