@@ -13,7 +13,7 @@ out=${OCEAN_DEMO_OUT:-out}
 mkdir -p "$out"
 
 echo "== the simulation: one tick of the default scene =="
-"$build_dir"/server/sim/ocean-simdump --summary
+"$build_dir"/sim/ocean-simdump --summary
 
 echo "== ocean-server on 127.0.0.1:$port =="
 "$build_dir"/server/ocean-server --listen "127.0.0.1:$port" --metrics-listen "127.0.0.1:$((port + 1))" \

@@ -20,7 +20,7 @@ TickNpyWriter::~TickNpyWriter() {
   }
 }
 
-void TickNpyWriter::write_header() { codec::write_npy_header(file_, path_, "<i8", "(" + std::to_string(count_) + ",)"); }
+void TickNpyWriter::write_header() { write_npy_header(file_, path_, "<i8", "(" + std::to_string(count_) + ",)"); }
 
 void TickNpyWriter::append(std::int64_t value) {
   if (!file_) throw std::runtime_error(path_ + " is closed");

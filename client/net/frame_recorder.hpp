@@ -1,5 +1,5 @@
 // FrameRecorder: --record FILE.npy (viewer, load test) - reconstructed heights (frames x grid x grid
-// float32, codec::NpyWriter) and, beside them in FILE.ticks.npy, the tick of every recorded frame
+// float32, NpyWriter) and, beside them in FILE.ticks.npy, the tick of every recorded frame
 // (int64, one per frame), so a recording can be compared with the sim tick by tick.
 #pragma once
 
@@ -43,7 +43,7 @@ class FrameRecorder {
 
  private:
   std::string path_;
-  std::optional<codec::NpyWriter> heights_;
+  std::optional<NpyWriter> heights_;
   std::optional<TickNpyWriter> ticks_;
 };
 

@@ -1,5 +1,5 @@
 // h0(k): the random complex amplitude of each wave at t = 0, from the spectrum and a hashed
-// Box-Muller Gaussian that depends only on (seed, kx, kz). A copy of server/sim/mode_gaussian.cpp
+// Box-Muller Gaussian that depends only on (seed, kx, kz). A copy of sim/mode_gaussian.cpp
 // and initial_amplitude.cpp with det_ functions (the codec may not link the sim); the integer hash
 // is the sim's exactly, so both draw the same Gaussian for every wave.
 #pragma once
@@ -16,7 +16,7 @@ struct SceneComplex {
   double im = 0.0;
 };
 
-// splitmix64 finaliser (Steele, Lea, Flood 2014), as server/sim/mode_gaussian.hpp.
+// splitmix64 finaliser (Steele, Lea, Flood 2014), as sim/mode_gaussian.hpp.
 constexpr std::uint64_t scene_mix64(std::uint64_t x) {
   x += 0x9e3779b97f4a7c15ULL;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;

@@ -1,4 +1,4 @@
-// Phillips and JONSWAP/TMA as server/sim/spectrum.cpp evaluates them (see CODEC.md 7.6 for
+// Phillips and JONSWAP/TMA as sim/spectrum.cpp evaluates them (see CODEC.md 7.6 for
 // the normative order). Deep water is depth 0 here, the sim's infinity.
 #include "scene_spectrum.hpp"
 

@@ -1,7 +1,7 @@
 // SceneSpectrum: the sim's variance density P(k) (Phillips with the small-wave filter, or JONSWAP
 // with TMA depth attenuation, directional spreading and the frequency-to-wavenumber Jacobian),
 // written with det_ functions so that every decoder computes the same bits. A copy of
-// server/sim/{spectrum,dispersion}.cpp's formulas in the same order: the codec may not link the sim
+// sim/{spectrum,dispersion}.cpp's formulas in the same order: the codec may not link the sim
 // (clients never do), and the sim's libm calls differ between platforms in the last bits.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Horvath 2015 eqs. 40-46 as server/sim/spreading.cpp evaluates them, with det_ functions. Angles
+// Horvath 2015 eqs. 40-46 as sim/spreading.cpp evaluates them, with det_ functions. Angles
 // wrap exactly like the sim's remainder (det_wrap_angle differs only in the sign of a tie at +-pi,
 // where every spreading function is even).
 #include "scene_spreading.hpp"

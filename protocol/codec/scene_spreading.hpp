@@ -1,6 +1,6 @@
 // SceneSpreading: the sim's directional spreading functions D(w, theta) (cos-2s, Donelan-Banner,
 // Hasselmann; Horvath 2015) written with det_ functions, so every decoder gets the same bits. A copy
-// of server/sim/spreading.cpp's formulas in the same order: the codec may not link the sim.
+// of sim/spreading.cpp's formulas in the same order: the codec may not link the sim.
 #pragma once
 
 #include "scene_model_params.hpp"

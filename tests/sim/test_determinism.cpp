@@ -29,11 +29,11 @@ bool same_bits(const Frame& a, const Frame& b) {
 
 // ocean_add_test sets OCEAN_BUILD_DIR for CTest; run by hand, the tool is found next to this test.
 std::string simdump_path() {
-  if (const char* build = std::getenv("OCEAN_BUILD_DIR")) return std::string(build) + "/server/sim/ocean-simdump";
+  if (const char* build = std::getenv("OCEAN_BUILD_DIR")) return std::string(build) + "/sim/ocean-simdump";
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
   REQUIRE_FALSE(ec);
-  return (self.parent_path().parent_path().parent_path() / "server/sim/ocean-simdump").string();
+  return (self.parent_path().parent_path().parent_path() / "sim/ocean-simdump").string();
 }
 
 std::string run_simdump(const std::string& args) {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-using namespace ocean::codec;
+using namespace ocean;
 
 TEST_CASE("NpyWriter writes a v1.0 header with the final shape and the data after it") {
   const auto dir = std::filesystem::temp_directory_path() / ("ocean_npy_" + std::to_string(::getpid()));

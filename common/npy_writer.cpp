@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace ocean::codec {
+namespace ocean {
 
 NpyWriter::NpyWriter(const std::string& path, int rows, int cols) : path_(path), rows_(rows), cols_(cols) {
   if (rows <= 0 || cols <= 0) throw std::runtime_error("NpyWriter: rows and cols must be positive for " + path);
@@ -84,4 +84,4 @@ void write_npy(const std::string& path, int rows, int cols, std::span<const floa
   w.close();
 }
 
-}  // namespace ocean::codec
+}  // namespace ocean

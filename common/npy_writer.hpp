@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-namespace ocean::codec {
+namespace ocean {
 
 class NpyWriter {
  public:
@@ -37,4 +37,4 @@ void write_npy_header(std::FILE* file, const std::string& path, const char* desc
 // Writes a whole recording at once: frames.size() / (rows * cols) frames.
 void write_npy(const std::string& path, int rows, int cols, std::span<const float> frames);
 
-}  // namespace ocean::codec
+}  // namespace ocean
