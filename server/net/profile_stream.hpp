@@ -9,6 +9,7 @@
 #include "frame_records.hpp"
 #include "message_types.hpp"
 #include "scene_model.hpp"
+#include "shared_bytes.hpp"
 #include "profile.hpp"
 #include "stream_config.hpp"
 
@@ -18,8 +19,6 @@
 #include <vector>
 
 namespace ocean::server {
-
-using SharedBytes = std::shared_ptr<const protocol::Bytes>;
 
 // One encoded frame, ready for any session: the codec's frame and its chunks as wire bytes.
 struct SharedFrame {

@@ -6,6 +6,7 @@
 
 #include "bounded_queue.hpp"
 #include "frame_producer.hpp"
+#include "link.hpp"
 #include "metrics.hpp"
 #include "metrics_http_server.hpp"
 #include "server_config.hpp"
@@ -33,7 +34,7 @@ namespace ocean::server {
 // SO_RCVBUF and SO_SNDBUF asked for the UDP socket (the kernel caps them at net.core.*mem_max).
 inline constexpr int kUdpSocketBufferBytes = 4 << 20;
 
-class Server {
+class Server : public DatagramSocket {
  public:
   // All run on the network thread.
   using FrameSink = std::function<void(const std::shared_ptr<const TickFrames>&)>;
@@ -44,7 +45,7 @@ class Server {
   // Binds every socket and builds the simulation; throws std::system_error (address in use...)
   // or sim::ParamError. The config must have passed validate_server_config.
   explicit Server(ServerConfig config);
-  ~Server();
+  ~Server() override;
   Server(const Server&) = delete;
   Server& operator=(const Server&) = delete;
 
@@ -60,7 +61,7 @@ class Server {
   // The config's schedule, checked (immutable).
   const SceneSchedule& schedule() const { return schedule_; }
   // Sends one datagram without blocking; false when the socket refused it (the frame is lost).
-  bool send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to);
+  bool send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to) override;
 
   // Runs the network side on the calling thread until SIGINT, SIGTERM or stop().
   void run();

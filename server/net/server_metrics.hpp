@@ -30,7 +30,7 @@ class ServerMetrics {
   Counter& param_changes;    // admin ParamChanges accepted
   Gauge& send_queue_max_bytes;   // max over sessions of queued TCP bytes, per tick
   Counter& bundled_copies;   // earlier frames re-sent inside FrameBundles
-  Counter& root_merges;      // key roots merged into a newer key (SessionHubOptions::max_roots)
+  Counter& root_merges;      // key roots merged into a newer key (SessionCoreOptions::max_roots)
 
   Counter& frames_computed(std::string_view profile);
   Gauge& clients(std::string_view profile, std::string_view transport);

@@ -1,14 +1,12 @@
-// Session: one connected client as the SessionHub keeps it: its TCP link, the profile stream it
-// watches, its proven UDP address, its baselines, and the timers of keys, bandwidth and silence.
+// Session: one connected client as the SessionCore keeps it: its stream link (TCP), the profile
+// stream it watches, its proven UDP address, its baselines, and the timers of keys, bandwidth and silence.
 #pragma once
 
 #include "baseline_tracker.hpp"
 #include "profile_stream.hpp"
-#include "tcp_link.hpp"
+#include "link.hpp"
 #include "token_bucket.hpp"
 #include "udp_cookie.hpp"
-
-#include <asio/ip/udp.hpp>
 
 #include <cstdint>
 #include <deque>
@@ -16,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace ocean::server {
 
@@ -27,16 +26,15 @@ struct RecentFrame {
 
 struct Session {
   std::uint64_t id = 0;
-  std::shared_ptr<TcpLink> link;
-  std::string peer;                         // for logs
+  std::shared_ptr<StreamLink> link;
   bool welcomed = false;
   ProfileStream* stream = nullptr;          // set by the Welcome
   Cookie cookie{};
   bool wants_udp = false;                   // Hello / SetTransport
-  std::optional<asio::ip::udp::endpoint> udp;  // proven by a UdpHello
+  std::optional<UdpLink> udp;               // the address a UdpHello proved
   BaselineTracker baselines;
   std::deque<RecentFrame> recent_udp;       // the last kMaxUdpRedundancy single-chunk UDP frames
-  std::uint64_t tcp_frames_mark = 0;        // TcpLink::enqueued_total() after the last frame queued on TCP
+  std::uint64_t tcp_frames_mark = 0;        // link->enqueued_total() after the last frame queued on it
   bool need_key = true;                     // the next frame must be a key
   bool key_requested = false;               // a KeyframeRequest waits for its rate limit
   double last_key_s = -std::numeric_limits<double>::infinity();
@@ -46,7 +44,9 @@ struct Session {
   double last_heard_s = 0.0;
 
   bool on_udp() const { return wants_udp && udp.has_value(); }
-  const char* transport_name() const { return on_udp() ? "udp" : "tcp"; }
+  // Where frames go now: the metrics and log label.
+  std::string_view transport() const { return on_udp() ? udp->transport() : link->transport(); }
+  const std::string& peer() const { return link->peer(); }
 };
 
 }  // namespace ocean::server

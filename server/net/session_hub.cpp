@@ -1,316 +1,41 @@
 #include "session_hub.hpp"
 
-#include "admin_token.hpp"
-#include "hub_helpers.hpp"
-#include "message_builders.hpp"
-#include "message_readers.hpp"
-#include "server_log.hpp"
+#include "tcp_link.hpp"
 #include "tick_clock.hpp"
-#include "tick_loop.hpp"
-#include "verify_message.hpp"
-#include "wire_params.hpp"
-
-#include <sodium.h>
-#include <spdlog/spdlog.h>
-
-#include <algorithm>
 
 namespace ocean::server {
 
-using hub::cookie_endpoint;
-using hub::endpoint_text;
-using hub::unix_ms_now;
-
 namespace {
 
-SharedBytes share(protocol::Bytes bytes) { return std::make_shared<const protocol::Bytes>(std::move(bytes)); }
+Tick tick_now(const ServerConfig& config) {
+  const std::int64_t tick = TickClock(config.tick_rate_hz, config.epoch_unix_ms).tick_at(system_unix_ns());
+  return static_cast<Tick>(std::max<std::int64_t>(0, tick));
+}
+
+SessionCoreHost host_of(Server& server) {
+  return SessionCoreHost{server.config(), server.schedule(), server.metrics(), server.cookie_key(), server,
+                         server.udp_port(),
+                         [&server](const sim::SceneParams& scene, std::int64_t from) { server.request_scene(scene, from); }};
+}
 
 }  // namespace
 
-SessionHub::SessionHub(Server& server, SessionHubOptions options)
-    : server_(server),
-      options_(options),
-      scenes_(server.schedule(), static_cast<Tick>(std::lround(options.scene_lead_s * server.config().tick_rate_hz))) {
-  for (const std::string& name : server_.config().profiles) {
-    const Profile* profile = find_profile(std::string_view(name));
-    if (!profile) continue;
-    const codec::StreamConfig config = stream_config(*profile, server_.config().scene);
-    if (const std::string error = codec::validate(config); !error.empty()) {
-      spdlog::warn("profile {} is not offered to clients: {}", profile->name, error);
-      continue;
-    }
-    streams_.push_back(std::make_unique<ProfileStream>(*profile, config));
-  }
-  if (streams_.empty()) throw std::invalid_argument("--profiles: no offered profile can be streamed by the codec");
-  // The scenes in force now and within the lead, before the first tick: a Hello may come first.
-  const std::int64_t now_tick = TickClock(server_.config().tick_rate_hz, server_.config().epoch_unix_ms)
-                                    .tick_at(system_unix_ns());
-  tick_ = static_cast<Tick>(std::max<std::int64_t>(0, now_tick));
-  announce(scenes_.start(tick_));
-  for (std::size_t r = 0; r < datagram_rejects_.size(); ++r)
-    datagram_rejects_[r] = &server_.metrics().rejects(protocol::to_string(static_cast<protocol::Reason>(r)));
+SessionHub::SessionHub(Server& server, SessionCoreOptions options)
+    : server_(server), core_(host_of(server), options, tick_now(server.config())) {
   server_.set_connection_handler([this](asio::ip::tcp::socket socket) { on_connection(std::move(socket)); });
   server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
-    on_datagram(bytes, sender);
+    core_.on_datagram(bytes, sender, now_instant());
   });
-  server_.set_frame_sink([this](const std::shared_ptr<const TickFrames>& frames) { on_frames(frames); });
-  server_.set_stop_handler([this] { on_stop(); });
+  server_.set_frame_sink([this](const std::shared_ptr<const TickFrames>& frames) { core_.on_frames(frames, now_instant()); });
+  server_.set_stop_handler([this] { core_.stop(); });
 }
-
-codec::StreamConfig SessionHub::stream_config(const Profile& profile, const sim::SceneParams& scene) const {
-  codec::StreamConfig config =
-      codec::StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m);
-  config.tick_rate_hz = static_cast<std::uint16_t>(server_.config().tick_rate_hz);
-  return config;
-}
-
-std::uint64_t SessionHub::new_session_id() const {
-  std::uint64_t id = 0;
-  while (id == 0 || sessions_.count(id)) randombytes_buf(&id, sizeof id);
-  return id;
-}
-
-std::size_t SessionHub::max_queued_bytes() const {
-  std::size_t most = 0;
-  for (const auto& [id, session] : sessions_) most = std::max(most, session->link->queued_bytes());
-  return most;
-}
-
-std::size_t SessionHub::peak_queued_bytes() const {
-  std::size_t most = peak_closed_queued_bytes_;
-  for (const auto& [id, session] : sessions_) most = std::max(most, session->link->peak_queued_bytes());
-  return most;
-}
-
-// ---- TCP ----
 
 void SessionHub::on_connection(asio::ip::tcp::socket socket) {
-  if (options_.socket_send_buffer_bytes > 0) {
+  if (const int bytes = core_.options().socket_send_buffer_bytes; bytes > 0) {
     std::error_code ignored;
-    socket.set_option(asio::socket_base::send_buffer_size(options_.socket_send_buffer_bytes), ignored);
+    socket.set_option(asio::socket_base::send_buffer_size(bytes), ignored);
   }
-  auto session = std::make_shared<Session>();
-  session->link = std::make_shared<TcpLink>(std::move(socket), options_.send_queue_bytes);
-  session->peer = endpoint_text(session->link->peer());
-  session->opened_s = session->last_heard_s = monotonic_s();
-  std::weak_ptr<Session> weak = session;
-  session->link->start(
-      [this, weak](std::span<const std::uint8_t> bytes) {
-        if (auto s = weak.lock()) on_tcp_message(s, bytes);
-      },
-      [this, weak](const std::string& reason) {
-        auto s = weak.lock();
-        if (!s) return;
-        peak_closed_queued_bytes_ = std::max(peak_closed_queued_bytes_, s->link->peak_queued_bytes());
-        if (s->welcomed) {
-          log_disconnect(s->id, s->transport_name(), s->peer, reason);
-          sessions_.erase(s->id);
-          update_client_gauges();
-        }
-        std::erase(handshaking_, s);
-      });
-  if (stopping_ || sessions_.size() + handshaking_.size() >= static_cast<std::size_t>(server_.config().max_clients)) {
-    handshaking_.push_back(session);
-    return refuse(*session, protocol::Reason::server_full,
-                  "server_full: " + std::to_string(server_.config().max_clients) + " clients connected (--max-clients)");
-  }
-  handshaking_.push_back(session);
-}
-
-void SessionHub::send_control(Session& session, protocol::Bytes bytes) {
-  if (!session.link->open()) return;
-  if (!session.link->has_control_room(bytes.size())) {
-    // It keeps asking (Pings, bad ParamChanges) but reads nothing: memory stays bounded.
-    server_.metrics().rejects("send_queue_full").inc();
-    log_reject("tcp", session.peer, "send_queue_full");
-    session.link->close("send_queue_full");
-    return;
-  }
-  session.link->send(share(std::move(bytes)));
-}
-
-void SessionHub::refuse(Session& session, protocol::Reason reason, const std::string& text) {
-  const std::string_view name = protocol::to_string(reason);
-  log_reject("tcp", session.peer, name);
-  server_.metrics().rejects(name).inc();
-  send_control(session, protocol::encode(protocol::Error{reason, text.substr(0, protocol::kMaxTextBytes)}));
-  session.link->close_after_flush(1.0);
-}
-
-void SessionHub::end(Session& session, wire::ByeReason reason, const std::string& text) {
-  send_control(session, protocol::encode(protocol::Bye{reason, text}));
-  session.link->close_after_flush(1.0);
-}
-
-void SessionHub::on_tcp_message(const std::shared_ptr<Session>& session, std::span<const std::uint8_t> bytes) {
-  if (bytes.empty()) {
-    const protocol::Reason reason = session->link->framing_failure();
-    return refuse(*session, reason, std::string(protocol::to_string(reason)) +
-                                        " in the TCP size prefix: expected a message of 12.." +
-                                        std::to_string(protocol::kDefaultMaxMessageBytes) + " bytes");
-  }
-  const protocol::Verified verified =
-      protocol::verify_message(bytes, {protocol::Sender::client, wire::Transport::tcp, protocol::kDefaultMaxMessageBytes});
-  if (!verified) return refuse(*session, verified.reason, protocol::describe(verified));
-  const double now = monotonic_s();
-  session->last_heard_s = now;
-  const wire::Message& message = *verified.message;
-  if (!session->welcomed) {
-    if (message.body_type() != wire::Body::Hello)
-      return refuse(*session, protocol::Reason::unexpected_message, "unexpected_message: expected Hello first");
-    return on_hello(session, *message.body_as_Hello());
-  }
-  // The connection already names the session: a message naming another one is dropped and
-  // counted (a confused or hostile client), and changes nothing.
-  if (const std::uint64_t named = hub::named_session(message); named != 0 && named != session->id) {
-    server_.metrics().rejects(protocol::to_string(protocol::Reason::bad_session)).inc();
-    return;
-  }
-  switch (message.body_type()) {
-    case wire::Body::Ack:
-      session->baselines.on_ack({message.body_as_Ack()->latest_tick64(), message.body_as_Ack()->ack_bits()});
-      break;
-    case wire::Body::KeyframeRequest:
-      session->key_requested = true;
-      break;
-    case wire::Body::SetTransport:
-      session->wants_udp = message.body_as_SetTransport()->transport() == wire::Transport::udp;
-      // PROTOCOL.md 5.6: a key, then TCP only; at most one key per key interval, so switching
-      // back and forth cannot ask for keys faster than KeyframeRequests can.
-      if (!session->wants_udp) {
-        if (monotonic_s() - session->last_key_s >= options_.key_interval_s) session->need_key = true;
-        else session->key_requested = true;
-      }
-      update_client_gauges();
-      break;
-    case wire::Body::ParamChange:
-      on_param_change(session, *message.body_as_ParamChange());
-      break;
-    case wire::Body::Ping: {
-      const wire::Ping& ping = *message.body_as_Ping();
-      send_control(*session, protocol::encode(protocol::Pong{ping.seq(), ping.client_time_us(), tick_, unix_ms_now()}));
-      break;
-    }
-    case wire::Body::Bye:
-      session->link->close("client_bye");
-      break;
-    default:
-      refuse(*session, protocol::Reason::unexpected_message,
-             "unexpected_message: a Hello after the Welcome");
-  }
-}
-
-ProfileStream* SessionHub::choose_profile(std::uint8_t wanted, std::uint64_t bandwidth_bps) const {
-  if (wanted != 0) {
-    for (const auto& stream : streams_)
-      if (stream->profile().id == wanted) return stream.get();
-    return nullptr;
-  }
-  // Server's choice: the first offered profile whose delta rate fits 80 % of the budget, else the
-  // lightest (smallest grid). The rate is measured once the profile streams; before that it is
-  // estimated at half a byte per sample and frame.
-  ProfileStream* lightest = streams_.front().get();
-  for (const auto& stream : streams_)
-    if (stream->profile().grid < lightest->profile().grid) lightest = stream.get();
-  if (bandwidth_bps == 0) return streams_.front().get();
-  for (const auto& stream : streams_) {
-    const double grid = stream->profile().grid;
-    const double frame_bytes = stream->mean_delta_bytes() > 0.0 ? stream->mean_delta_bytes() : 0.5 * grid * grid;
-    const double bps = frame_bytes * 8.0 * stream->profile().rate_hz;
-    if (bps <= 0.8 * static_cast<double>(bandwidth_bps)) return stream.get();
-  }
-  return lightest;
-}
-
-void SessionHub::on_hello(const std::shared_ptr<Session>& session, const wire::Hello& wire_hello) {
-  const protocol::Hello hello = protocol::read(wire_hello);
-  ProfileStream* stream = choose_profile(hello.profile_id, hello.bandwidth_bps);
-  if (!stream) {
-    std::string offered;
-    for (const auto& s : streams_) offered += (offered.empty() ? "" : ", ") + std::to_string(s->profile().id) + " (" + std::string(s->profile().name) + ")";
-    return refuse(*session, protocol::Reason::profile_unavailable,
-                  "profile_unavailable in Hello.profile_id: " + std::to_string(hello.profile_id) + " is not offered; offered: " + offered);
-  }
-  std::erase(handshaking_, session);
-  session->id = new_session_id();
-  session->stream = stream;
-  session->baselines = BaselineTracker(stream->tick_step() * options_.baseline_align_frames);
-  session->welcomed = true;
-  session->wants_udp = hello.transport == wire::Transport::udp;
-  session->bytes_per_s = static_cast<double>(hello.bandwidth_bps) / 8.0;
-  session->udp_bucket = TokenBucket(session->bytes_per_s, std::max(0.25 * session->bytes_per_s, 2.0 * protocol::kMaxDatagram),
-                                    monotonic_s());
-  session->link->set_rate(session->bytes_per_s);
-  const std::int64_t now_ms = unix_ms_now();
-  session->cookie = mint_cookie(server_.cookie_key(), session->id, cookie_endpoint(session->link->peer().address()), now_ms,
-                                options_.cookie_lifetime_ms);
-
-  protocol::Welcome welcome;
-  welcome.session_id = session->id;
-  const AnnouncedScene& scene = scenes_.in_force(tick_);
-  welcome.stream = wire_stream(stream->config());
-  welcome.scene = wire_scene(scene.scene);
-  welcome.stream.depth_m = welcome.scene.depth_m;  // the depth in force now; SceneUpdates carry later ones
-  welcome.scene_serial = scene.serial;
-  for (const auto& s : streams_) welcome.offered_profiles.push_back(s->profile().id);
-  welcome.epoch_unix_ms = server_.config().epoch_unix_ms;
-  welcome.current_tick = tick_;
-  welcome.tick_period_s = 1.0 / server_.config().tick_rate_hz;
-  if (session->wants_udp) {
-    welcome.udp_port = server_.udp_port();
-    welcome.udp_cookie.assign(session->cookie.begin(), session->cookie.end());
-  }
-  welcome.max_message_bytes = protocol::kDefaultMaxMessageBytes;
-  send_control(*session, protocol::encode(welcome));
-  for (const AnnouncedScene& later : scenes_.after(tick_)) send_control(*session, protocol::encode(scene_update(later, 0)));
-  sessions_.emplace(session->id, session);
-  log_connect(session->id, session->wants_udp ? "udp" : "tcp", session->peer, stream->profile().name);
-  update_client_gauges();
-  // The key follows on the next key tick of the profile, shared by everyone who joined since.
-}
-
-void SessionHub::on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& wire_change) {
-  const protocol::ParamChange change = protocol::read(wire_change);
-  if (!same_token(change.admin_token, server_.config().admin_token)) {
-    spdlog::warn("param_change refused session={} peer={} reason=unauthorized", session->id, session->peer);
-    server_.metrics().rejects("unauthorized").inc();
-    return send_control(*session, protocol::encode(protocol::Error{
-                                      protocol::Reason::unauthorized,
-                                      "unauthorized in ParamChange.admin_token: expected the server's admin token"}));
-  }
-  const Tick from = tick_ + scenes_.lead_ticks();
-  sim::SceneParams scene = scenes_.in_force(from).scene;
-  if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;
-  if (change.wind_dir_deg) scene.wind_dir_deg = *change.wind_dir_deg;
-  if (change.amplitude) scene.amplitude = *change.amplitude;
-  if (change.choppiness) scene.choppiness = *change.choppiness;
-  if (change.spectrum) scene.spectrum = static_cast<sim::SpectrumKind>(*change.spectrum);
-  if (const std::string error = sim::validate(scene); !error.empty())
-    return send_control(*session, protocol::encode(protocol::Error{protocol::Reason::out_of_range, error.substr(0, 256)}));
-  server_.request_scene(scene, static_cast<std::int64_t>(from));
-  announce({scenes_.add_admin(tick_, scene)}, session->id, change.request_id);
-  server_.metrics().param_changes.inc();
-  spdlog::info("param_change accepted session={} peer={} request={} from tick {}: wind={} m/s dir={} deg amplitude={} "
-               "choppiness={}",
-               session->id, session->peer, change.request_id, from, scene.wind_speed_mps, scene.wind_dir_deg,
-               scene.amplitude, scene.choppiness);
-}
-
-void SessionHub::update_client_gauges() {
-  for (const auto& stream : streams_) {
-    double tcp = 0, udp = 0;
-    for (const auto& [id, session] : sessions_)
-      if (session->stream == stream.get()) (session->on_udp() ? udp : tcp) += 1;
-    server_.metrics().clients(stream->profile().name, "tcp").set(tcp);
-    server_.metrics().clients(stream->profile().name, "udp").set(udp);
-  }
-}
-
-void SessionHub::on_stop() {
-  stopping_ = true;
-  for (const auto& [id, session] : sessions_) end(*session, wire::ByeReason::server_shutdown, "server shutting down");
-  const std::vector<std::shared_ptr<Session>> handshaking = handshaking_;  // close() erases from it
-  for (const auto& session : handshaking) session->link->close("server_shutdown");
+  core_.open(std::make_shared<TcpLink>(std::move(socket), core_.options().send_queue_bytes), now_instant());
 }
 
 }  // namespace ocean::server

@@ -9,9 +9,7 @@
 
 namespace ocean::server {
 
-double monotonic_s() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double monotonic_s() { return now_instant().monotonic_s; }
 
 TcpLink::TcpLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes)
     : socket_(std::move(socket)),
@@ -20,6 +18,7 @@ TcpLink::TcpLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes)
       max_queue_bytes_(max_queue_bytes) {
   std::error_code ignored;
   peer_ = socket_.remote_endpoint(ignored);
+  peer_text_ = endpoint_text(peer_.address(), peer_.port());
   socket_.set_option(asio::ip::tcp::no_delay(true), ignored);
 }
 
@@ -40,10 +39,10 @@ void TcpLink::do_read() {
       if (result.status == protocol::TcpFramer::Status::bad) {
         // Hand the refusal on as an empty message; the session answers Error and closes.
         self->framing_failure_ = result.reason;
-        self->on_message_(std::span<const std::uint8_t>());
+        self->on_message_(std::span<const std::uint8_t>(), now_instant());
         return;
       }
-      if (result.status == protocol::TcpFramer::Status::good) self->on_message_(self->framer_.message());
+      if (result.status == protocol::TcpFramer::Status::good) self->on_message_(self->framer_.message(), now_instant());
     }
     if (!self->closed_ && !self->closing_) self->do_read();
   });

@@ -24,7 +24,7 @@ using std::chrono::milliseconds;
 
 namespace {
 
-constexpr std::uint64_t kSendQueueKib = 1024;  // SessionHubOptions::send_queue_bytes, per session
+constexpr std::uint64_t kSendQueueKib = 1024;  // SessionCoreOptions::send_queue_bytes, per session
 
 // Under ASan (OCEAN_SANITIZE) freed memory sits in a quarantine, so resident memory says nothing
 // about what the server holds: the memory bounds are then printed, not asserted. The server of
@@ -192,7 +192,7 @@ TEST_CASE("a client that stops reading but keeps sending Pings cannot grow the s
 }
 
 TEST_CASE("half messages and stalls are timed out while other clients stream", "[faults]") {
-  constexpr double kIdle = 3.0, kHandshake = 5.0;  // --idle-timeout; SessionHubOptions::handshake_timeout_s
+  constexpr double kIdle = 3.0, kHandshake = 5.0;  // --idle-timeout; SessionCoreOptions::handshake_timeout_s
   FaultScenario s(small_server(64, kIdle));
   start_population(s);
   struct Outcome {

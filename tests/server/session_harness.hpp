@@ -31,13 +31,13 @@ inline ServerConfig session_test_config(int tick_rate_hz = 30) {
 
 class SessionHarness {
  public:
-  explicit SessionHarness(ServerConfig config, SessionHubOptions options = {})
+  explicit SessionHarness(ServerConfig config, SessionCoreOptions options = {})
       : server_(std::move(config)), hub_(server_, options) {
-    hub_.set_frame_observer([this](std::uint64_t session, const SharedFrame& frame) {
+    hub_.core().set_frame_observer([this](std::uint64_t session, const SharedFrame& frame) {
       std::lock_guard lock(mutex_);
       sent_[{session, frame.encoded->reconstruction.tick}] = frame.encoded->reconstruction.height;
     });
-    hub_.set_tick_observer([this](const HubTickStats& stats) {
+    hub_.core().set_tick_observer([this](const CoreTickStats& stats) {
       std::lock_guard lock(mutex_);
       ticks_.push_back(stats);
     });
@@ -56,7 +56,7 @@ class SessionHarness {
   std::unique_ptr<SessionTestClient> client(int receive_buffer_bytes = 0) {
     return std::make_unique<SessionTestClient>(server_.tcp_port(), server_.udp_port(), receive_buffer_bytes);
   }
-  std::vector<HubTickStats> ticks() {
+  std::vector<CoreTickStats> ticks() {
     std::lock_guard lock(mutex_);
     return ticks_;
   }
@@ -83,7 +83,7 @@ class SessionHarness {
   std::future<void> done_;
   std::mutex mutex_;
   std::map<std::pair<std::uint64_t, Tick>, std::vector<float>> sent_;
-  std::vector<HubTickStats> ticks_;
+  std::vector<CoreTickStats> ticks_;
 };
 
 // Pumps every client until the condition holds; false after `limit` (generous: a loaded machine).

@@ -101,12 +101,12 @@ TEST_CASE("malformed and oversized input is refused while other clients keep str
   harness.check_reconstructions(*good);
   harness.stop();
   // Before proof the server never sent more UDP bytes than it received.
-  CHECK(harness.hub().unproven_bytes_out() <= harness.hub().unproven_bytes_in());
-  CHECK(harness.hub().unproven_bytes_out() > 0);  // the good client's UdpReady
+  CHECK(harness.hub().core().unproven_bytes_out() <= harness.hub().core().unproven_bytes_in());
+  CHECK(harness.hub().core().unproven_bytes_out() > 0);  // the good client's UdpReady
 }
 
 TEST_CASE("a TCP client that stops reading never grows the server's send queue") {
-  SessionHubOptions options;
+  SessionCoreOptions options;
   options.send_queue_bytes = 4 * 1024;
   options.socket_send_buffer_bytes = 4096;
   SessionHarness harness(session_test_config(60), options);
@@ -135,8 +135,8 @@ TEST_CASE("a TCP client that stops reading never grows the server's send queue")
   const std::size_t stalled_before = stalled->completed_heights.size();
   REQUIRE(pump_until({stalled.get(), healthy.get()}, [&] { return stalled->completed_heights.size() > stalled_before + 20; }));
   harness.stop();
-  CHECK(harness.hub().peak_queued_bytes() <= options.send_queue_bytes);
-  CHECK(harness.hub().peak_queued_bytes() > options.send_queue_bytes / 2);  // the bound was reached
+  CHECK(harness.hub().core().peak_queued_bytes() <= options.send_queue_bytes);
+  CHECK(harness.hub().core().peak_queued_bytes() > options.send_queue_bytes / 2);  // the bound was reached
   harness.check_reconstructions(*stalled);  // and it resumed on a valid baseline
   harness.check_reconstructions(*healthy);
 }

@@ -56,7 +56,7 @@ TEST_CASE("clients on TCP and UDP reconstruct exactly what the encoder sent") {
     CHECK(c->byes[0].reason == ocean::wire::ByeReason::server_shutdown);
   }
   // Encodes per tick equal the distinct baselines served, never the number of sessions.
-  for (const HubTickStats& stats : harness.ticks()) CHECK(stats.encodes == stats.distinct_baselines);
+  for (const CoreTickStats& stats : harness.ticks()) CHECK(stats.encodes == stats.distinct_baselines);
 }
 
 TEST_CASE("clients that join in one tick share one encoding per tick") {
@@ -76,9 +76,9 @@ TEST_CASE("clients that join in one tick share one encoding per tick") {
     return true;
   }));
   harness.stop();
-  const std::vector<HubTickStats> ticks = harness.ticks();
+  const std::vector<CoreTickStats> ticks = harness.ticks();
   REQUIRE(!ticks.empty());
-  const HubTickStats& last = ticks.back();
+  const CoreTickStats& last = ticks.back();
   CHECK(last.sessions_served == 4);
   CHECK(last.encodes == last.distinct_baselines);
   CHECK(last.encodes <= 2);  // at worst the joins straddled one tick boundary

@@ -1,9 +1,8 @@
-// SessionHub, per tick: feeds each profile's stream, serves every session a key or a delta
+// SessionCore, per tick: feeds each profile's stream, serves every session a key or a delta
 // (bundled with unacknowledged earlier frames on UDP), keeps the key roots few, and times out
 // the silent.
-#include "session_hub.hpp"
+#include "session_core.hpp"
 
-#include "hub_helpers.hpp"
 #include "frame_records.hpp"
 #include "message_builders.hpp"
 #include "stream_wire.hpp"
@@ -17,14 +16,14 @@
 
 namespace ocean::server {
 
-protocol::SceneUpdate SessionHub::scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const {
+protocol::SceneUpdate SessionCore::scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const {
   return protocol::SceneUpdate{request_id, scene.from, wire_scene(scene.scene), scene.serial};
 }
 
 // Both sides of every stream switch scene at its first tick with no keyframe: the encoders learn
 // it now, the clients by the SceneUpdate (sent a lead ahead, so it arrives before that tick's
 // frames; a client that missed it refuses those frames as unknown_scene and asks for a key).
-void SessionHub::announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester,
+void SessionCore::announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester,
                           std::uint32_t request_id) {
   for (const AnnouncedScene& scene : scenes) {
     const codec::SceneModelParams model = codec::scene_model_params(wire_scene(scene.scene));
@@ -36,47 +35,50 @@ void SessionHub::announce(const std::vector<AnnouncedScene>& scenes, std::option
   }
 }
 
-void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
+void SessionCore::on_frames(const std::shared_ptr<const TickFrames>& frames, const Instant& now) {
   if (stopping_) return;
   tick_ = static_cast<Tick>(frames->tick);
   announce(scenes_.announce(tick_));
-  have_tick_ = true;
   scenes_.forget_before(tick_ > protocol::kMaxFrameLag ? tick_ - protocol::kMaxFrameLag : 0);
   for (auto& stream : streams_)
     for (const ProfileFrame& frame : frames->frames)
       if (frame.profile == &stream->profile()) stream->add_truth(tick_, frame.frame);
 
-  const double now = monotonic_s();
   bundles_.clear();  // the bytes of last tick's bundles stay alive while queued
   std::vector<std::pair<const void*, codec::StateId>> bases;
-  HubTickStats stats;
-  stats.tick = tick_;
   for (auto& stream : streams_)
     if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_)) limit_roots(*stream, tick_);
   for (auto& [id, session] : sessions_) {
     try {
-      serve(*session, tick_, now, bases);
+      serve(*session, tick_, now.monotonic_s, bases);
     } catch (const std::exception& e) {  // an encoder precondition: a server bug, not the client's
       spdlog::error("session={} tick={}: {}", id, tick_, e.what());
       refuse(*session, protocol::Reason::internal_error, "internal_error: the server failed to encode a frame");
     }
   }
+  record_tick_stats(bases);
+  sweep_timeouts(now.monotonic_s);
+}
+
+void SessionCore::record_tick_stats(std::vector<std::pair<const void*, codec::StateId>>& bases) {
+  CoreTickStats stats;
+  stats.tick = tick_;
   std::sort(bases.begin(), bases.end());
   stats.sessions_served = bases.size();
   stats.distinct_baselines = static_cast<std::size_t>(std::unique(bases.begin(), bases.end()) - bases.begin());
+  ServerMetrics& metrics = host_.metrics;
   for (const auto& stream : streams_) {
     stats.encodes += stream->encodes_this_tick();
-    if (stream->encodes_this_tick() > 0) server_.metrics().encode_seconds.observe(stream->encode_seconds_this_tick());
+    if (stream->encodes_this_tick() > 0) metrics.encode_seconds.observe(stream->encode_seconds_this_tick());
   }
-  server_.metrics().encodes.inc(static_cast<double>(stats.encodes));
-  server_.metrics().encodes_last_tick.set(static_cast<double>(stats.encodes));
-  server_.metrics().send_queue_max_bytes.set(static_cast<double>(max_queued_bytes()));
+  metrics.encodes.inc(static_cast<double>(stats.encodes));
+  metrics.encodes_last_tick.set(static_cast<double>(stats.encodes));
+  metrics.send_queue_max_bytes.set(static_cast<double>(max_queued_bytes()));
   last_tick_ = stats;
   if (tick_observer_) tick_observer_(stats);
-  sweep_timeouts(now);
 }
 
-void SessionHub::serve(Session& session, Tick tick, double now_s,
+void SessionCore::serve(Session& session, Tick tick, double now_s,
                        std::vector<std::pair<const void*, codec::StateId>>& bases) {
   ProfileStream& stream = *session.stream;
   if (!session.link->open() || !stream.is_frame_tick(tick)) return;
@@ -85,42 +87,26 @@ void SessionHub::serve(Session& session, Tick tick, double now_s,
   std::optional<codec::StateId> base;
   if (!session.need_key && !(session.key_requested && key_due))
     base = session.baselines.choose(tick, udp, [&](codec::StateId id) { return stream.has_state(id); });
-  ServerMetrics& metrics = server_.metrics();
   if (!base) {
-    // A key on TCP, on a key tick (everyone keyed in one tick shares the key and every delta
-    // after it): when required, else (acks missing) at most once per key interval.
+    // A key on the stream link, on a key tick (everyone keyed in one tick shares the key and every
+    // delta after it): when required, else (acks missing) at most once per key interval.
     if ((!session.need_key && !key_due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
-    const SharedFrame& frame = stream.key(tick);
     bases.emplace_back(&stream, codec::StateId{tick, 0});
-    if (!session.link->has_room(frame.bytes)) {
-      metrics.send_queue_drops.inc();
-      session.need_key = true;
-      return;
-    }
-    for (const SharedBytes& message : frame.messages) session.link->send(message);
-    session.tcp_frames_mark = session.link->enqueued_total();
-    session.need_key = session.key_requested = false;
-    session.last_key_s = now_s;
-    session.baselines.record_sent(tick, frame.encoded->id, true, true);
-    session.recent_udp.clear();  // nothing from before a key predicts anything after it
-    metrics.keyframes_sent.inc();
-    metrics.frames_sent("tcp").inc();
-    metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
-    if (observer_) observer_(session.id, frame);
-    return;
+    return send_key(session, stream, tick, now_s);
   }
   const SharedFrame& frame = stream.delta(tick, *base);
   bases.emplace_back(&stream, *base);
-  // UDP only once the TCP frames before it are written: a datagram overtaking them would leave them
-  // complete but older than what the client already shows. (Control messages queued on TCP, such
-  // as a SceneUpdate, do not hold the stream back.)
+  ServerMetrics& metrics = host_.metrics;
+  // UDP only once the frames queued on the stream link before it are written: a datagram
+  // overtaking them would leave them complete but older than what the client already shows.
+  // (Control messages queued there, such as a SceneUpdate, do not hold the stream back.)
   if (udp && session.baselines.is_acked(*base) && session.link->written_through(session.tcp_frames_mark)) {
     if (!send_udp_frame(session, tick, frame, now_s)) {
       metrics.frames_skipped_bandwidth.inc();
       return;
     }
     session.baselines.record_sent(tick, frame.encoded->id, false);
-    metrics.frames_sent("udp").inc();
+    metrics.frames_sent(session.udp->transport()).inc();
   } else {
     // Within the budget the link paces; beyond a quarter second of backlog a frame is skipped.
     if (session.bytes_per_s > 0.0 && static_cast<double>(session.link->queued_bytes()) > 0.25 * session.bytes_per_s) {
@@ -131,22 +117,42 @@ void SessionHub::serve(Session& session, Tick tick, double now_s,
       metrics.send_queue_drops.inc();
       return;  // the baseline stays the last queued frame, or a key once it ages out
     }
-    for (const SharedBytes& message : frame.messages) session.link->send(message);
-    session.tcp_frames_mark = session.link->enqueued_total();
+    send_tcp_frame(session, frame);
     session.baselines.record_sent(tick, frame.encoded->id, true);
-    metrics.frames_sent("tcp").inc();
-    metrics.bytes_sent("tcp").inc(static_cast<double>(frame.bytes));
   }
   if (observer_) observer_(session.id, frame);
+}
+
+void SessionCore::send_key(Session& session, ProfileStream& stream, Tick tick, double now_s) {
+  const SharedFrame& frame = stream.key(tick);
+  if (!session.link->has_room(frame.bytes)) {
+    host_.metrics.send_queue_drops.inc();
+    session.need_key = true;
+    return;
+  }
+  send_tcp_frame(session, frame);
+  session.need_key = session.key_requested = false;
+  session.last_key_s = now_s;
+  session.baselines.record_sent(tick, frame.encoded->id, true, true);
+  session.recent_udp.clear();  // nothing from before a key predicts anything after it
+  host_.metrics.keyframes_sent.inc();
+  if (observer_) observer_(session.id, frame);
+}
+
+void SessionCore::send_tcp_frame(Session& session, const SharedFrame& frame) {
+  for (const SharedBytes& message : frame.messages) session.link->send(message);
+  session.tcp_frames_mark = session.link->enqueued_total();
+  host_.metrics.frames_sent(session.link->transport()).inc();
+  host_.metrics.bytes_sent(session.link->transport()).inc(static_cast<double>(frame.bytes));
 }
 
 // A single-chunk frame goes out with copies of the session's earlier UDP frames that it has not
 // acked yet (newest udp_redundancy of them), oldest first, as one FrameBundle datagram; sessions
 // with the same history share the bundle's bytes. Copies are dropped first when the bandwidth
 // budget or the datagram size cannot hold them.
-bool SessionHub::send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s) {
-  ServerMetrics& metrics = server_.metrics();
-  const std::size_t redundancy = static_cast<std::size_t>(server_.config().udp_redundancy);
+bool SessionCore::send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s) {
+  ServerMetrics& metrics = host_.metrics;
+  const std::size_t redundancy = static_cast<std::size_t>(host_.config.udp_redundancy);
   std::vector<const RecentFrame*> parts;
   if (frame.datagrams.size() == 1 && redundancy > 0) {
     const auto acked = session.baselines.newest_acked();
@@ -162,13 +168,13 @@ bool SessionHub::send_udp_frame(Session& session, Tick tick, const SharedFrame& 
     parts.erase(parts.begin());  // the oldest copy goes first
   }
   if (bundle) {
-    server_.send_datagram(*bundle, *session.udp);
-    metrics.bytes_sent("udp").inc(static_cast<double>(bundle->size()));
+    session.udp->send(bundle);
+    metrics.bytes_sent(session.udp->transport()).inc(static_cast<double>(bundle->size()));
     metrics.bundled_copies.inc(static_cast<double>(parts.size()));
   } else {
     if (!session.udp_bucket.try_take(frame.datagram_bytes, now_s)) return false;
-    for (const SharedBytes& datagram : frame.datagrams) server_.send_datagram(*datagram, *session.udp);
-    metrics.bytes_sent("udp").inc(static_cast<double>(frame.datagram_bytes));
+    for (const SharedBytes& datagram : frame.datagrams) session.udp->send(datagram);
+    metrics.bytes_sent(session.udp->transport()).inc(static_cast<double>(frame.datagram_bytes));
   }
   if (frame.datagrams.size() == 1) {
     session.recent_udp.push_back(RecentFrame{tick, frame.encoded});
@@ -179,7 +185,7 @@ bool SessionHub::send_udp_frame(Session& session, Tick tick, const SharedFrame& 
   return true;
 }
 
-SharedBytes SessionHub::bundle_of(const std::vector<const RecentFrame*>& copies, const SharedFrame& newest) {
+SharedBytes SessionCore::bundle_of(const std::vector<const RecentFrame*>& copies, const SharedFrame& newest) {
   std::vector<const codec::Chunk*> key;
   for (const RecentFrame* copy : copies) key.push_back(&copy->frame->chunks.front());
   key.push_back(&newest.encoded->chunks.front());
@@ -192,7 +198,7 @@ SharedBytes SessionHub::bundle_of(const std::vector<const RecentFrame*>& copies,
   return it->second;
 }
 
-bool SessionHub::is_key_tick(const ProfileStream& stream, Tick tick) const {
+bool SessionCore::is_key_tick(const ProfileStream& stream, Tick tick) const {
   const auto frames = std::max<long>(1, std::lround(options_.key_period_s * stream.profile().rate_hz));
   return tick % (static_cast<Tick>(stream.tick_step()) * static_cast<Tick>(frames)) == 0;
 }
@@ -203,13 +209,13 @@ bool SessionHub::is_key_tick(const ProfileStream& stream, Tick tick) const {
 // it is within the cap, and then nothing more is keyed. Two at a time keeps the keys' bytes and
 // the clients' key decodes from coming in one burst; a session pays at most one extra key per
 // root_merge_age_s.
-void SessionHub::limit_roots(ProfileStream& stream, Tick tick) {
+void SessionCore::limit_roots(ProfileStream& stream, Tick tick) {
   std::map<Tick, std::vector<Session*>> roots;
   for (auto& [id, session] : sessions_)
     if (session->stream == &stream && !session->need_key)
       if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
   if (roots.size() <= options_.max_roots) return;
-  const double min_age_ticks = options_.root_merge_age_s * server_.config().tick_rate_hz;
+  const double min_age_ticks = options_.root_merge_age_s * host_.config.tick_rate_hz;
   std::vector<std::pair<std::size_t, Tick>> old;  // (sessions, root)
   for (const auto& [root, members] : roots)
     if (static_cast<double>(tick - root) >= min_age_ticks) old.emplace_back(members.size(), root);
@@ -217,21 +223,21 @@ void SessionHub::limit_roots(ProfileStream& stream, Tick tick) {
   std::partial_sort(old.begin(), old.begin() + 2, old.end());
   for (std::size_t i = 0; i < 2; ++i)
     for (Session* session : roots[old[i].second]) session->need_key = true;
-  server_.metrics().root_merges.inc(2);
+  host_.metrics.root_merges.inc(2);
   spdlog::debug("tick {} profile {}: {} key roots; roots {} and {} ({} and {} sessions) are keyed again", tick,
                 stream.profile().name, roots.size(), old[0].second, old[1].second, old[0].first, old[1].first);
 }
 
-void SessionHub::sweep_timeouts(double now_s) {
+void SessionCore::sweep_timeouts(double now_s) {
   std::vector<std::shared_ptr<Session>> expired;
   for (const auto& session : handshaking_)
     if (session->link->open() && now_s - session->opened_s > options_.handshake_timeout_s) expired.push_back(session);
   for (const auto& session : expired) refuse(*session, protocol::Reason::timeout, "timeout: no Hello within the handshake time");
   expired.clear();
   for (const auto& [id, session] : sessions_)
-    if (session->link->open() && now_s - session->last_heard_s > server_.config().idle_timeout_s) expired.push_back(session);
+    if (session->link->open() && now_s - session->last_heard_s > host_.config.idle_timeout_s) expired.push_back(session);
   for (const auto& session : expired) {
-    server_.metrics().rejects("idle_timeout").inc();
+    host_.metrics.rejects("idle_timeout").inc();
     end(*session, wire::ByeReason::idle_timeout, "no message for the idle limit (--idle-timeout)");
   }
 }

@@ -1,0 +1,68 @@
+// SessionCore, UDP side: every datagram is verified, matched to a proven session (or proves one
+// with its cookie), and answered never larger than it before proof; nothing is allocated per
+// datagram.
+#include "session_core.hpp"
+
+#include "core_helpers.hpp"
+#include "frame_records.hpp"
+#include "message_builders.hpp"
+#include "server_log.hpp"
+#include "verify_message.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <cstring>
+
+namespace ocean::server {
+
+using core::cookie_endpoint;
+
+void SessionCore::drop_datagram(protocol::Reason reason, const asio::ip::udp::endpoint& sender) {
+  datagram_rejects_[static_cast<std::size_t>(reason) % datagram_rejects_.size()]->inc();
+  if (spdlog::should_log(spdlog::level::debug)) log_reject("udp", endpoint_text(sender), protocol::to_string(reason), true);
+}
+
+void SessionCore::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender,
+                              const Instant& now) {
+  if (bytes.size() > datagram_.size()) return drop_datagram(protocol::Reason::oversized, sender);
+  std::memcpy(datagram_.data(), bytes.data(), bytes.size());  // verify_message needs 8-byte alignment
+  const std::span<const std::uint8_t> aligned(datagram_.data(), bytes.size());
+  const protocol::Verified verified = protocol::verify_message(aligned, {protocol::Sender::client, wire::Transport::udp});
+  const wire::Message* message = verified.message;
+  const std::uint64_t session_id = verified ? core::named_session(*message) : 0;
+  const auto found = sessions_.find(session_id);
+  const bool proven = found != sessions_.end() && found->second->udp && found->second->udp->endpoint() == sender;
+  if (!proven) unproven_bytes_in_ += bytes.size();
+  if (!verified) return drop_datagram(verified.reason, sender);
+  if (found == sessions_.end()) return drop_datagram(protocol::Reason::bad_session, sender);
+  Session& session = *found->second;
+  if (message->body_type() == wire::Body::UdpHello)
+    return on_udp_hello(session, *message, bytes.size(), proven, sender, now);
+  if (!proven) return drop_datagram(protocol::Reason::bad_session, sender);  // address not proven
+  if (const protocol::Reason r = protocol::check_udp_sender(*message, session.id, session.cookie); r != protocol::Reason::ok)
+    return drop_datagram(r, sender);
+  session.last_heard_s = now.monotonic_s;
+  on_session_message(session, *message, *session.udp, now);
+}
+
+void SessionCore::on_udp_hello(Session& session, const wire::Message& message, std::size_t datagram_bytes, bool proven,
+                               const asio::ip::udp::endpoint& sender, const Instant& now) {
+  // Stateless first: the MAC binds the cookie to this IP; then the session's own cookie.
+  const auto* cookie = message.body_as_UdpHello()->cookie();
+  const CookieCheck check = verify_cookie(host_.cookie_key, std::span<const std::uint8_t>(cookie->data(), cookie->size()),
+                                          cookie_endpoint(sender.address()), now.unix_ms);
+  if (check.status != CookieStatus::ok || check.session_id != session.id)
+    return drop_datagram(protocol::Reason::bad_cookie, sender);
+  if (const protocol::Reason r = protocol::check_udp_sender(message, session.id, session.cookie); r != protocol::Reason::ok)
+    return drop_datagram(r, sender);
+  session.last_heard_s = now.monotonic_s;
+  const protocol::Bytes ready = protocol::message_datagram(protocol::encode(protocol::UdpReady{session.id}));
+  if (!proven) unproven_bytes_out_ += ready.size();  // always smaller than the padded UdpHello
+  if (ready.size() <= datagram_bytes) host_.datagrams.send_datagram(ready, sender);
+  if (proven) return;
+  session.udp.emplace(host_.datagrams, sender);
+  spdlog::info("udp proven session={} peer={}", session.id, session.udp->peer());
+  update_client_gauges();
+}
+
+}  // namespace ocean::server

@@ -1,0 +1,153 @@
+// SessionCore: every client session of a server, the mirror of the client's ClientSession: pure
+// (bytes and instants in; bytes out through Links, events out through observers and metrics),
+// so tests drive it directly and any transport plugs in as a Link.
+// It answers the handshake, proves UDP addresses with stateless cookies, applies admin changes,
+// and each tick feeds one ProfileStream per offered profile and sends every session a key or a
+// delta against its baseline, sharing encodings between sessions; keyframe requests, timeouts and
+// Bye on stop. Single-threaded: the caller serialises every call.
+#pragma once
+
+#include "tick_frames.hpp"
+#include "link.hpp"
+#include "profile_stream.hpp"
+#include "scene_announcements.hpp"
+#include "server_config.hpp"
+#include "server_metrics.hpp"
+#include "session.hpp"
+#include "udp_cookie.hpp"
+#include "wire_limits.hpp"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace ocean::server {
+
+struct SessionCoreOptions {
+  std::size_t send_queue_bytes = 1u << 20;     // per session; frames beyond it are dropped
+  double key_interval_s = 1.0;                 // at most one requested or re-sync key per second
+  double handshake_timeout_s = 5.0;            // a connection must send its Hello within this
+  std::int64_t cookie_lifetime_ms = 3'600'000; // a UdpHello may (re)prove the address this long
+  int socket_send_buffer_bytes = 0;            // SO_SNDBUF of client sockets; 0 = the OS default
+  // Sharing (README-server.md "Fan-out"): baselines on a grid of this many frames; keys only on
+  // a grid of this period (a joiner waits at most this long); beyond max_roots key roots of a
+  // profile, one root older than root_merge_age_s is keyed again per key tick.
+  std::uint32_t baseline_align_frames = 4;
+  double key_period_s = 0.5;
+  std::size_t max_roots = 8;
+  double root_merge_age_s = 10.0;
+  // A scene change reaches every client this long before it takes effect (a SceneUpdate on TCP
+  // must arrive before the first frame of the new scene, even on a slow link).
+  double scene_lead_s = 1.0;
+};
+
+// What the core needs from the server around it; none of it a socket or a clock.
+struct SessionCoreHost {
+  const ServerConfig& config;
+  const SceneSchedule& schedule;
+  ServerMetrics& metrics;
+  const CookieKey& cookie_key;
+  DatagramSocket& datagrams;
+  std::uint16_t udp_port = 0;  // announced in the Welcome
+  // An accepted admin change: the simulation switches to `scene` at tick `from`.
+  std::function<void(const sim::SceneParams& scene, std::int64_t from)> request_scene;
+};
+
+// What the last tick did, for metrics and tests.
+struct CoreTickStats {
+  Tick tick = 0;
+  std::size_t sessions_served = 0;     // sessions sent a frame this tick
+  std::size_t encodes = 0;             // encoder runs this tick, all profiles
+  std::size_t distinct_baselines = 0;  // distinct (profile, baseline or key) among those sessions
+};
+
+class SessionCore {
+ public:
+  // Called for every frame queued to a session (tests compare reconstructions with it).
+  using FrameObserver = std::function<void(std::uint64_t session_id, const SharedFrame& frame)>;
+  using TickObserver = std::function<void(const CoreTickStats& stats)>;
+
+  // start_tick: the tick now (a Hello may come before the first frames).
+  SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick start_tick);
+  SessionCore(const SessionCore&) = delete;
+  SessionCore& operator=(const SessionCore&) = delete;
+
+  // A new connection of any stream transport; the core starts reading it.
+  void open(std::shared_ptr<StreamLink> link, const Instant& now);
+  // One datagram that arrived on the server's UDP socket.
+  void on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender, const Instant& now);
+  // The frames of one tick, from the simulation.
+  void on_frames(const std::shared_ptr<const TickFrames>& frames, const Instant& now);
+  // Shutdown: Bye to every session; no frames after this.
+  void stop();
+
+  void set_frame_observer(FrameObserver observer) { observer_ = std::move(observer); }
+  void set_tick_observer(TickObserver observer) { tick_observer_ = std::move(observer); }
+  const SessionCoreOptions& options() const { return options_; }
+  const CoreTickStats& last_tick() const { return last_tick_; }
+  std::size_t session_count() const { return sessions_.size(); }
+  std::size_t max_queued_bytes() const;  // over all sessions, now
+  std::size_t peak_queued_bytes() const; // over all sessions, ever (closed ones included)
+  // Before proof, the UDP bytes received and answered (anti-amplification).
+  std::uint64_t unproven_bytes_in() const { return unproven_bytes_in_; }
+  std::uint64_t unproven_bytes_out() const { return unproven_bytes_out_; }
+  const std::vector<std::unique_ptr<ProfileStream>>& streams() const { return streams_; }
+
+ private:
+  void on_message(const std::shared_ptr<Session>& session, std::span<const std::uint8_t> bytes, const Instant& now);
+  void on_closed(const std::shared_ptr<Session>& session, const std::string& reason);
+  void on_hello(const std::shared_ptr<Session>& session, const wire::Hello& hello, const Instant& now);
+  void on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& change);
+  // Ack, KeyframeRequest and Ping mean the same on any transport; `reply` carries the Pong.
+  void on_session_message(Session& session, const wire::Message& message, Link& reply, const Instant& now);
+  void on_udp_hello(Session& session, const wire::Message& message, std::size_t datagram_bytes, bool proven,
+                    const asio::ip::udp::endpoint& sender, const Instant& now);
+
+  void serve(Session& session, Tick tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
+  void send_key(Session& session, ProfileStream& stream, Tick tick, double now_s);
+  bool send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s);
+  void send_tcp_frame(Session& session, const SharedFrame& frame);
+  SharedBytes bundle_of(const std::vector<const RecentFrame*>& copies, const SharedFrame& newest);
+  void limit_roots(ProfileStream& stream, Tick tick);
+  bool is_key_tick(const ProfileStream& stream, Tick tick) const;
+  void sweep_timeouts(double now_s);
+  void record_tick_stats(std::vector<std::pair<const void*, codec::StateId>>& bases);
+  // Tells every stream and every session of scenes that take effect within the lead.
+  void announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester = {},
+                std::uint32_t request_id = 0);
+  protocol::SceneUpdate scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const;
+  protocol::Welcome welcome(const Session& session) const;
+  void refuse(Session& session, protocol::Reason reason, const std::string& text);
+  void end(Session& session, wire::ByeReason reason, const std::string& text);
+  void send_control(Session& session, protocol::Bytes bytes);
+  void drop_datagram(protocol::Reason reason, const asio::ip::udp::endpoint& sender);
+  void update_client_gauges();
+  ProfileStream* choose_profile(std::uint8_t wanted, std::uint64_t bandwidth_bps) const;
+  codec::StreamConfig stream_config(const Profile& profile, const sim::SceneParams& scene) const;
+  std::uint64_t new_session_id() const;
+
+  SessionCoreHost host_;
+  SessionCoreOptions options_;
+  std::vector<std::unique_ptr<ProfileStream>> streams_;
+  std::map<std::uint64_t, std::shared_ptr<Session>> sessions_;  // welcomed, by id
+  std::vector<std::shared_ptr<Session>> handshaking_;
+  SceneAnnouncements scenes_;
+  Tick tick_ = 0;
+  bool stopping_ = false;
+  CoreTickStats last_tick_;
+  FrameObserver observer_;
+  TickObserver tick_observer_;
+  std::array<Counter*, 29> datagram_rejects_{};  // by protocol::Reason, made up front: no allocation per datagram
+  alignas(8) std::array<std::uint8_t, protocol::kMaxDatagram> datagram_{};
+  std::map<std::vector<const codec::Chunk*>, SharedBytes> bundles_;  // this tick's, by their chunks
+  std::uint64_t unproven_bytes_in_ = 0;
+  std::uint64_t unproven_bytes_out_ = 0;
+  std::size_t peak_closed_queued_bytes_ = 0;
+};
+
+}  // namespace ocean::server
