@@ -54,6 +54,7 @@ class ProfileStream {
   const SharedFrame& key(Tick tick);
   const SharedFrame& delta(Tick tick, codec::StateId baseline);
   bool has_state(codec::StateId id) const { return encoder_->has_state(id); }
+  const codec::ModalState* state(codec::StateId id) const { return encoder_->state(id); }  // tests compare clients with it
 
   // Encodes run for the current tick (each a distinct (tick, baseline)), and their total time.
   std::size_t encodes_this_tick() const { return encoded_.size(); }

@@ -87,7 +87,7 @@ class FakeServer {
   void on_udp(std::span<const std::uint8_t> bytes, double now) { on_message(bytes, wire::Transport::udp, now); }
 
   // Advances one tick and sends its frame (if a session is up).
-  void step() {
+  void step(double = 0.0) {
     ++tick_;
     truth_.at(tick_, period_);
     encoder_.add_truth(tick_, truth_.view());

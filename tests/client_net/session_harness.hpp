@@ -1,13 +1,16 @@
-// SessionHarness: one ClientSession and one FakeServer in one process (yojimbo style), joined by a
+// SessionHarness: one ClientSession and one server in one process (yojimbo style), joined by a
 // simulated link: TCP in order, UDP server->client with seeded loss and reordering. Each tick the
 // server sends at t and the client receives at t + half a tick. Checks every delivered frame
 // against the encoder and every Ack against the decoder as they happen.
+// The server is the real SessionCore (CoreSessionHarness, through tests/support's CorePeer), or
+// FakeServer where a test needs a server that misbehaves or a synthetic, noisy sea.
 #pragma once
 
 #include <functional>
 #include <random>
 
 #include "client_session.hpp"
+#include "core_peer.hpp"
 #include "fake_server.hpp"
 
 namespace ocean::client::test {
@@ -18,10 +21,12 @@ struct UdpImpairment {
   std::uint64_t seed = 1;
 };
 
-class SessionHarness {
+template <class Server>
+class BasicSessionHarness {
  public:
-  SessionHarness(FakeServerOptions server_options, ClientSessionConfig client_config = {}, UdpImpairment udp = {})
-      : server(server_options), rng_(udp.seed), udp_(udp), session(std::move(client_config), events()) {}
+  template <class... ServerArgs>
+  BasicSessionHarness(ClientSessionConfig client_config, UdpImpairment udp, ServerArgs&&... server_args)
+      : server(std::forward<ServerArgs>(server_args)...), rng_(udp.seed), udp_(udp), session(std::move(client_config), events()) {}
 
   // Drops server->client datagrams this returns true for (after the random loss).
   std::function<bool(const protocol::Bytes&)> drop_down;
@@ -36,7 +41,7 @@ class SessionHarness {
       for (auto& b : take(client_tcp)) server.on_tcp(b, now);
       for (auto& b : take(client_udp))
         if (!drop_client_udp) server.on_udp(b, now);
-      server.step();
+      server.step(now);
       now += half;
       for (auto& b : take(server.to_client_tcp)) session.on_tcp_message(b, now);
       for (auto& b : impair(take(server.to_client_udp))) session.on_udp_datagram(b, now);
@@ -44,13 +49,14 @@ class SessionHarness {
     }
   }
 
-  FakeServer server;
+  Server server;
   double now = 1000.0;
   std::vector<protocol::Bytes> client_tcp, client_udp;
   std::vector<std::uint32_t> delivered;  // ticks handed to on_frame
   int frame_mismatches = 0;              // delivered frames that differ from the encoder's reconstruction
   int ack_mismatches = 0;                // Acks naming a tick that is not complete, or missing one that is
   int acks_checked = 0;
+  int datagrams_dropped = 0;             // server->client datagrams the link lost
   std::vector<std::string> closed;
 
  private:
@@ -64,8 +70,10 @@ class SessionHarness {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<protocol::Bytes> out;
     for (auto& b : in) {
-      if (u(rng_) < udp_.loss) continue;
-      if (drop_down && drop_down(b)) continue;
+      if (u(rng_) < udp_.loss || (drop_down && drop_down(b))) {
+        ++datagrams_dropped;
+        continue;
+      }
       out.push_back(std::move(b));
     }
     for (std::size_t i = 0; i + 1 < out.size(); ++i)
@@ -117,6 +125,19 @@ class SessionHarness {
 
  public:
   ClientSession session;  // last: its events capture the members above
+};
+
+class SessionHarness : public BasicSessionHarness<FakeServer> {
+ public:
+  SessionHarness(FakeServerOptions server_options, ClientSessionConfig client_config = {}, UdpImpairment udp = {})
+      : BasicSessionHarness(std::move(client_config), udp, server_options) {}
+};
+
+class CoreSessionHarness : public BasicSessionHarness<ocean::test::CorePeer> {
+ public:
+  explicit CoreSessionHarness(ClientSessionConfig client_config = {}, UdpImpairment udp = {},
+                              server::ServerConfig server_config = ocean::test::core_peer_config())
+      : BasicSessionHarness(std::move(client_config), udp, std::move(server_config)) {}
 };
 
 }  // namespace ocean::client::test

@@ -1,4 +1,5 @@
-// ClientSession against FakeServer: handshake, UDP proof, closed-loop reconstruction, acks, loss.
+// ClientSession against the real server core (and FakeServer where the server must misbehave or
+// the sea must be noisy): handshake, UDP proof, closed-loop reconstruction, acks, loss.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -22,7 +23,7 @@ bool is_chunk_of(const protocol::Bytes& datagram, Tick tick, std::uint16_t index
 }  // namespace
 
 TEST_CASE("session: handshake, UDP proof and a lossless stream reproduce the encoder exactly", "[session]") {
-  SessionHarness h({});
+  CoreSessionHarness h;
   h.start();
   REQUIRE(h.session.state() == ClientSession::State::awaiting_welcome);
   h.run_ticks(60);
@@ -44,13 +45,13 @@ TEST_CASE("session: handshake, UDP proof and a lossless stream reproduce the enc
   CHECK(s.pongs_received >= 1);
   CHECK(s.rtt_smoothed_s > 0.0);
   CHECK(s.rtt_smoothed_s < 0.1);
-  CHECK(h.session.welcome()->session_id == FakeServer::kSessionId);
+  CHECK(h.session.welcome()->session_id == h.server.session_id());
 }
 
 TEST_CASE("session: UDP loss and reordering never corrupt a frame, acks name exactly the complete ticks",
           "[session]") {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
-    SessionHarness h({}, {}, UdpImpairment{0.15, 0.3, seed});
+    CoreSessionHarness h({}, UdpImpairment{0.15, 0.3, seed});
     h.start();
     h.run_ticks(300);
     const ClientStats& s = h.session.stats();
@@ -58,8 +59,8 @@ TEST_CASE("session: UDP loss and reordering never corrupt a frame, acks name exa
     CHECK(h.frame_mismatches == 0);
     CHECK(h.ack_mismatches == 0);
     CHECK(h.acks_checked > 60);  // about one per ack interval (0.1 s, checked every tick)
-    CHECK(s.frames_complete > 200);           // ~85% of the frames arrive
-    CHECK(s.frames_complete < 300);           // and some did not
+    CHECK(h.datagrams_dropped > 30);          // the link lost ~15 % of them
+    CHECK(s.frames_complete > 200);           // the server's redundant copies bring most frames through
     CHECK(h.server.keyframes_sent <= 3);      // the stream recovers from acked baselines, not keys
     REQUIRE(s.latest_tick);
     CHECK(h.server.tick() - *s.latest_tick <= 3);
@@ -114,7 +115,7 @@ TEST_CASE("session: deltas from a baseline the client lost make it ask for a key
 
 TEST_CASE("predictor: the decoder's physics predicts the next frames within a quantization step",
           "[session][predictor]") {
-  SessionHarness h({});
+  CoreSessionHarness h;
   h.start();
   h.run_ticks(30);
   const codec::Decoder& d = *h.session.decoder();
