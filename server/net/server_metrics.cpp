@@ -29,6 +29,7 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
                                       "Earlier unacknowledged frames copied into UDP datagrams (FrameBundle).")),
       root_merges(registry.counter("ocean_key_root_merges_total",
                                    "Key roots whose sessions were keyed again to keep at most max_roots per profile.")),
+      sessions_started(registry.counter("ocean_sessions_started_total", "Client sessions welcomed.")),
       registry_(registry) {}
 
 Counter& ServerMetrics::frames_computed(std::string_view profile) {
@@ -53,6 +54,12 @@ Counter& ServerMetrics::bytes_sent(std::string_view transport) {
 
 Counter& ServerMetrics::rejects(std::string_view reason) {
   return registry_.counter("ocean_rejects_total", "Connections and packets refused, by reason.",
+                           {{"reason", std::string(reason)}});
+}
+
+Counter& ServerMetrics::sessions_ended(std::string_view reason) {
+  return registry_.counter("ocean_sessions_ended_total",
+                           "Welcomed client sessions that closed, by reason (client_bye, peer_closed, idle_timeout...).",
                            {{"reason", std::string(reason)}});
 }
 

@@ -31,12 +31,14 @@ class ServerMetrics {
   Gauge& send_queue_max_bytes;   // max over sessions of queued TCP bytes, per tick
   Counter& bundled_copies;   // earlier frames re-sent inside FrameBundles
   Counter& root_merges;      // key roots merged into a newer key (SessionCoreOptions::max_roots)
+  Counter& sessions_started; // Welcomes sent
 
   Counter& frames_computed(std::string_view profile);
   Gauge& clients(std::string_view profile, std::string_view transport);
   Counter& frames_sent(std::string_view transport);
   Counter& bytes_sent(std::string_view transport);
   Counter& rejects(std::string_view reason);
+  Counter& sessions_ended(std::string_view reason);  // welcomed sessions closed, by the link's reason
 
  private:
   MetricsRegistry& registry_;

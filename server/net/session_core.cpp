@@ -89,6 +89,7 @@ void SessionCore::on_closed(const std::shared_ptr<Session>& session, const std::
   peak_closed_queued_bytes_ = std::max(peak_closed_queued_bytes_, session->link->peak_queued_bytes());
   if (session->welcomed) {
     log_disconnect(session->id, session->transport(), session->peer(), reason);
+    host_.metrics.sessions_ended(reason).inc();
     sessions_.erase(session->id);
     update_client_gauges();
   }
@@ -235,6 +236,7 @@ void SessionCore::on_hello(const std::shared_ptr<Session>& session, const wire::
   send_control(*session, protocol::encode(welcome(*session)));
   for (const AnnouncedScene& later : scenes_.after(tick_)) send_control(*session, protocol::encode(scene_update(later, 0)));
   sessions_.emplace(session->id, session);
+  host_.metrics.sessions_started.inc();
   log_connect(session->id, session->wants_udp ? "udp" : session->link->transport(), session->peer(), stream->profile().name);
   update_client_gauges();
   // The key follows on the next key tick of the profile, shared by everyone who joined since.
@@ -301,6 +303,13 @@ void SessionCore::stop() {
   for (const auto& [id, session] : sessions_) end(*session, wire::ByeReason::server_shutdown, "server shutting down");
   const std::vector<std::shared_ptr<Session>> handshaking = handshaking_;  // close() erases from it
   for (const auto& session : handshaking) session->link->close("server_shutdown");
+}
+
+void SessionCore::abort(const std::string& reason) {
+  stopping_ = true;
+  std::vector<std::shared_ptr<Session>> all = handshaking_;  // close() erases from both
+  for (const auto& [id, session] : sessions_) all.push_back(session);
+  for (const auto& session : all) session->link->close(reason);
 }
 
 }  // namespace ocean::server

@@ -85,6 +85,8 @@ class SessionCore {
   void on_frames(const std::shared_ptr<const TickFrames>& frames, const Instant& now);
   // Shutdown: Bye to every session; no frames after this.
   void stop();
+  // Closes every link now, without a goodbye (the process is going away); no frames after this.
+  void abort(const std::string& reason);
 
   void set_frame_observer(FrameObserver observer) { observer_ = std::move(observer); }
   void set_tick_observer(TickObserver observer) { tick_observer_ = std::move(observer); }

@@ -136,7 +136,7 @@ class SessionHarness : public BasicSessionHarness<FakeServer> {
 class CoreSessionHarness : public BasicSessionHarness<ocean::test::CorePeer> {
  public:
   explicit CoreSessionHarness(ClientSessionConfig client_config = {}, UdpImpairment udp = {},
-                              server::ServerConfig server_config = ocean::test::core_peer_config())
+                              server::ServerConfig server_config = ocean::test::core_test_config())
       : BasicSessionHarness(std::move(client_config), udp, std::move(server_config)) {}
 };
 

@@ -71,7 +71,7 @@ bool wait_until(Done done, double seconds) {
 }  // namespace
 
 TEST_CASE("the headless viewer renders a streamed sea: sky above, water below") {
-  test::StreamTestServer server(0, 1);  // mobile: 64 x 64 at 30 Hz
+  viewer::test::StreamTestServer server(0, "mobile");  // mobile: 64 x 64 at 30 Hz
   ViewerOptions o = options_for(server.port());
   const auto png = temp_path("shot.png");
   o.screenshot = png.string();
@@ -104,7 +104,7 @@ TEST_CASE("the headless viewer renders a streamed sea: sky above, water below") 
 }
 
 TEST_CASE("recording (--record) writes the heights of every received frame") {
-  test::StreamTestServer server(0, 4);  // lite: 32 x 32 at 15 Hz
+  viewer::test::StreamTestServer server(0, "lite");  // lite: 32 x 32 at 15 Hz
   ViewerOptions o = options_for(server.port());
   const auto npy = temp_path("frames.npy");
   o.record_path = npy.string();
@@ -150,7 +150,7 @@ TEST_CASE("recording (--record) writes the heights of every received frame") {
 TEST_CASE("no server: the headless viewer gives up after its timeout with a reason") {
   std::uint16_t port = 0;
   {
-    test::StreamTestServer probe(0, 1);
+    viewer::test::StreamTestServer probe(0, "mobile");
     port = probe.port();
   }  // closed: nothing listens there now
   ViewerOptions o = options_for(port);
@@ -169,7 +169,7 @@ TEST_CASE("the viewer reconnects to a restarted server, holds the picture meanwh
   StreamView view;
   REQUIRE(view.init({}, {}, error));
 
-  auto server = std::make_unique<test::StreamTestServer>(0, 1);
+  auto server = std::make_unique<viewer::test::StreamTestServer>(0, "mobile");
   const std::uint16_t port = server->port();
   NetworkThreadConfig config;
   REQUIRE(make_network_config(options_for(port), config, error));
@@ -201,7 +201,7 @@ TEST_CASE("the viewer reconnects to a restarted server, holds the picture meanwh
   }
   CHECK(view.uploads() >= uploads_before);
 
-  server = std::make_unique<test::StreamTestServer>(port, 4);  // ... and comes back as lite: 32 x 32
+  server = std::make_unique<viewer::test::StreamTestServer>(port, "lite");  // ... and comes back as lite: 32 x 32
   REQUIRE(wait_until([&] { return render() && net.frames_received() >= received_before + 10 && view.shape().grid == 32; },
                      kPatienceS));
   const std::uint64_t uploads_after_restart = view.uploads();
