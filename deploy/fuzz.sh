@@ -12,7 +12,7 @@ OCEAN_FUZZ=1 ./deploy/install-deps.sh
 
 CC=clang CXX=clang++ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_FUZZ=ON \
   -DOCEAN_SANITIZE=address,undefined -DOCEAN_BUILD_CLIENT=OFF \
-  -DOCEAN_DIRS="sim;protocol;protocol/codec;server/net;client/net;tests;tests/fuzz" >/dev/null
+  -DOCEAN_DIRS="sim;protocol;protocol/codec;protocol/scene_wire;server/net;client/net;tests;tests/fuzz" >/dev/null
 targets=(fuzz_tcp_framer fuzz_verify_message fuzz_frame_block fuzz_codec_decoder fuzz_client_session fuzz_udp_cookie
          fuzz_http_request fuzz_config_toml)
 cmake --build "$build_dir" -j"${OCEAN_FUZZ_JOBS:-$(nproc)}" --target "${targets[@]}" fuzz_corpus

@@ -1,26 +1,8 @@
-// The spectrum and spreading name tables and their look-ups.
+// Look-ups in the spectrum and spreading name tables (scene_names.hpp).
 #include "scene_names.hpp"
 
 namespace ocean::sim {
 namespace {
-
-template <typename Kind>
-struct Named {
-  Kind kind;
-  std::string_view name;
-};
-
-// In enum order. A new enum value gets its name here and nowhere else.
-constexpr Named<SpectrumKind> kSpectra[] = {
-    {SpectrumKind::phillips, "phillips"},
-    {SpectrumKind::jonswap, "jonswap"},
-};
-
-constexpr Named<SpreadingKind> kSpreadings[] = {
-    {SpreadingKind::cos2s, "cos2s"},
-    {SpreadingKind::donelan_banner, "donelan-banner"},
-    {SpreadingKind::hasselmann, "hasselmann"},
-};
 
 template <typename Kind, std::size_t N>
 std::string_view name_in(const Named<Kind> (&table)[N], Kind kind) {

@@ -12,6 +12,25 @@
 
 namespace ocean::sim {
 
+template <typename Kind>
+struct Named {
+  Kind kind;
+  std::string_view name;
+};
+
+// In enum order, one row per enumerator: a new enum value gets its name here and nowhere else.
+// Visible at compile time so the wire mapping (protocol/scene_wire) can assert it covers them all.
+inline constexpr Named<SpectrumKind> kSpectra[] = {
+    {SpectrumKind::phillips, "phillips"},
+    {SpectrumKind::jonswap, "jonswap"},
+};
+
+inline constexpr Named<SpreadingKind> kSpreadings[] = {
+    {SpreadingKind::cos2s, "cos2s"},
+    {SpreadingKind::donelan_banner, "donelan-banner"},
+    {SpreadingKind::hasselmann, "hasselmann"},
+};
+
 // "phillips", "jonswap"; empty for a value outside the enum.
 std::string_view spectrum_name(SpectrumKind kind);
 // "cos2s", "donelan-banner", "hasselmann"; empty for a value outside the enum.

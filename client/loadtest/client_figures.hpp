@@ -15,13 +15,15 @@ struct ClientConnectionFacts {
 };
 
 struct ConnectionFigures {
-  // Over the clients that got a frame; none when no client did.
+  // Time to first frame: a client's first connection attempt to its first complete frame within
+  // the error bound; over the clients that got one (none: no client did).
   std::optional<double> ttff_max_s, ttff_p50_s;
   int clients_without_frame = 0;
-  double kbps_peak_1s = 0.0;      // the largest steady peak of any client
-  double kbps_peak_1s_p50 = 0.0;  // the median client's steady peak
-  double kbps_peak_1s_startup = 0.0;
-  double kbps_calm = 0.0;         // the median client's calm rate
+  // Busiest 1 s a client received (envelopes included): the largest and the median client's, from
+  // each client's first frame on, and the largest of the windows before it (the connection's start).
+  double kbps_peak_1s = 0.0, kbps_peak_1s_p50 = 0.0, kbps_peak_1s_startup = 0.0;
+  // The median client's median 100 ms rate from its first frame on: the stream between bursts.
+  double kbps_calm = 0.0;
 };
 
 ConnectionFigures connection_figures(std::span<const ClientConnectionFacts> clients);

@@ -1,31 +1,12 @@
 #include "ground_truth.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
-namespace ocean::loadtest {
+#include "scene_wire.hpp"
 
-sim::SceneParams to_sim_scene(const protocol::SceneParams& w) {
-  sim::SceneParams s;
-  s.size_x = w.size_x;
-  s.size_z = w.size_z;
-  s.patch_x_m = w.patch_x_m;
-  s.patch_z_m = w.patch_z_m;
-  s.spectrum = static_cast<sim::SpectrumKind>(w.spectrum);
-  s.spreading = static_cast<sim::SpreadingKind>(w.spreading);
-  s.wind_speed_mps = w.wind_speed_mps;
-  s.wind_dir_deg = w.wind_dir_deg;
-  s.fetch_m = w.fetch_m;
-  s.amplitude = w.amplitude;
-  s.depth_m = w.depth_m == 0.0 ? std::numeric_limits<double>::infinity() : w.depth_m;
-  s.small_wave_m = w.small_wave_m;
-  s.choppiness = w.choppiness;
-  s.gravity_mps2 = w.gravity_mps2;
-  s.seed = w.seed;
-  return s;
-}
+namespace ocean::loadtest {
 
 GroundTruth::GroundTruth(int tick_rate_hz, std::size_t cache_frames)
     : rate_hz_(tick_rate_hz), cache_frames_(std::max<std::size_t>(1, cache_frames)) {
@@ -38,9 +19,9 @@ void GroundTruth::set_scene(Tick effective_tick, const protocol::SceneParams& sc
   auto it = std::find_if(scenes_.begin(), scenes_.end(), [&](const SceneEntry& e) { return e.effective_tick >= effective_tick; });
   if (it != scenes_.end() && it->effective_tick == effective_tick) {
     it->wire = scene;
-    it->ocean = std::make_unique<sim::Ocean>(to_sim_scene(scene));
+    it->ocean = std::make_unique<sim::Ocean>(scene_wire::to_sim(scene));
   } else {
-    scenes_.insert(it, SceneEntry{effective_tick, scene, std::make_unique<sim::Ocean>(to_sim_scene(scene))});
+    scenes_.insert(it, SceneEntry{effective_tick, scene, std::make_unique<sim::Ocean>(scene_wire::to_sim(scene))});
   }
   // Frames from the changed tick on were computed with the old scene.
   for (auto c = cache_.begin(); c != cache_.end();)

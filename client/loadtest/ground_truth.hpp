@@ -15,9 +15,6 @@
 
 namespace ocean::loadtest {
 
-// protocol (0 = deep water) to sim (infinity = deep water).
-sim::SceneParams to_sim_scene(const protocol::SceneParams& wire);
-
 class GroundTruth {
  public:
   // tick_rate_hz: the server's tick rate (1 / Welcome.tick_period_s, rounded).

@@ -334,14 +334,7 @@ class Driver {
     s.frames_ok_pct = s.frames_expected ? 100.0 * std::min(s.frames_ok, s.frames_expected) / s.frames_expected : 0.0;
     s.kbps_mean = client_seconds > 0 ? end_bytes_ * 8.0 / 1000.0 / client_seconds : 0.0;
     s.kbps_mean_ip = client_seconds > 0 ? (end_bytes_ + kIpUdpHeaderBytes * end_datagrams_) * 8.0 / 1000.0 / client_seconds : 0.0;
-    const ConnectionFigures figures = connection_figures(facts);
-    s.ttff_max_s = figures.ttff_max_s;
-    s.ttff_p50_s = figures.ttff_p50_s;
-    s.clients_without_frame = figures.clients_without_frame;
-    s.kbps_peak_1s = figures.kbps_peak_1s;
-    s.kbps_peak_1s_p50 = figures.kbps_peak_1s_p50;
-    s.kbps_peak_1s_startup = figures.kbps_peak_1s_startup;
-    s.kbps_calm = figures.kbps_calm;
+    static_cast<ConnectionFigures&>(s) = connection_figures(facts);
     s.latency_p50_ms = latency_all_.percentile(50) * 1e3;
     s.latency_p99_ms = latency_all_.percentile(99) * 1e3;
     s.latency_max_ms = latency_all_.max_s() * 1e3;

@@ -7,9 +7,13 @@
 #include <ostream>
 #include <string>
 
+#include "client_figures.hpp"
+
 namespace ocean::loadtest {
 
-struct LoadSummary {
+// The connection figures (time to first frame, 1 s peaks, calm rate) are ConnectionFigures, computed
+// over all clients by connection_figures(); the rest is summed here.
+struct LoadSummary : ConnectionFigures {
   int clients = 0;
   int clients_connected = 0;     // connected at the end
   int clients_welcomed = 0;      // got a Welcome at least once during the run
@@ -28,15 +32,6 @@ struct LoadSummary {
   double error_bound_m = 0.0;
   double kbps_mean = 0.0;        // received kbit/s per client, envelopes included
   double kbps_mean_ip = 0.0;     // kbps_mean plus 28 bytes of IPv4/UDP header per datagram received
-  // Busiest 1 s a client received (bytes as kbps_mean): the largest and the median client's, from
-  // each client's first frame on, and the largest of the windows before it (the connection's start).
-  double kbps_peak_1s = 0.0, kbps_peak_1s_p50 = 0.0, kbps_peak_1s_startup = 0.0;
-  // The median client's median 100 ms rate from its first frame on: the stream between bursts.
-  double kbps_calm = 0.0;
-  // Time to first frame: a client's first connection attempt to its first complete frame within
-  // the error bound; over the clients that got one (none: no client did).
-  std::optional<double> ttff_max_s, ttff_p50_s;
-  int clients_without_frame = 0;
   double latency_p50_ms = 0.0, latency_p99_ms = 0.0, latency_max_ms = 0.0;
   double interpolation_delay_ms = 0.0;      // the base: three send intervals
   double interpolation_delay_max_ms = 0.0;  // the most any client's jitter buffer added up to

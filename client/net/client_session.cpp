@@ -1,12 +1,11 @@
-// ClientSession: message handling and timers (PROTOCOL.md sections 5-7).
+// ClientSession: what the server sends and how the session answers it (PROTOCOL.md sections 5-7);
+// what the client sends on its own clock is in client_session_timers.cpp.
 #include "client_session.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
-#include "ack_window.hpp"
 #include "stream_wire.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
@@ -15,8 +14,6 @@
 
 namespace ocean::client {
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Refusals that mean the payload itself is broken (not merely late, duplicated or baseline-less).
 bool is_decode_error(codec::ChunkError e) {
@@ -276,122 +273,6 @@ void ClientSession::handle_pong(const protocol::Pong& pong, double now) {
   if (!(rtt >= 0.0 && rtt < 60.0)) return;  // not a Ping of ours
   stats_.rtt_s = rtt;
   stats_.rtt_smoothed_s = stats_.rtt_smoothed_s == 0.0 ? rtt : stats_.rtt_smoothed_s + (rtt - stats_.rtt_smoothed_s) / 8.0;
-}
-
-wire::Transport ClientSession::control_path() const {
-  return path_ == Path::udp ? wire::Transport::udp : wire::Transport::tcp;
-}
-
-void ClientSession::send(const protocol::Bytes& bytes, wire::Transport transport) {
-  if (transport == wire::Transport::tcp) {
-    ++stats_.tcp.messages_out;
-    stats_.tcp.bytes_out += bytes.size();
-    if (events_.send_tcp) events_.send_tcp(bytes);
-  } else {
-    if (!protocol::fits_datagram(bytes)) return;  // never happens for the messages a client sends
-    ++stats_.udp.messages_out;
-    stats_.udp.bytes_out += bytes.size();
-    if (events_.send_udp) events_.send_udp(bytes);
-  }
-}
-
-void ClientSession::send_ack(double now) {
-  const std::vector<Tick> ticks = decoder_->complete_ticks();
-  const auto window = protocol::ack_window(ticks);
-  next_ack_ = now + config_.ack_interval_s;
-  if (!window) return;
-  protocol::Ack ack;
-  ack.session_id = welcome_->session_id;
-  if (control_path() == wire::Transport::udp) ack.cookie = welcome_->udp_cookie;
-  ack.latest_tick = window->latest_tick;
-  ack.ack_bits = window->bits;
-  send(protocol::encode(ack), control_path());
-  ++stats_.acks_sent;
-  ack_pending_ = false;
-}
-
-void ClientSession::send_udp_hello(double now) {
-  protocol::UdpHello hello;
-  hello.session_id = welcome_->session_id;
-  hello.cookie = welcome_->udp_cookie;
-  send(protocol::encode(hello), wire::Transport::udp);
-  ++stats_.udp_hellos_sent;
-  next_udp_hello_ = now + config_.udp_hello_interval_s;
-}
-
-void ClientSession::send_ping(double now) {
-  protocol::Ping ping;
-  ping.session_id = welcome_->session_id;
-  if (control_path() == wire::Transport::udp) ping.cookie = welcome_->udp_cookie;
-  ping.seq = ++ping_seq_;
-  ping.client_time_us = static_cast<std::uint64_t>(std::max(0.0, now) * 1e6);
-  send(protocol::encode(ping), control_path());
-  ++stats_.pings_sent;
-  next_ping_ = now + config_.ping_interval_s;
-}
-
-void ClientSession::request_keyframe(wire::KeyframeReason reason, double now) {
-  if (now - last_keyframe_request_ < config_.keyframe_retry_s) return;
-  last_keyframe_request_ = now;
-  protocol::KeyframeRequest request;
-  request.session_id = welcome_->session_id;
-  request.reason = reason;
-  send(protocol::encode(request), wire::Transport::tcp);  // keyframes come on TCP; ask there reliably
-  ++stats_.keyframe_requests_sent;
-}
-
-void ClientSession::fall_back_to_tcp(double now) {
-  send(protocol::encode(protocol::SetTransport{wire::Transport::tcp}), wire::Transport::tcp);
-  ++stats_.transport_fallbacks;
-  path_ = Path::tcp;
-  last_progress_ = std::max(last_progress_, now);  // the server answers with a keyframe on TCP
-}
-
-void ClientSession::update(double now) {
-  if (state_ == State::awaiting_welcome && now - last_rx_ >= config_.idle_timeout_s)
-    return close("no Welcome within idle_timeout_s");
-  if (state_ != State::streaming) return;
-  if (now - last_rx_ >= config_.idle_timeout_s) return close("the server was silent for idle_timeout_s");
-
-  if (path_ == Path::udp_proving) {
-    if (now - udp_proof_started_ >= config_.udp_proof_timeout_s)
-      fall_back_to_tcp(now);
-    else if (now >= next_udp_hello_)
-      send_udp_hello(now);
-  } else if (path_ == Path::udp && now - last_udp_rx_ >= config_.udp_silence_timeout_s) {
-    fall_back_to_tcp(now);
-  }
-
-  if (now >= next_ack_) {
-    const bool live = now - last_progress_ < 1.0;  // frames still completing: keep acking
-    if (decoder_->newest_complete() && (ack_pending_ || live))
-      send_ack(now);
-    else
-      next_ack_ = now + config_.ack_interval_s;
-  }
-  if (now >= next_ping_) send_ping(now);
-
-  if (!decoder_->newest_complete()) {
-    if (now - welcome_at_ >= config_.startup_keyframe_after_s) request_keyframe(wire::KeyframeReason::startup, now);
-  } else if (now - last_progress_ >= config_.stuck_ticks * welcome_->tick_period_s) {
-    request_keyframe(last_chunk_error_ == codec::ChunkError::unknown_baseline ? wire::KeyframeReason::lost_baseline
-                                                                              : wire::KeyframeReason::incomplete_frame,
-                     now);
-  }
-}
-
-double ClientSession::next_due() const {
-  if (state_ == State::awaiting_welcome) return last_rx_ + config_.idle_timeout_s;
-  if (state_ != State::streaming) return kInfinity;
-  double due = std::min({last_rx_ + config_.idle_timeout_s, next_ack_, next_ping_});
-  if (path_ == Path::udp_proving)
-    due = std::min({due, next_udp_hello_, udp_proof_started_ + config_.udp_proof_timeout_s});
-  else if (path_ == Path::udp)
-    due = std::min(due, last_udp_rx_ + config_.udp_silence_timeout_s);
-  const double keyframe_at = decoder_->newest_complete()
-                                 ? last_progress_ + config_.stuck_ticks * welcome_->tick_period_s
-                                 : welcome_at_ + config_.startup_keyframe_after_s;
-  return std::min(due, std::max(keyframe_at, last_keyframe_request_ + config_.keyframe_retry_s));
 }
 
 void ClientSession::quit(double /*now*/) {

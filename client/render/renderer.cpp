@@ -228,69 +228,81 @@ void Renderer::draw(const Camera& camera, int width, int height, double /*time_s
   const glm::mat4 clip_from_rel = camera.clip_from_relative(static_cast<float>(width) / static_cast<float>(height));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_CUBE_MAP, sky_texture_);
-
   if (has_frame_) {
-    TileSelectionInput sel;
-    sel.camera_position = camera.position;
-    sel.clip_from_relative = clip_from_rel;
-    sel.patch_x_m = patch_x_;
-    sel.patch_z_m = patch_z_;
-    sel.view_distance_m = desc_.view_distance_m;
-    sel.max_height_m = max_height_;
-    sel.max_displacement_m = max_disp_;
-    sel.lod.lod0_distance_m = desc_.lod0_distance_m > 0.0f ? desc_.lod0_distance_m : 0.5f * std::max(patch_x_, patch_z_);
-    sel.lod.max_level = lod_levels_;
-    sel.chunks_per_side = chunks_per_side_;
-    sel.far_block_tiles = far_span_;
-    const TileSelection tiles = select_tiles(sel);
-
-    glUseProgram(ocean_program_);
-    glUniformMatrix4fv(ocean_u_.clip_from_rel, 1, GL_FALSE, glm::value_ptr(clip_from_rel));
-    glUniform1f(ocean_u_.eye_height, static_cast<float>(camera.position.y));
-    glUniform1f(ocean_u_.choppiness, desc_.choppiness);
-    glUniform1f(ocean_u_.detail_fade, 2.0f / desc_.view_distance_m);
-    glUniform1f(ocean_u_.far_roughness, 0.35f);
-    glUniform2f(ocean_u_.foam, desc_.foam_threshold, 1.0f / 0.15f);
-    glUniform1i(ocean_u_.sky, 0);
-    glUniform3fv(ocean_u_.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
-    glUniform3fv(ocean_u_.sun_colour, 1, glm::value_ptr(desc_.sun_colour));
-    glUniform3fv(ocean_u_.deep_colour, 1, glm::value_ptr(desc_.deep_colour));
-    glUniform3fv(ocean_u_.scatter_colour, 1, glm::value_ptr(desc_.scatter_colour));
-    glUniform1f(ocean_u_.shininess, desc_.shininess);
-    glUniform2f(ocean_u_.fog, desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m)));
-    glUniform3f(ocean_u_.foam_colour, 0.92f, 0.95f, 0.97f);
-    glUniform3fv(ocean_u_.horizon, static_cast<GLsizei>(horizon_ring_.size()), glm::value_ptr(horizon_ring_[0]));
-
-    // Tiles and chunks first (nearest first), then the far blocks with their own buffers.
-    tile_.bind(has_disp_, has_jacobian_);
-    for (const TileDraw& t : tiles.draws) {
-      if (t.span > 1) continue;
-      const IndexRange& range = index_ranges_[((t.chunk + 1) * (lod_levels_ + 1) + t.level) * kEdgeMaskCount + t.coarser_edges];
-      glUniform2f(ocean_u_.tile_offset, t.offset_relative.x, t.offset_relative.y);
-      glDrawElements(GL_TRIANGLES, range.count, index_type_, reinterpret_cast<const void*>(range.byte_offset));
-      stats_.triangles += range.count / 3;
-      ++stats_.tiles_per_level[std::min(t.level, 5)];
-      ++stats_.tiles_drawn;
-      ++stats_.draw_calls;
-    }
-    bool far_bound = false;
-    for (const TileDraw& t : tiles.draws) {
-      if (t.span == 1) continue;
-      if (!far_bound) far_.bind(has_disp_, has_jacobian_);
-      far_bound = true;
-      glUniform2f(ocean_u_.tile_offset, t.offset_relative.x, t.offset_relative.y);
-      glDrawElements(GL_TRIANGLES, far_index_count_, far_index_type_, nullptr);
-      stats_.triangles += far_index_count_ / 3;
-      stats_.tiles_per_level[std::min(t.level, 5)] += t.span * t.span;
-      stats_.tiles_drawn += t.span * t.span;
-      ++stats_.far_blocks;
-      ++stats_.draw_calls;
-    }
-    stats_.tiles_culled = tiles.culled;
-    PatchBuffers::unbind();
+    const TileSelection tiles = visible_tiles(camera, clip_from_rel);
+    set_ocean_uniforms(camera, clip_from_rel);
+    draw_tiles(tiles);
   }
-
   // The sky last, on the far plane, so it only shades pixels no water covered.
+  draw_sky(camera, clip_from_rel);
+}
+
+TileSelection Renderer::visible_tiles(const Camera& camera, const glm::mat4& clip_from_rel) const {
+  TileSelectionInput sel;
+  sel.camera_position = camera.position;
+  sel.clip_from_relative = clip_from_rel;
+  sel.patch_x_m = patch_x_;
+  sel.patch_z_m = patch_z_;
+  sel.view_distance_m = desc_.view_distance_m;
+  sel.max_height_m = max_height_;
+  sel.max_displacement_m = max_disp_;
+  sel.lod.lod0_distance_m = desc_.lod0_distance_m > 0.0f ? desc_.lod0_distance_m : 0.5f * std::max(patch_x_, patch_z_);
+  sel.lod.max_level = lod_levels_;
+  sel.chunks_per_side = chunks_per_side_;
+  sel.far_block_tiles = far_span_;
+  return select_tiles(sel);
+}
+
+void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_from_rel) {
+  glUseProgram(ocean_program_);
+  glUniformMatrix4fv(ocean_u_.clip_from_rel, 1, GL_FALSE, glm::value_ptr(clip_from_rel));
+  glUniform1f(ocean_u_.eye_height, static_cast<float>(camera.position.y));
+  glUniform1f(ocean_u_.choppiness, desc_.choppiness);
+  glUniform1f(ocean_u_.detail_fade, 2.0f / desc_.view_distance_m);
+  glUniform1f(ocean_u_.far_roughness, 0.35f);
+  glUniform2f(ocean_u_.foam, desc_.foam_threshold, 1.0f / 0.15f);
+  glUniform1i(ocean_u_.sky, 0);
+  glUniform3fv(ocean_u_.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
+  glUniform3fv(ocean_u_.sun_colour, 1, glm::value_ptr(desc_.sun_colour));
+  glUniform3fv(ocean_u_.deep_colour, 1, glm::value_ptr(desc_.deep_colour));
+  glUniform3fv(ocean_u_.scatter_colour, 1, glm::value_ptr(desc_.scatter_colour));
+  glUniform1f(ocean_u_.shininess, desc_.shininess);
+  glUniform2f(ocean_u_.fog, desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m)));
+  glUniform3f(ocean_u_.foam_colour, 0.92f, 0.95f, 0.97f);
+  glUniform3fv(ocean_u_.horizon, static_cast<GLsizei>(horizon_ring_.size()), glm::value_ptr(horizon_ring_[0]));
+}
+
+void Renderer::draw_tiles(const TileSelection& tiles) {
+  // Tiles and chunks first (nearest first), then the far blocks with their own buffers.
+  tile_.bind(has_disp_, has_jacobian_);
+  for (const TileDraw& t : tiles.draws) {
+    if (t.span > 1) continue;
+    const IndexRange& range = index_ranges_[((t.chunk + 1) * (lod_levels_ + 1) + t.level) * kEdgeMaskCount + t.coarser_edges];
+    glUniform2f(ocean_u_.tile_offset, t.offset_relative.x, t.offset_relative.y);
+    glDrawElements(GL_TRIANGLES, range.count, index_type_, reinterpret_cast<const void*>(range.byte_offset));
+    stats_.triangles += range.count / 3;
+    ++stats_.tiles_per_level[std::min(t.level, 5)];
+    ++stats_.tiles_drawn;
+    ++stats_.draw_calls;
+  }
+  bool far_bound = false;
+  for (const TileDraw& t : tiles.draws) {
+    if (t.span == 1) continue;
+    if (!far_bound) far_.bind(has_disp_, has_jacobian_);
+    far_bound = true;
+    glUniform2f(ocean_u_.tile_offset, t.offset_relative.x, t.offset_relative.y);
+    glDrawElements(GL_TRIANGLES, far_index_count_, far_index_type_, nullptr);
+    stats_.triangles += far_index_count_ / 3;
+    stats_.tiles_per_level[std::min(t.level, 5)] += t.span * t.span;
+    stats_.tiles_drawn += t.span * t.span;
+    ++stats_.far_blocks;
+    ++stats_.draw_calls;
+  }
+  stats_.tiles_culled = tiles.culled;
+  PatchBuffers::unbind();
+}
+
+void Renderer::draw_sky(const Camera& camera, const glm::mat4& clip_from_rel) {
   glUseProgram(sky_program_);
   // Rays scaled from far-plane length (thousands of metres) to about 1: squaring them in a
   // mediump (fp16) fragment stage would overflow.

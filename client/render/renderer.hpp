@@ -13,6 +13,7 @@
 
 #include "client/render/camera.hpp"
 #include "client/render/patch_buffers.hpp"
+#include "client/render/tile_selection.hpp"
 
 namespace ocean::render {
 
@@ -83,6 +84,11 @@ class Renderer {
  private:
   bool fail(std::string reason);
   void release_grid();
+  // draw()'s steps: which tiles the camera sees, the water's uniforms, the water, then the sky.
+  TileSelection visible_tiles(const Camera& camera, const glm::mat4& clip_from_rel) const;
+  void set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_from_rel);
+  void draw_tiles(const TileSelection& tiles);
+  void draw_sky(const Camera& camera, const glm::mat4& clip_from_rel);
 
   RendererDesc desc_;
   std::string error_;

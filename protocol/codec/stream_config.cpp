@@ -10,17 +10,11 @@ StreamConfig StreamConfig::from_profile(const Profile& profile, double patch_x_m
                                         double gravity_mps2, double depth_m) {
   StreamConfig c;
   c.profile_id = profile.id;
-  c.grid = profile.grid;
+  copy_profile_fields(profile, c);
   c.patch_x_m = patch_x_m;
   c.patch_z_m = patch_z_m;
   c.gravity_mps2 = gravity_mps2;
   c.depth_m = std::isinf(depth_m) ? 0.0 : depth_m;
-  c.rate_hz = profile.rate_hz;
-  c.height_step_m = profile.height_step_m;
-  c.slope_step = profile.slope_step;
-  c.disp_step_m = profile.disp_step_m;
-  c.normals = profile.normals;
-  c.choppy = profile.choppy;
   return c;
 }
 

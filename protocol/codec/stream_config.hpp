@@ -39,6 +39,19 @@ struct StreamConfig {
 
 bool operator==(const StreamConfig& a, const StreamConfig& b);
 
+// The fields a profile fixes, under the same names in Profile, StreamConfig and the wire's
+// StreamParams: one list for every copy between them.
+template <typename From, typename To>
+void copy_profile_fields(const From& from, To& to) {
+  to.grid = from.grid;
+  to.rate_hz = from.rate_hz;
+  to.height_step_m = from.height_step_m;
+  to.slope_step = from.slope_step;
+  to.disp_step_m = from.disp_step_m;
+  to.normals = from.normals;
+  to.choppy = from.choppy;
+}
+
 // Empty if usable, else a message naming the first bad field, its value and the allowed range.
 std::string validate(const StreamConfig& config);
 

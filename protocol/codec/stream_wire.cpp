@@ -12,24 +12,34 @@ static_assert(static_cast<int>(wire::Spreading::cos2s) == static_cast<int>(Model
 static_assert(static_cast<int>(wire::Spreading::donelan_banner) == static_cast<int>(ModelSpreading::donelan_banner));
 static_assert(static_cast<int>(wire::Spreading::hasselmann) == static_cast<int>(ModelSpreading::hasselmann));
 
+namespace {
+
+// StreamParams and StreamConfig hold the same fields (the config adds the tick rate, which the
+// Welcome carries as tick_period_s): one list for both directions.
+template <typename From, typename To>
+void copy_stream_fields(const From& from, To& to) {
+  to.profile_id = from.profile_id;
+  copy_profile_fields(from, to);
+  to.patch_x_m = from.patch_x_m;
+  to.patch_z_m = from.patch_z_m;
+  to.gravity_mps2 = from.gravity_mps2;
+  to.depth_m = from.depth_m;
+}
+
+}  // namespace
+
+protocol::StreamParams wire_stream(const StreamConfig& config) {
+  protocol::StreamParams s;
+  copy_stream_fields(config, s);
+  return s;
+}
+
 StreamConfig decoder_config(const protocol::Welcome& welcome) {
-  const protocol::StreamParams& s = welcome.stream;
   StreamConfig c;
-  c.profile_id = s.profile_id;
-  c.grid = s.grid;
-  c.patch_x_m = s.patch_x_m;
-  c.patch_z_m = s.patch_z_m;
-  c.gravity_mps2 = s.gravity_mps2;
-  c.depth_m = s.depth_m;
-  c.rate_hz = s.rate_hz;
+  copy_stream_fields(welcome.stream, c);
   // The codec advances its state one server tick per step: a stream slower than its server
   // (lite at 15 Hz under 30 Hz ticks) carries every n-th tick, so it needs the tick rate too.
   c.tick_rate_hz = welcome.tick_period_s > 0 ? static_cast<std::uint16_t>(std::lround(1.0 / welcome.tick_period_s)) : 0;
-  c.height_step_m = s.height_step_m;
-  c.slope_step = s.slope_step;
-  c.disp_step_m = s.disp_step_m;
-  c.normals = s.normals;
-  c.choppy = s.choppy;
   return c;
 }
 

@@ -1,7 +1,8 @@
-// The codec configuration a client builds from the server's wire messages: the stream from the
-// Welcome, and the scene model of every SceneParams (Welcome, SceneUpdate). It must equal what the
-// server's encoder was given bit for bit, so the server builds its own from the same functions
-// (through wire_scene()). Target ocean_codec_wire: the codec plus the protocol's message types.
+// The codec configuration as the wire carries it, both directions: the server writes its encoder's
+// StreamConfig into the Welcome, a client builds its decoder's from that Welcome, and both build
+// the scene model from SceneParams. The two ends must agree bit for bit, so they share these
+// functions. Target ocean_codec_wire: the codec plus the protocol's message types. Depth is 0 for
+// deep water on the wire and in the codec alike, so nothing here translates it.
 #pragma once
 
 #include "message_types.hpp"
@@ -10,6 +11,7 @@
 
 namespace ocean::codec {
 
+protocol::StreamParams wire_stream(const StreamConfig& config);
 StreamConfig decoder_config(const protocol::Welcome& welcome);
 SceneModelParams scene_model_params(const protocol::SceneParams& scene);
 

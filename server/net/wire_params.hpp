@@ -1,14 +1,14 @@
-// The scene and stream parameters as the Welcome and SceneUpdate carry them: the sim's scene
-// with deep water (infinity) written as depth 0, and a codec StreamConfig as StreamParams.
+// Forwarding only: the hub (session_hub.cpp, hub_ticks.cpp) is being reworked on another branch and
+// still calls these names. The conversions live in protocol/scene_wire/scene_wire.hpp (scene) and
+// protocol/codec/stream_wire.hpp (stream); once the hub includes those, delete this header.
 #pragma once
 
-#include "message_types.hpp"
-#include "scene_params.hpp"
-#include "stream_config.hpp"
+#include "scene_wire.hpp"
+#include "stream_wire.hpp"
 
 namespace ocean::server {
 
-protocol::SceneParams wire_scene(const sim::SceneParams& scene);
-protocol::StreamParams wire_stream(const codec::StreamConfig& config);
+inline protocol::SceneParams wire_scene(const sim::SceneParams& scene) { return scene_wire::to_wire(scene); }
+using codec::wire_stream;
 
 }  // namespace ocean::server

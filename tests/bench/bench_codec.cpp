@@ -8,7 +8,7 @@
 #include "frame_records.hpp"
 #include "profile_stream.hpp"
 #include "stream_wire.hpp"
-#include "wire_params.hpp"
+#include "scene_wire.hpp"
 #include "ocean.hpp"
 #include "profile.hpp"
 
@@ -215,7 +215,7 @@ int run_codec(int argc, char** argv) {
     }
     sim::SceneParams scene;
     sim::Ocean ocean(scene);
-    const codec::SceneModelParams model = codec::scene_model_params(server::wire_scene(scene));
+    const codec::SceneModelParams model = codec::scene_model_params(scene_wire::to_wire(scene));
     const int n = p->grid;
     const StreamConfig config = StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m);
     const int frames = std::max(8, static_cast<int>(seconds * p->rate_hz));

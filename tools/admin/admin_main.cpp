@@ -66,7 +66,7 @@ int show(AdminLink& link, const protocol::Welcome& welcome) {
 }
 
 int change(AdminLink& link, const AdminOptions& o, const protocol::Welcome& welcome) {
-  protocol::ParamChange request = param_change(o);
+  protocol::ParamChange request = o.change;
   // Random, so our SceneUpdate is told apart from another admin's running at the same time.
   std::random_device entropy;
   request.request_id = std::uniform_int_distribution<std::uint32_t>(1, UINT32_MAX)(entropy);

@@ -4,6 +4,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene_names.hpp"
+#include "scene_wire.hpp"
+
 namespace ocean::admin {
 namespace {
 
@@ -50,7 +53,8 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
                                                     "[-1e6, 1e6]")->check(CLI::Range(-1e6, 1e6));
   auto* am = app.add_option("--amplitude", amplitude, "scale on the spectrum's energy, [0, 1e6]")->check(CLI::Range(0.0, 1e6));
   auto* ch = app.add_option("--choppiness", choppiness, "horizontal displacement scale, [0, 100]")->check(CLI::Range(0.0, 100.0));
-  auto* sp = app.add_option("--spectrum", spectrum, "phillips or jonswap")->check(CLI::IsMember({"phillips", "jonswap"}));
+  auto* sp = app.add_option("--spectrum", spectrum, sim::join_names(sim::spectrum_names(), ", ", " or "))
+                 ->check(CLI::IsMember(sim::spectrum_names()));
   app.add_option("--timeout", o.timeout_s, "seconds to wait for the server, [0.1, 600]")->check(CLI::Range(0.1, 600.0));
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
@@ -73,11 +77,12 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
     return result;
   }
   o.server = servers.front();
-  if (*ws) o.wind_speed_mps = wind_speed;
-  if (*wd) o.wind_dir_deg = wind_dir;
-  if (*am) o.amplitude = amplitude;
-  if (*ch) o.choppiness = choppiness;
-  if (*sp) o.spectrum = spectrum == "jonswap" ? wire::Spectrum::jonswap : wire::Spectrum::phillips;
+  protocol::ParamChange& c = o.change;
+  if (*ws) c.wind_speed_mps = wind_speed;
+  if (*wd) c.wind_dir_deg = wind_dir;
+  if (*am) c.amplitude = amplitude;
+  if (*ch) c.choppiness = choppiness;
+  if (*sp) c.spectrum = scene_wire::to_wire(*sim::spectrum_from_name(spectrum));  // IsMember checked it
   const bool change = *ws || *wd || *am || *ch || *sp;
   if (o.show == change) {
     result.error = o.show ? "--show prints the scene and changes nothing: leave out the change flags"
@@ -87,29 +92,18 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
   }
   if (o.show) return result;
   if (!token_file.empty()) {
-    if (!read_token_file(token_file, o.token, result.error)) return result;
+    if (!read_token_file(token_file, c.admin_token, result.error)) return result;
   } else if (env_token && *env_token) {
-    o.token = env_token;
+    c.admin_token = env_token;
   } else {
     result.error = "no admin token: give --token-file FILE or set OCEAN_ADMIN_TOKEN";
     return result;
   }
-  if (o.token.size() > 128) {
-    result.error = "the admin token is " + std::to_string(o.token.size()) + " bytes; the protocol allows at most 128";
+  if (c.admin_token.size() > 128) {
+    result.error = "the admin token is " + std::to_string(c.admin_token.size()) + " bytes; the protocol allows at most 128";
     return result;
   }
   return result;
-}
-
-protocol::ParamChange param_change(const AdminOptions& o) {
-  protocol::ParamChange change;
-  change.admin_token = o.token;
-  change.wind_speed_mps = o.wind_speed_mps;
-  change.wind_dir_deg = o.wind_dir_deg;
-  change.amplitude = o.amplitude;
-  change.choppiness = o.choppiness;
-  change.spectrum = o.spectrum;
-  return change;
 }
 
 }  // namespace ocean::admin

@@ -2,7 +2,6 @@
 // exits; an error names the flag and what it accepts.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,12 +20,12 @@ enum ExitCode : int {
 
 struct AdminOptions {
   client::ServerEndpoint server;
-  std::string token;       // from --token-file, else $OCEAN_ADMIN_TOKEN
   bool show = false;
   double timeout_s = 5.0;  // for the whole exchange
-  // The change: each field present only when its flag was given (ParamChange: absent = unchanged).
-  std::optional<double> wind_speed_mps, wind_dir_deg, amplitude, choppiness;
-  std::optional<wire::Spectrum> spectrum;
+  // What the flags ask for, as it is sent: a field is present only when its flag was given
+  // (absent = unchanged); the token from --token-file, else $OCEAN_ADMIN_TOKEN. request_id is the
+  // caller's.
+  protocol::ParamChange change;
 };
 
 struct AdminOptionsResult {
@@ -37,8 +36,5 @@ struct AdminOptionsResult {
 
 // args excludes the program name; env_token is $OCEAN_ADMIN_TOKEN (null when unset).
 AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, const char* env_token);
-
-// The ParamChange the options ask for (request_id and token filled in by the caller).
-protocol::ParamChange param_change(const AdminOptions& options);
 
 }  // namespace ocean::admin
