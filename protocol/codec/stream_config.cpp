@@ -14,7 +14,7 @@ StreamConfig StreamConfig::from_profile(const Profile& profile, double patch_x_m
   c.patch_x_m = patch_x_m;
   c.patch_z_m = patch_z_m;
   c.gravity_mps2 = gravity_mps2;
-  c.depth_m = std::isinf(depth_m) ? 0.0 : depth_m;
+  c.depth_m = depth_m;  // 0 = deep water, as on the wire (scene_wire::wire_depth converts the sim's)
   return c;
 }
 

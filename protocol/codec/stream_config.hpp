@@ -28,7 +28,7 @@ struct StreamConfig {
   bool choppy = false;           // not supported by codec version 1: validate() refuses it
 
   // The profile's grid/rate/steps/channels with the scene's patch and physics.
-  // depth_m: pass 0 (or infinity, mapped to 0) for deep water.
+  // depth_m as on the wire: 0 for deep water (scene_wire::wire_depth converts the sim's infinity).
   static StreamConfig from_profile(const Profile& profile, double patch_x_m, double patch_z_m,
                                    double gravity_mps2, double depth_m);
 

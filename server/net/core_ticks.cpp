@@ -6,7 +6,8 @@
 #include "frame_records.hpp"
 #include "message_builders.hpp"
 #include "stream_wire.hpp"
-#include "wire_params.hpp"
+#include "scene_wire.hpp"
+#include "stream_wire.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -17,7 +18,7 @@
 namespace ocean::server {
 
 protocol::SceneUpdate SessionCore::scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const {
-  return protocol::SceneUpdate{request_id, scene.from, wire_scene(scene.scene), scene.serial};
+  return protocol::SceneUpdate{request_id, scene.from, scene_wire::to_wire(scene.scene), scene.serial};
 }
 
 // Both sides of every stream switch scene at its first tick with no keyframe: the encoders learn
@@ -26,7 +27,7 @@ protocol::SceneUpdate SessionCore::scene_update(const AnnouncedScene& scene, std
 void SessionCore::announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester,
                           std::uint32_t request_id) {
   for (const AnnouncedScene& scene : scenes) {
-    const codec::SceneModelParams model = codec::scene_model_params(wire_scene(scene.scene));
+    const codec::SceneModelParams model = codec::scene_model_params(scene_wire::to_wire(scene.scene));
     for (auto& stream : streams_) stream->set_scene(scene.from, scene.serial, model);
     for (auto& [id, session] : sessions_)
       send_control(*session, protocol::encode(scene_update(scene, requester == id ? request_id : 0)));

@@ -6,7 +6,8 @@
 #include "message_readers.hpp"
 #include "server_log.hpp"
 #include "verify_message.hpp"
-#include "wire_params.hpp"
+#include "scene_wire.hpp"
+#include "stream_wire.hpp"
 
 #include <sodium.h>
 #include <spdlog/spdlog.h>
@@ -42,7 +43,8 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
 
 codec::StreamConfig SessionCore::stream_config(const Profile& profile, const sim::SceneParams& scene) const {
   codec::StreamConfig config =
-      codec::StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m);
+      codec::StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2,
+                                        scene_wire::wire_depth(scene.depth_m));
   config.tick_rate_hz = static_cast<std::uint16_t>(host_.config.tick_rate_hz);
   return config;
 }
@@ -246,8 +248,8 @@ protocol::Welcome SessionCore::welcome(const Session& session) const {
   protocol::Welcome welcome;
   welcome.session_id = session.id;
   const AnnouncedScene& scene = scenes_.in_force(tick_);
-  welcome.stream = wire_stream(session.stream->config());
-  welcome.scene = wire_scene(scene.scene);
+  welcome.stream = codec::wire_stream(session.stream->config());
+  welcome.scene = scene_wire::to_wire(scene.scene);
   welcome.stream.depth_m = welcome.scene.depth_m;  // the depth in force now; SceneUpdates carry later ones
   welcome.scene_serial = scene.serial;
   for (const auto& s : streams_) welcome.offered_profiles.push_back(s->profile().id);

@@ -217,7 +217,8 @@ int run_codec(int argc, char** argv) {
     sim::Ocean ocean(scene);
     const codec::SceneModelParams model = codec::scene_model_params(scene_wire::to_wire(scene));
     const int n = p->grid;
-    const StreamConfig config = StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m);
+    const StreamConfig config =
+        StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene_wire::wire_depth(scene.depth_m));
     const int frames = std::max(8, static_cast<int>(seconds * p->rate_hz));
     const std::size_t m = std::size_t(n) * n;
 
