@@ -37,7 +37,7 @@ if [[ -z "$only" || "$only" == tsan ]]; then
   # cannot meet (a full TSan run of them on 2026-11-21 reported no race, only missed deadlines).
   OCEAN_BUILD_DIR=build-tsan ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=thread \
     -DOCEAN_BUILD_CLIENT=OFF \
-    -DOCEAN_DIRS="sim;protocol;protocol/codec;protocol/scene_wire;server/net;server;client/net;client/loadtest;tests;tests/server;tests/client_net;tests/loadtest;tests/replica"
+    -DOCEAN_DIRS="sim;protocol;protocol/codec;protocol/scene_wire;server/net;server;client/net;client/loadtest;tests;tests/support;tests/server;tests/client_net;tests/loadtest;tests/replica"
   ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" --timeout 1800 -R 'server|client_net|loadtest|replica' \
     -E 'loadtest_scenario'
 fi
