@@ -16,13 +16,17 @@ void BaselineTracker::record_sent(Tick tick, codec::StateId state, bool reliable
     reset();
     root_ = state;
   }
-  sent_[tick] = state;
+  sent_[tick % kSentTicks] = Sent{tick, state, true};
+  if (!newest_sent_ || tick >= newest_sent_->tick) newest_sent_ = state;
   if (reliable) {
     reliable_ = state;
     if (on_grid(tick)) reliable_aligned_ = state;
   }
-  const Tick keep = 2 * protocol::kMaxBaselineGap;
-  while (!sent_.empty() && sent_.begin()->first + keep < tick) sent_.erase(sent_.begin());
+}
+
+std::optional<codec::StateId> BaselineTracker::sent_at(Tick tick) const {
+  const Sent& slot = sent_[tick % kSentTicks];
+  return slot.valid && slot.tick == tick ? std::optional(slot.state) : std::nullopt;
 }
 
 void BaselineTracker::on_ack(const protocol::AckWindow& window) {
@@ -30,10 +34,9 @@ void BaselineTracker::on_ack(const protocol::AckWindow& window) {
   for (Tick age = 0; age <= protocol::kAckWindowTicks && age <= window.latest_tick; ++age) {
     const Tick tick = window.latest_tick - age;
     if (!window.contains(tick)) continue;
-    const auto found = sent_.find(tick);
     // The key may be acked long after the window of sent frames moved on (a thin link).
-    const std::optional<codec::StateId> state =
-        found != sent_.end() ? std::optional(found->second) : (root_ && root_->tick == tick ? root_ : std::nullopt);
+    std::optional<codec::StateId> state = sent_at(tick);
+    if (!state && root_ && root_->tick == tick) state = root_;
     if (!state) continue;
     if (!newest_found) keep_newer(acked_, *state);
     newest_found = true;
@@ -49,7 +52,7 @@ std::optional<codec::StateId> BaselineTracker::choose(Tick tick, bool over_udp,
   // The client keeps its newest complete frame however old: a key with nothing sent after it (one
   // that took long to arrive on a thin link) is a baseline up to the largest lag a record carries;
   // every other frame only within the ack window.
-  const bool key_is_newest = root_ && !sent_.empty() && sent_.rbegin()->second == *root_;
+  const bool key_is_newest = root_ && newest_sent_ && *newest_sent_ == *root_;
   auto usable = [&](const std::optional<codec::StateId>& state) {
     if (!state || state->tick >= tick) return false;
     const Tick gap = tick - state->tick;
@@ -66,7 +69,8 @@ std::optional<codec::StateId> BaselineTracker::choose(Tick tick, bool over_udp,
 }
 
 void BaselineTracker::reset() {
-  sent_.clear();
+  sent_.fill(Sent{});
+  newest_sent_.reset();
   acked_.reset();
   acked_aligned_.reset();
   reliable_.reset();

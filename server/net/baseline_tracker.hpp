@@ -7,10 +7,11 @@
 
 #include "ack_window.hpp"
 #include "state_hash.hpp"
+#include "wire_limits.hpp"
 
+#include <array>
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <optional>
 
 namespace ocean::server {
@@ -42,9 +43,19 @@ class BaselineTracker {
 
  private:
   bool on_grid(Tick tick) const { return tick % align_ == 0; }
+  std::optional<codec::StateId> sent_at(Tick tick) const;
 
+  // What was sent for each of the last kSentTicks ticks, by tick modulo the ring: flat, so
+  // acks and sends of thousands of sessions per tick touch no allocator.
+  static constexpr std::size_t kSentTicks = 2 * protocol::kMaxBaselineGap;
+  struct Sent {
+    Tick tick = 0;
+    codec::StateId state;
+    bool valid = false;
+  };
   std::uint32_t align_;
-  std::map<Tick, codec::StateId> sent_;  // the last 2 windows of ticks
+  std::array<Sent, kSentTicks> sent_{};
+  std::optional<codec::StateId> newest_sent_;
   std::optional<codec::StateId> acked_, acked_aligned_;
   std::optional<codec::StateId> reliable_, reliable_aligned_;
   std::optional<codec::StateId> root_;  // the last key
