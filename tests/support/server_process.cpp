@@ -76,7 +76,7 @@ ServerProcess::ServerProcess(ServerOptions options)
   spawn();
   if (options.wait_listening && !wait_listening(options.listen_timeout_s)) {
     const std::string output = log();
-    kill();
+    release();  // a constructor that throws gets no destructor call
     throw std::runtime_error("ocean-server did not report its ports; output:\n" + output);
   }
 }
@@ -104,7 +104,9 @@ void ServerProcess::spawn() {
   if (pid_ < 0) throw std::runtime_error("fork failed for " + args_[0]);
 }
 
-ServerProcess::~ServerProcess() {
+ServerProcess::~ServerProcess() { release(); }
+
+void ServerProcess::release() {
   kill();
   if (owns_log_) {
     std::error_code ignored;

@@ -76,6 +76,7 @@ class ServerProcess {
 
  private:
   void spawn();
+  void release();  // kills the server and removes a temporary log
   bool reap(bool block);  // true when it has exited (status_ set)
   bool lost_udp_port() const;
 
