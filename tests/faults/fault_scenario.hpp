@@ -20,6 +20,16 @@
 
 namespace ocean::faults {
 
+using test_support::ServerProcess;
+
+// Every fault server: loopback TCP/UDP and metrics on ports the kernel picks, then the test's flags.
+inline test_support::ServerOptions fault_server(const std::vector<std::string>& server_args) {
+  test_support::ServerOptions options;
+  options.args = {"--listen", "127.0.0.1:0", "--metrics-listen", "127.0.0.1:0"};
+  options.args.insert(options.args.end(), server_args.begin(), server_args.end());
+  return options;
+}
+
 inline constexpr int kUdpClients = 10;
 inline constexpr int kTcpClients = 3;
 inline constexpr std::uint8_t kMobile = 1;
@@ -41,8 +51,8 @@ struct FaultMeasure {
 class FaultScenario {
  public:
   explicit FaultScenario(const std::vector<std::string>& server_args)
-      : server_(server_args),
-        control_server_(server_args),
+      : server_(fault_server(server_args)),
+        control_server_(fault_server(server_args)),
         population_(server_.tcp_port(), kUdpClients, kTcpClients, kMobile),
         control_(control_server_.tcp_port(), kControlClients - 1, 1, kMobile) {}
 

@@ -3,16 +3,24 @@
 // end. The config fixes the epoch, seed, scene and profiles, so the two are replicas.
 #pragma once
 
+#include <catch2/catch.hpp>
+
 #include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
 #include <thread>
+#include <unistd.h>
+#include <vector>
 
 #include "server_process.hpp"
 
 namespace ocean::replica_test {
+
+using test_support::ServerProcess;
 
 // 2026-01-01T00:00:00Z, written in the file as a TOML date-time.
 inline constexpr std::int64_t kEpochUnixMs = 1767225600000;
@@ -67,14 +75,18 @@ class ReplicaPair {
         REQUIRE(servers_[0]->wait_listening(30.0));
         std::this_thread::sleep_for(std::chrono::duration<double>(stagger_s));
       }
-      servers_[i] = std::make_unique<ServerProcess>(std::vector<std::string>{"--config", dir_.file("ocean.toml")},
-                                                    dir_.file("server-" + std::to_string(i) + ".log"));
+      // Both start before either is waited for, so they come up side by side.
+      test_support::ServerOptions options;
+      options.args = {"--config", dir_.file("ocean.toml")};
+      options.log_path = dir_.file("server-" + std::to_string(i) + ".log");
+      options.wait_listening = false;
+      servers_[i] = std::make_unique<ServerProcess>(std::move(options));
     }
     for (int i = 0; i < 2; ++i) {
-      const std::optional<std::uint16_t> port = servers_[i]->wait_listening(30.0);
+      const bool listening = servers_[i]->wait_listening(30.0);
       INFO("replica " << i << " log:\n" << servers_[i]->log());
-      REQUIRE(port);
-      ports_[i] = *port;
+      REQUIRE(listening);
+      ports_[i] = servers_[i]->tcp_port();
     }
   }
 
