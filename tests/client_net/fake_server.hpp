@@ -54,16 +54,7 @@ class FakeServer {
   protocol::Welcome welcome() const {
     protocol::Welcome w;
     w.session_id = kSessionId;
-    w.stream.profile_id = profile_.id;
-    w.stream.grid = profile_.grid;
-    w.stream.patch_x_m = w.stream.patch_z_m = 64.0;
-    w.stream.gravity_mps2 = 9.81;
-    w.stream.rate_hz = profile_.rate_hz;
-    w.stream.height_step_m = profile_.height_step_m;
-    w.stream.slope_step = profile_.slope_step;
-    w.stream.disp_step_m = profile_.disp_step_m;
-    w.stream.normals = profile_.normals;
-    w.stream.choppy = profile_.choppy;
+    w.stream = codec::wire_stream(codec::StreamConfig::from_profile(profile_, 64.0, 64.0, 9.81, 0.0));  // choppy as the profile says
     w.scene.size_x = w.scene.size_z = std::max<std::uint16_t>(64, profile_.grid);
     w.scene.patch_x_m = w.scene.patch_z_m = 64.0;
     w.scene.wind_speed_mps = 10.0;

@@ -77,26 +77,23 @@ TEST_CASE("failover: a dropped replica sends the client to the next one, round r
   CHECK(connection->server() == config.servers[0]);
   CHECK(connection->counters().failovers == 0);
 
-  // Replica A dies: the next attempt goes to B, whose stream starts with one keyframe.
-  replicas[0]->close();
-  replicas[0].reset();
-  const std::size_t before_b = shown.size();
-  REQUIRE(run_until(io, [&] { return shown.size() >= before_b + 10; }));
-  CHECK(connection->server() == config.servers[1]);
-  CHECK(connection->counters().failovers == 1);
-  CHECK(connection->counters().connects == 2);
-  CHECK(replicas[1]->hellos() == 1);
-
+  // Replica `dead` dies: the client moves to `next` (its nth connection), whose stream starts with
+  // one keyframe. Returns where the new session's frames start in `shown`.
+  auto fail_over = [&](std::size_t dead, std::size_t next, std::uint64_t nth) {
+    replicas[dead]->close();
+    replicas[dead].reset();
+    const std::size_t before = shown.size();
+    REQUIRE(run_until(io, [&] { return shown.size() >= before + 10; }));
+    CHECK(connection->server() == config.servers[next]);
+    CHECK(connection->counters().failovers == nth - 1);
+    CHECK(connection->counters().connects == nth);
+    CHECK(replicas[next]->hellos() == 1);
+    return before;
+  };
+  const std::size_t before_b = fail_over(0, 1, 2);
   // A comes back on its port and B dies: the list wraps around to A.
   replicas[0] = std::make_unique<ReplicaHost>(io, port_a, kReplicaA2);
-  replicas[1]->close();
-  replicas[1].reset();
-  const std::size_t before_a = shown.size();
-  REQUIRE(run_until(io, [&] { return shown.size() >= before_a + 10; }));
-  CHECK(connection->server() == config.servers[0]);
-  CHECK(connection->counters().failovers == 2);
-  CHECK(connection->counters().connects == 3);
-  CHECK(replicas[0]->hellos() == 1);
+  const std::size_t before_a = fail_over(1, 0, 3);
 
   // Every frame matched its own replica's encoder; each session began with its one keyframe and
   // its ticks came from that replica's timeline.
