@@ -71,7 +71,11 @@ class StreamLink : public Link {
 class DatagramSocket {
  public:
   virtual ~DatagramSocket() = default;
+  // Now (answers to one datagram: UdpReady).
   virtual bool send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to) = 0;
+  // Shared bytes, possibly queued until flush() so a burst goes out in batches (frames).
+  virtual void send_shared(const SharedBytes& bytes, const asio::ip::udp::endpoint& to) { send_datagram(*bytes, to); }
+  virtual void flush() {}
 };
 
 class UdpLink final : public Link {
@@ -80,7 +84,7 @@ class UdpLink final : public Link {
   std::string_view transport() const override { return "udp"; }
   const std::string& peer() const override { return peer_; }
   bool open() const override { return true; }
-  void send(SharedBytes datagram) override { socket_->send_datagram(*datagram, to_); }
+  void send(SharedBytes datagram) override { socket_->send_shared(datagram, to_); }
   void send(std::span<const std::uint8_t> datagram) { socket_->send_datagram(datagram, to_); }
   const asio::ip::udp::endpoint& endpoint() const { return to_; }
 

@@ -196,6 +196,17 @@ bool Server::send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::
   return !error;
 }
 
+void Server::send_shared(const SharedBytes& bytes, const asio::ip::udp::endpoint& to) {
+  if (udp_socket_.is_open()) batch_.add(bytes, to, udp_socket_.native_handle());
+}
+
+void Server::flush() {
+  if (!udp_socket_.is_open()) return;
+  const std::uint64_t dropped = batch_.dropped();
+  batch_.flush(udp_socket_.native_handle());
+  if (batch_.dropped() > dropped) metrics_.udp_send_drops.inc(static_cast<double>(batch_.dropped() - dropped));
+}
+
 void Server::on_tick(const TickDecision& decision) {
   const auto start = std::chrono::steady_clock::now();
   {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "bounded_queue.hpp"
+#include "datagram_batch.hpp"
 #include "frame_producer.hpp"
 #include "link.hpp"
 #include "metrics.hpp"
@@ -62,6 +63,8 @@ class Server : public DatagramSocket {
   const SceneSchedule& schedule() const { return schedule_; }
   // Sends one datagram without blocking; false when the socket refused it (the frame is lost).
   bool send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to) override;
+  void send_shared(const SharedBytes& bytes, const asio::ip::udp::endpoint& to) override;
+  void flush() override;  // sends the queued datagrams (sendmmsg)
 
   // Runs the network side on the calling thread until SIGINT, SIGTERM or stop().
   void run();
@@ -108,6 +111,7 @@ class Server : public DatagramSocket {
   std::vector<std::pair<sim::SceneParams, std::int64_t>> scene_requests_;  // guarded by scene_request_mutex_
 
   std::array<std::uint8_t, 1500> datagram_{};
+  DatagramBatch batch_;
   asio::ip::udp::endpoint datagram_sender_;
 
   SceneSchedule schedule_;

@@ -30,6 +30,8 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       root_merges(registry.counter("ocean_key_root_merges_total",
                                    "Key roots whose sessions were keyed again to keep at most max_roots per profile.")),
       sessions_started(registry.counter("ocean_sessions_started_total", "Client sessions welcomed.")),
+      udp_send_drops(registry.counter("ocean_udp_send_drops_total",
+                                      "Datagrams the kernel refused to send (full socket buffer, unreachable peer).")),
       registry_(registry) {}
 
 Counter& ServerMetrics::frames_computed(std::string_view profile) {

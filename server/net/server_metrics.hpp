@@ -32,6 +32,7 @@ class ServerMetrics {
   Counter& bundled_copies;   // earlier frames re-sent inside FrameBundles
   Counter& root_merges;      // key roots merged into a newer key (SessionCoreOptions::max_roots)
   Counter& sessions_started; // Welcomes sent
+  Counter& udp_send_drops;   // datagrams the kernel refused (full socket buffer, unreachable peer)
 
   Counter& frames_computed(std::string_view profile);
   Gauge& clients(std::string_view profile, std::string_view transport);

@@ -25,8 +25,12 @@ SessionHub::SessionHub(Server& server, SessionCoreOptions options)
   server_.set_connection_handler([this](asio::ip::tcp::socket socket) { on_connection(std::move(socket)); });
   server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
     core_.on_datagram(bytes, sender, now_instant());
+    server_.flush();
   });
-  server_.set_frame_sink([this](const std::shared_ptr<const TickFrames>& frames) { core_.on_frames(frames, now_instant()); });
+  server_.set_frame_sink([this](const std::shared_ptr<const TickFrames>& frames) {
+    core_.on_frames(frames, now_instant());
+    server_.flush();
+  });
   server_.set_stop_handler([this] { core_.stop(); });
 }
 
