@@ -49,11 +49,19 @@ void SessionCore::on_frames(const std::shared_ptr<const TickFrames>& frames, con
   std::vector<std::pair<const void*, codec::StateId>> bases;
   for (auto& stream : streams_)
     if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_)) limit_roots(*stream, tick_);
-  for (auto& [id, session] : sessions_) {
+  // From a different session each tick: when a budget (keys, encodes) runs out, it is not always
+  // the same sessions that wait. A copy, so a session closing meanwhile cannot upset the walk.
+  rotate_from_ += 0x9E3779B97F4A7C15ull;
+  std::vector<std::shared_ptr<Session>> order;
+  order.reserve(sessions_.size());
+  const auto middle = sessions_.lower_bound(rotate_from_);
+  for (auto it = middle; it != sessions_.end(); ++it) order.push_back(it->second);
+  for (auto it = sessions_.begin(); it != middle; ++it) order.push_back(it->second);
+  for (const auto& session : order) {
     try {
       serve(*session, tick_, now.monotonic_s, bases);
     } catch (const std::exception& e) {  // an encoder precondition: a server bug, not the client's
-      spdlog::error("session={} tick={}: {}", id, tick_, e.what());
+      spdlog::error("session={} tick={}: {}", session->id, tick_, e.what());
       refuse(*session, protocol::Reason::internal_error, "internal_error: the server failed to encode a frame");
     }
   }
@@ -92,8 +100,20 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
     // A key on the stream link, on a key tick (everyone keyed in one tick shares the key and every
     // delta after it): when required, else (acks missing) at most once per key interval.
     if ((!session.need_key && !key_due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
+    // Keys are paced server-wide: a burst of them (mass join, many acks late at once) waits for
+    // the next key ticks instead of swamping the thread and the links in one.
+    if (!key_budget_.try_take(1, now_s)) {
+      host_.metrics.frames_skipped_load.inc();
+      return;
+    }
     bases.emplace_back(&stream, codec::StateId{tick, 0});
     return send_key(session, stream, tick, now_s);
+  }
+  // Late acks scatter baselines; past the per-tick encode budget, a session whose baseline has no
+  // encode yet skips this frame (its next ack or a key brings it back) rather than delay everyone.
+  if (!stream.has_encoded(tick, *base) && stream.encodes_this_tick() >= options_.max_encodes_per_tick) {
+    host_.metrics.frames_skipped_load.inc();
+    return;
   }
   const SharedFrame& frame = stream.delta(tick, *base);
   bases.emplace_back(&stream, *base);

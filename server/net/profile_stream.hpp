@@ -54,6 +54,7 @@ class ProfileStream {
   const SharedFrame& key(Tick tick);
   const SharedFrame& delta(Tick tick, codec::StateId baseline);
   bool has_state(codec::StateId id) const { return encoder_->has_state(id); }
+  bool has_encoded(Tick tick, codec::StateId baseline) const { return encoded_.count({tick, baseline}) != 0; }
   const codec::ModalState* state(codec::StateId id) const { return encoder_->state(id); }  // tests compare clients with it
 
   // Encodes run for the current tick (each a distinct (tick, baseline)), and their total time.

@@ -32,6 +32,13 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       sessions_started(registry.counter("ocean_sessions_started_total", "Client sessions welcomed.")),
       udp_send_drops(registry.counter("ocean_udp_send_drops_total",
                                       "Datagrams the kernel refused to send (full socket buffer, unreachable peer).")),
+      frames_skipped_load(registry.counter("ocean_frames_skipped_load_total",
+                                           "Frames or keys sessions waited for because a load budget (keys/s, encodes/tick) ran out.")),
+      serve_seconds(registry.summary("ocean_serve_seconds", "Network-thread time to serve one tick (encodes and sends).")),
+      loop_lag_seconds(registry.summary("ocean_loop_lag_seconds", "How long after its scheduled time each tick was served.")),
+      network_busy_ratio(registry.gauge("ocean_network_busy_ratio", "Share of the last second the network thread was busy.")),
+      admission_capacity(registry.gauge("ocean_admission_capacity",
+                                        "Sessions admitted while the network thread is over its busy target (0 = open).")),
       registry_(registry) {}
 
 Counter& ServerMetrics::frames_computed(std::string_view profile) {

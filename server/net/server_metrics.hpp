@@ -33,6 +33,11 @@ class ServerMetrics {
   Counter& root_merges;      // key roots merged into a newer key (SessionCoreOptions::max_roots)
   Counter& sessions_started; // Welcomes sent
   Counter& udp_send_drops;   // datagrams the kernel refused (full socket buffer, unreachable peer)
+  Counter& frames_skipped_load;  // frames or keys a session waited for because a load budget ran out
+  Summary& serve_seconds;    // network-thread time to serve one tick (encodes, sends)
+  Summary& loop_lag_seconds; // how long after its scheduled time a tick was served
+  Gauge& network_busy_ratio; // share of the last second the network thread was busy
+  Gauge& admission_capacity; // sessions admitted while over the busy target (0 = the door is open)
 
   Counter& frames_computed(std::string_view profile);
   Gauge& clients(std::string_view profile, std::string_view transport);

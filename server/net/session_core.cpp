@@ -23,7 +23,8 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
     : host_(std::move(host)),
       options_(options),
       scenes_(host_.schedule, static_cast<Tick>(std::lround(options.scene_lead_s * host_.config.tick_rate_hz))),
-      tick_(start_tick) {
+      tick_(start_tick),
+      key_budget_(options.keys_per_s, std::max(1.0, 0.5 * options.keys_per_s), 0.0) {
   for (const std::string& name : host_.config.profiles) {
     const Profile* profile = find_profile(std::string_view(name));
     if (!profile) continue;
@@ -223,6 +224,10 @@ void SessionCore::on_hello(const std::shared_ptr<Session>& session, const wire::
                   "profile_unavailable in Hello.profile_id: " + std::to_string(hello.profile_id) +
                       " is not offered; offered: " + offered);
   }
+  if (sessions_.size() >= session_limit_)
+    return refuse(*session, protocol::Reason::server_full,
+                  "server_full: at its measured capacity of " + std::to_string(session_limit_) +
+                      " sessions; retry in 10 s or use another replica");
   std::erase(handshaking_, session);
   session->id = new_session_id();
   session->stream = stream;

@@ -20,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -44,6 +45,10 @@ struct SessionCoreOptions {
   // A scene change reaches every client this long before it takes effect (a SceneUpdate on TCP
   // must arrive before the first frame of the new scene, even on a slow link).
   double scene_lead_s = 1.0;
+  // Load budgets (README-server.md "Overload"): keys per second over all sessions, and distinct
+  // delta encodes per profile and tick.
+  double keys_per_s = 300.0;
+  std::size_t max_encodes_per_tick = 32;
 };
 
 // What the core needs from the server around it; none of it a socket or a clock.
@@ -87,6 +92,9 @@ class SessionCore {
   void stop();
   // Closes every link now, without a goodbye (the process is going away); no frames after this.
   void abort(const std::string& reason);
+  // The sessions the host can serve (its measured capacity, AdmissionBudget): a Hello beyond it
+  // is refused as server_full with a retry hint; admitted sessions keep their service.
+  void set_session_limit(std::size_t limit) { session_limit_ = limit; }
 
   void set_frame_observer(FrameObserver observer) { observer_ = std::move(observer); }
   void set_tick_observer(TickObserver observer) { tick_observer_ = std::move(observer); }
@@ -150,6 +158,9 @@ class SessionCore {
   std::uint64_t unproven_bytes_in_ = 0;
   std::uint64_t unproven_bytes_out_ = 0;
   std::size_t peak_closed_queued_bytes_ = 0;
+  std::size_t session_limit_ = std::numeric_limits<std::size_t>::max();
+  std::uint64_t rotate_from_ = 0;  // where this tick's walk over the sessions starts
+  TokenBucket key_budget_;
 };
 
 }  // namespace ocean::server

@@ -3,6 +3,8 @@
 #include "tcp_link.hpp"
 #include "tick_clock.hpp"
 
+#include <spdlog/spdlog.h>
+
 namespace ocean::server {
 
 namespace {
@@ -18,19 +20,21 @@ SessionCoreHost host_of(Server& server) {
                          [&server](const sim::SceneParams& scene, std::int64_t from) { server.request_scene(scene, from); }};
 }
 
+// A warning about overload at most this often.
+constexpr double kWarnEvery_s = 10.0;
+
 }  // namespace
 
 SessionHub::SessionHub(Server& server, SessionCoreOptions options)
     : server_(server), core_(host_of(server), options, tick_now(server.config())) {
   server_.set_connection_handler([this](asio::ip::tcp::socket socket) { on_connection(std::move(socket)); });
   server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
-    core_.on_datagram(bytes, sender, now_instant());
+    const Instant now = now_instant();
+    core_.on_datagram(bytes, sender, now);
     server_.flush();
+    account(now_instant().monotonic_s - now.monotonic_s, now.monotonic_s);
   });
-  server_.set_frame_sink([this](const std::shared_ptr<const TickFrames>& frames) {
-    core_.on_frames(frames, now_instant());
-    server_.flush();
-  });
+  server_.set_frame_sink([this](const std::shared_ptr<const TickFrames>& frames) { on_frames(frames); });
   server_.set_stop_handler([this] { core_.stop(); });
 }
 
@@ -40,6 +44,46 @@ void SessionHub::on_connection(asio::ip::tcp::socket socket) {
     socket.set_option(asio::socket_base::send_buffer_size(bytes), ignored);
   }
   core_.open(std::make_shared<TcpLink>(std::move(socket), core_.options().send_queue_bytes), now_instant());
+}
+
+void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
+  const Instant now = now_instant();
+  const ServerConfig& config = server_.config();
+  const double scheduled_s = static_cast<double>(config.epoch_unix_ms) / 1000.0 +
+                             static_cast<double>(frames->tick) / static_cast<double>(config.tick_rate_hz);
+  server_.metrics().loop_lag_seconds.observe(std::max(0.0, static_cast<double>(now.unix_ms) / 1000.0 - scheduled_s));
+  core_.on_frames(frames, now);
+  server_.flush();
+  const double served_s = now_instant().monotonic_s - now.monotonic_s;
+  server_.metrics().serve_seconds.observe(served_s);
+  window_session_ticks_ += static_cast<double>(core_.session_count());
+  ++window_ticks_;
+  account(served_s, now.monotonic_s);
+}
+
+void SessionHub::account(double busy_s, double now_s) {
+  window_busy_s_ += busy_s;
+  if (window_start_s_ == 0.0) window_start_s_ = now_s;
+  const double wall_s = now_s - window_start_s_;
+  if (wall_s < 1.0 || window_ticks_ == 0) return;
+  const double sessions = window_session_ticks_ / window_ticks_;
+  budget_.observe(window_busy_s_, wall_s, sessions);
+  core_.set_session_limit(budget_.capacity());
+  ServerMetrics& metrics = server_.metrics();
+  metrics.network_busy_ratio.set(budget_.busy_share());
+  metrics.admission_capacity.set(budget_.capacity() == AdmissionBudget::kUnlimited
+                                     ? 0.0
+                                     : static_cast<double>(budget_.capacity()));
+  if (budget_.over_target() && now_s - last_warning_s_ >= kWarnEvery_s) {
+    last_warning_s_ = now_s;
+    spdlog::warn("overload: the network thread was {:.0f}% busy serving {:.0f} sessions; admitting at most {} "
+                 "(new clients beyond it are refused as server_full)",
+                 100.0 * budget_.busy_share(), sessions, budget_.capacity());
+  }
+  window_start_s_ = now_s;
+  window_busy_s_ = 0.0;
+  window_session_ticks_ = 0.0;
+  window_ticks_ = 0;
 }
 
 }  // namespace ocean::server

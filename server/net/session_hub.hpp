@@ -1,9 +1,11 @@
 // SessionHub: plugs a SessionCore into a Server - accepted TCP connections become TcpLinks, the
 // UDP socket's datagrams and the simulation's frames reach the core with the instant they arrived,
-// and an admin change reaches the simulation. The core holds every rule; this holds the wiring.
+// and an admin change reaches the simulation. It also times the network thread's work, which sets
+// the core's admission limit (AdmissionBudget) and the load metrics. The core holds every rule.
 // Network thread only.
 #pragma once
 
+#include "admission_budget.hpp"
 #include "server.hpp"
 #include "session_core.hpp"
 
@@ -19,9 +21,18 @@ class SessionHub {
 
  private:
   void on_connection(asio::ip::tcp::socket socket);
+  void on_frames(const std::shared_ptr<const TickFrames>& frames);
+  // Adds `busy_s` of network-thread work; once a second, updates the admission limit.
+  void account(double busy_s, double now_s);
 
   Server& server_;
   SessionCore core_;
+  AdmissionBudget budget_;
+  double window_start_s_ = 0.0;
+  double window_busy_s_ = 0.0;
+  double window_session_ticks_ = 0.0;  // sessions summed over the window's ticks
+  int window_ticks_ = 0;
+  double last_warning_s_ = -1e9;
 };
 
 }  // namespace ocean::server
