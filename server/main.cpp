@@ -1,5 +1,8 @@
 // ocean-server: loads the configuration, then runs the Server until SIGINT or SIGTERM.
-// The one place exceptions are caught: a failure to start is reported and exits non-zero.
+// The one place exceptions are caught. Exit status (README-server.md): 0 stopped by a signal,
+// 2 a bad option or configuration (also those found only when the server is built: an epoch too
+// far from now, no streamable profile), 1 a failure at run time (an address in use...). Every
+// error goes to stderr as "ocean-server: message".
 #include "config_loader.hpp"
 #include "config_options.hpp"
 #include "server.hpp"
@@ -10,6 +13,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,6 +23,9 @@ int main(int argc, char** argv) {
   ConfigLoadResult loaded = ocean::server::load_config(args);
   if (loaded.outcome == ConfigLoadResult::Outcome::show_help) {
     std::fputs(loaded.message.c_str(), stdout);
+    std::fputs("\nExit status: 0 stopped by SIGINT/SIGTERM, 1 a failure at run time (address in use...),\n"
+               "2 a bad option or configuration. Errors go to stderr as \"ocean-server: message\".\n",
+               stdout);
     return 0;
   }
   if (loaded.outcome == ConfigLoadResult::Outcome::error) {
@@ -32,8 +39,12 @@ int main(int argc, char** argv) {
     ocean::server::SessionHub sessions(server);
     server.run();
     return 0;
+  } catch (const std::invalid_argument& e) {  // sim::ParamError too: the configuration's fault
+    std::fprintf(stderr, "ocean-server: %s\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     spdlog::critical("ocean-server: {}", e.what());
+    std::fprintf(stderr, "ocean-server: %s\n", e.what());
     return 1;
   }
 }

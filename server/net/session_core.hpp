@@ -48,7 +48,7 @@ struct SessionCoreOptions {
   // Load budgets (README-server.md "Overload"): keys per second over all sessions, and distinct
   // delta encodes per profile and tick.
   double keys_per_s = 300.0;
-  std::size_t max_encodes_per_tick = 32;
+  std::size_t max_encodes_per_tick = 64;
 };
 
 // What the core needs from the server around it; none of it a socket or a clock.

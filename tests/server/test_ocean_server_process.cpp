@@ -40,6 +40,22 @@ TEST_CASE("ocean-server refuses a bad value with status 2 and a message naming i
   CHECK(child.log().find("[0, 100]") != std::string::npos);
 }
 
+TEST_CASE("ocean-server exits 2 for configurations found bad only when the server is built", "[process]") {
+  // The systemd unit does not restart on 2: these must not exit 1 and be restarted forever.
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--epoch", "0"}, "ocean-server: --epoch 0: the current time is"},
+      {{"--profiles", "desktop-choppy"}, "ocean-server: --profiles: no offered profile can be streamed"},
+  };
+  for (const auto& [args, message] : cases) {
+    std::vector<std::string> all = kSmallServer;
+    all.insert(all.end(), args.begin(), args.end());
+    ServerProcess child(run(all));
+    INFO(child.log());
+    CHECK(child.wait_exit(10) == 2);
+    CHECK(child.log().find("\n" + message) != std::string::npos);
+  }
+}
+
 TEST_CASE("ocean-server exits 0 on SIGTERM and on SIGINT", "[process]") {
   for (const int number : {SIGTERM, SIGINT}) {
     ServerProcess child(run(kSmallServer));
