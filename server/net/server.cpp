@@ -99,10 +99,14 @@ Server::Server(ServerConfig config)
     metrics_.frames_computed(profile->name);
     for (const char* transport : {"tcp", "udp"}) metrics_.clients(profile->name, transport);
   }
+  set_log_suppressed_hook([this](std::string_view reason) { metrics_.log_suppressed(reason).inc(); });
   do_await_stop();
 }
 
-Server::~Server() { tick_loop_.stop(); }
+Server::~Server() {
+  set_log_suppressed_hook({});
+  tick_loop_.stop();
+}
 
 void Server::run() {
   spdlog::info("listening tcp={} udp={} metrics={}", config_.listen.host + ":" + std::to_string(tcp_port_),
@@ -232,6 +236,7 @@ void Server::drain_frames() {
     ready_.store(true);
     if (frame_sink_) frame_sink_(*frames);
   }
+  flush_log_summary();
 }
 
 HttpReply Server::handle_http(const HttpRequest& request) {

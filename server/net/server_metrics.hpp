@@ -32,6 +32,10 @@ class ServerMetrics {
   Counter& bundled_copies;   // earlier frames re-sent inside FrameBundles
   Counter& root_merges;      // key roots merged into a newer key (SessionCoreOptions::max_roots)
   Counter& sessions_started; // Welcomes sent
+  Counter& udp_unproven_bytes_in;   // UDP bytes from addresses not (yet) proven (anti-amplification)
+  Counter& udp_unproven_bytes_out;  // UDP bytes answered to them
+  Counter& udp_rebinds;             // proven UDP addresses moved to a new port (NAT rebinding)
+  Counter& udp_rebinds_refused;     // UdpHellos that would move a live proven address (replays)
 
   Counter& frames_computed(std::string_view profile);
   Gauge& clients(std::string_view profile, std::string_view transport);
@@ -39,6 +43,7 @@ class ServerMetrics {
   Counter& bytes_sent(std::string_view transport);
   Counter& rejects(std::string_view reason);
   Counter& sessions_ended(std::string_view reason);  // welcomed sessions closed, by the link's reason
+  Counter& log_suppressed(std::string_view reason);  // log lines left out by the rate limit (server_log.hpp)
 
  private:
   MetricsRegistry& registry_;
