@@ -87,12 +87,35 @@ void SessionCore::open(std::shared_ptr<StreamLink> link, const Instant& now) {
   if (stopping_) return refuse(*session, protocol::Reason::server_full, "server_full: the server is shutting down");
   // Viewer slots are checked at the Hello: a connection that has said nothing holds only a
   // handshake, which has its own budget and deadline.
-  if (const std::string limit = admission_.admit(session->link->address()); !limit.empty())
+  std::string limit = admission_.admit(session->link->address());
+  if (limit == "handshakes_full" || limit == "address_handshakes_full") {
+    evict_oldest_handshake(*session, limit);
+    limit = admission_.admit(session->link->address());
+  }
+  if (!limit.empty())
     return refuse(*session, protocol::Reason::server_full,
                   "server_full: too many connections waiting for their Hello (" + limit +
                       "; --max-handshakes, --max-handshakes-per-ip, --max-connections-per-ip)",
                   limit);
   session->admitted = true;
+}
+
+// A full handshake budget closes its oldest waiting connection (of the same address when that
+// address's share is full), not the newcomer: a real client says Hello at once and is through
+// before a reconnect loop comes round again, so sockets that stay silent only push each other out.
+void SessionCore::evict_oldest_handshake(const Session& newcomer, const std::string& limit) {
+  const asio::ip::address address = newcomer.link->address();
+  std::shared_ptr<Session> oldest;
+  for (const auto& waiting : handshaking_)
+    if (waiting.get() != &newcomer && waiting->admitted && !waiting->welcomed &&
+        (limit == "handshakes_full" || waiting->link->address() == address)) {
+      oldest = waiting;
+      break;
+    }
+  if (!oldest) return;
+  host_.metrics.rejects("handshake_evicted").inc();
+  log_reject(oldest->link->transport(), oldest->peer(), "handshake_evicted");
+  oldest->link->close("handshake_evicted");  // at once: the budget is needed now
 }
 
 void SessionCore::on_closed(const std::shared_ptr<Session>& session, const std::string& reason) {

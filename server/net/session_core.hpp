@@ -109,6 +109,7 @@ class SessionCore {
  private:
   void on_message(const std::shared_ptr<Session>& session, std::span<const std::uint8_t> bytes, const Instant& now);
   void on_closed(const std::shared_ptr<Session>& session, const std::string& reason);
+  void evict_oldest_handshake(const Session& newcomer, const std::string& limit);
   void on_hello(const std::shared_ptr<Session>& session, const wire::Hello& hello, const Instant& now);
   void on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& change, const Instant& now);
   bool token_refused(Session& session, const std::string& token, const Instant& now);
