@@ -24,6 +24,10 @@ struct ClientSessionConfig {
   double udp_hello_interval_s = 0.25;   // UdpHello retry
   double udp_proof_timeout_s = 2.0;     // no UdpReady by then: SetTransport{tcp}
   double udp_silence_timeout_s = 2.0;   // no datagram for this long on UDP: SetTransport{tcp}
+  // No datagram for this long on UDP: UdpHello again (every udp_hello_interval_s) until one comes
+  // or the silence timeout. A NAT that moved our port is repaired this way: the server moves the
+  // stream once the old address has been quiet a while (PROTOCOL.md 5, step 4).
+  double udp_reprove_after_s = 0.75;
   double ping_interval_s = 1.0;         // RTT probe, also the keepalive when no frames arrive
   double keyframe_retry_s = 1.0;        // at most one KeyframeRequest this often (servers rate-limit too)
   double startup_keyframe_after_s = 1.0;  // no frame this long after the Welcome: KeyframeRequest{startup}

@@ -92,8 +92,11 @@ void ClientSession::update(double now) {
       fall_back_to_tcp(now);
     else if (now >= next_udp_hello_)
       send_udp_hello(now);
-  } else if (path_ == Path::udp && now - last_udp_rx_ >= config_.udp_silence_timeout_s) {
-    fall_back_to_tcp(now);
+  } else if (path_ == Path::udp) {
+    if (now - last_udp_rx_ >= config_.udp_silence_timeout_s)
+      fall_back_to_tcp(now);
+    else if (now - last_udp_rx_ >= config_.udp_reprove_after_s && now >= next_udp_hello_)
+      send_udp_hello(now);
   }
 
   if (now >= next_ack_) {
@@ -121,7 +124,8 @@ double ClientSession::next_due() const {
   if (path_ == Path::udp_proving)
     due = std::min({due, next_udp_hello_, udp_proof_started_ + config_.udp_proof_timeout_s});
   else if (path_ == Path::udp)
-    due = std::min(due, last_udp_rx_ + config_.udp_silence_timeout_s);
+    due = std::min({due, last_udp_rx_ + config_.udp_silence_timeout_s,
+                    std::max(last_udp_rx_ + config_.udp_reprove_after_s, next_udp_hello_)});
   const double keyframe_at = decoder_->newest_complete()
                                  ? last_progress_ + config_.stuck_ticks * welcome_->tick_period_s
                                  : welcome_at_ + config_.startup_keyframe_after_s;

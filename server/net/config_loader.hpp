@@ -4,11 +4,17 @@
 
 #include "server_config.hpp"
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace ocean::server {
+
+// A config file, and its schedule, larger than this is refused: a real one is a few KB, and
+// toml++ and the checks take seconds per MB.
+inline constexpr std::size_t kMaxConfigBytes = 1u << 20;
+inline constexpr std::size_t kMaxScheduleEntries = 10000;
 
 struct ConfigLoadResult {
   enum class Outcome { run, show_help, error };

@@ -26,6 +26,19 @@ std::string parse_integer(std::string_view text, Int& out) {
   return {};
 }
 
+// Any unsigned 64-bit value, decimal or 0x hex: TOML integers stop at 2^63 - 1, so larger seeds
+// come as strings.
+std::string parse_seed(std::string_view text, std::uint64_t& out) {
+  const bool hex = text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
+  const std::string_view digits = hex ? text.substr(2) : text;
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value, hex ? 16 : 10);
+  if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty())
+    return quoted(text) + " is not an unsigned 64-bit integer (0..18446744073709551615, decimal or 0x hex)";
+  out = value;
+  return {};
+}
+
 std::string parse_number(std::string_view text, double& out) {
   double value = 0.0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -168,8 +181,8 @@ const ConfigOption kOptions[] = {
     {"small-wave", "METRES", "suppression length of tiny waves, in [0, 1e6] (0 = from the grid spacing)", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.small_wave_m); },
      [](const ServerConfig& c) { return show_number(c.scene.small_wave_m); }},
-    {"seed", "N", "random seed of the wave phases (unsigned 64-bit)", ValueKind::integer, false,
-     [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.scene.seed); },
+    {"seed", "N", "random seed of the wave phases, unsigned 64-bit: decimal or 0x hex (in TOML a string for seeds >= 2^63)",
+     ValueKind::integer_or_text, false, [](ServerConfig& c, std::string_view v) { return parse_seed(v, c.scene.seed); },
      [](const ServerConfig& c) { return std::to_string(c.scene.seed); }},
     {"tick-rate", "HZ", "simulation ticks per second, an integer in 1..240 and a multiple of every offered profile's rate",
      ValueKind::integer, false,
@@ -200,6 +213,19 @@ const ConfigOption kOptions[] = {
     {"max-clients", "N", "most clients connected at once, in 1..100000", ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_clients); },
      [](const ServerConfig& c) { return std::to_string(c.max_clients); }},
+    {"max-handshakes", "N",
+     "most connections that have not yet sent their Hello, in 1..100000; they never take a --max-clients slot",
+     ValueKind::integer, false, [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_handshakes); },
+     [](const ServerConfig& c) { return std::to_string(c.max_handshakes); }},
+    {"max-handshakes-per-ip", "N", "of those, most from one IP address, in 1..--max-handshakes", ValueKind::integer, false,
+     [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_handshakes_per_ip); },
+     [](const ServerConfig& c) { return std::to_string(c.max_handshakes_per_ip); }},
+    {"max-connections-per-ip", "N", "most connections from one IP address, welcomed or not, in 0..100000; 0 = no limit",
+     ValueKind::integer, false, [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_connections_per_ip); },
+     [](const ServerConfig& c) { return std::to_string(c.max_connections_per_ip); }},
+    {"handshake-timeout", "SECONDS", "close a connection that sends no Hello for this long, in (0, 60]", ValueKind::number,
+     false, [](ServerConfig& c, std::string_view v) { return parse_number(v, c.handshake_timeout_s); },
+     [](const ServerConfig& c) { return show_number(c.handshake_timeout_s); }},
     {"udp-redundancy", "N",
      "copies of up to N earlier unacknowledged frames in each UDP datagram (FrameBundle), so a lost datagram "
      "costs no frame; in 0..7",

@@ -32,7 +32,10 @@ void SessionCore::on_datagram(std::span<const std::uint8_t> bytes, const asio::i
   const std::uint64_t session_id = verified ? core::named_session(*message) : 0;
   const auto found = sessions_.find(session_id);
   const bool proven = found != sessions_.end() && found->second->udp && found->second->udp->endpoint() == sender;
-  if (!proven) unproven_bytes_in_ += bytes.size();
+  if (!proven) {
+    unproven_bytes_in_ += bytes.size();
+    host_.metrics.udp_unproven_bytes_in.inc(static_cast<double>(bytes.size()));
+  }
   if (!verified) return drop_datagram(verified.reason, sender);
   if (found == sessions_.end()) return drop_datagram(protocol::Reason::bad_session, sender);
   Session& session = *found->second;
@@ -41,7 +44,7 @@ void SessionCore::on_datagram(std::span<const std::uint8_t> bytes, const asio::i
   if (!proven) return drop_datagram(protocol::Reason::bad_session, sender);  // address not proven
   if (const protocol::Reason r = protocol::check_udp_sender(*message, session.id, session.cookie); r != protocol::Reason::ok)
     return drop_datagram(r, sender);
-  session.last_heard_s = now.monotonic_s;
+  session.last_heard_s = session.udp_heard_s = now.monotonic_s;
   on_session_message(session, *message, *session.udp, now);
 }
 
@@ -55,13 +58,29 @@ void SessionCore::on_udp_hello(Session& session, const wire::Message& message, s
     return drop_datagram(protocol::Reason::bad_cookie, sender);
   if (const protocol::Reason r = protocol::check_udp_sender(message, session.id, session.cookie); r != protocol::Reason::ok)
     return drop_datagram(r, sender);
-  session.last_heard_s = now.monotonic_s;
+  // A live proven address stays: the cookie travels in every datagram, so whoever sees the
+  // traffic can replay it from another port of the client's IP (the cookie cannot bind the port,
+  // which a NAT may change). A real rebinding leaves the old address silent; a replay does not.
+  const bool moving = !proven && session.udp.has_value();
+  if (moving && now.monotonic_s - session.udp_heard_s < options_.udp_rebind_quiet_s) {
+    host_.metrics.udp_rebinds_refused.inc();
+    log_limited(spdlog::level::info, "udp_rebind_refused", endpoint_text(sender),
+                "udp rebind refused session={} peer={} proven={}: the proven address is still live", session.id,
+                endpoint_text(sender), session.udp->peer());
+    return;
+  }
+  session.last_heard_s = session.udp_heard_s = now.monotonic_s;
   const protocol::Bytes ready = protocol::message_datagram(protocol::encode(protocol::UdpReady{session.id}));
-  if (!proven) unproven_bytes_out_ += ready.size();  // always smaller than the padded UdpHello
+  if (!proven) {  // always smaller than the padded UdpHello
+    unproven_bytes_out_ += ready.size();
+    host_.metrics.udp_unproven_bytes_out.inc(static_cast<double>(ready.size()));
+  }
   if (ready.size() <= datagram_bytes) host_.datagrams.send_datagram(ready, sender);
   if (proven) return;
+  if (moving) host_.metrics.udp_rebinds.inc();
+  log_limited(spdlog::level::info, "udp_proven", endpoint_text(sender), "udp {} session={} peer={}",
+              moving ? "moved" : "proven", session.id, endpoint_text(sender));
   session.udp.emplace(host_.datagrams, sender);
-  spdlog::info("udp proven session={} peer={}", session.id, session.udp->peer());
   update_client_gauges();
 }
 

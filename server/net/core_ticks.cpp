@@ -252,11 +252,13 @@ void SessionCore::limit_roots(ProfileStream& stream, Tick tick) {
 void SessionCore::sweep_timeouts(double now_s) {
   std::vector<std::shared_ptr<Session>> expired;
   for (const auto& session : handshaking_)
-    if (session->link->open() && now_s - session->opened_s > options_.handshake_timeout_s) expired.push_back(session);
+    if (session->link->open() && !session->ending && now_s - session->opened_s > host_.config.handshake_timeout_s)
+      expired.push_back(session);
   for (const auto& session : expired) refuse(*session, protocol::Reason::timeout, "timeout: no Hello within the handshake time");
   expired.clear();
   for (const auto& [id, session] : sessions_)
-    if (session->link->open() && now_s - session->last_heard_s > host_.config.idle_timeout_s) expired.push_back(session);
+    if (session->link->open() && !session->ending && now_s - session->last_heard_s > host_.config.idle_timeout_s)
+      expired.push_back(session);
   for (const auto& session : expired) {
     host_.metrics.rejects("idle_timeout").inc();
     end(*session, wire::ByeReason::idle_timeout, "no message for the idle limit (--idle-timeout)");

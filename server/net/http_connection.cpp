@@ -31,16 +31,27 @@ std::string HttpReply::to_wire(bool include_body) const {
   return out;
 }
 
-HttpConnection::HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done)
+HttpConnection::HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done,
+                               RefusedCallback on_refused)
     : socket_(std::move(socket)),
       deadline_(socket_.get_executor()),
       handler_(std::move(handler)),
-      on_done_(std::move(on_done)) {}
+      on_done_(std::move(on_done)),
+      on_refused_(std::move(on_refused)) {}
+
+void HttpConnection::refused(std::string_view reason) {
+  if (!on_refused_) return;
+  std::error_code ignored;
+  const auto peer = socket_.remote_endpoint(ignored);
+  on_refused_(reason, peer.address().to_string());
+}
 
 void HttpConnection::start() {
   deadline_.expires_after(kRequestDeadline);
   deadline_.async_wait([self = shared_from_this()](std::error_code error) {
-    if (!error) self->finish();  // too slow: give up on it
+    if (error) return;
+    self->refused("http_timeout");  // too slow: give up on it
+    self->finish();
   });
   do_read();
 }
@@ -56,11 +67,15 @@ void HttpConnection::do_read() {
     if (error) return self->finish();
     switch (self->parser_.consume(std::string_view(self->read_buffer_.data(), n))) {
       case HttpRequestParser::Result::need_more: return self->do_read();
-      case HttpRequestParser::Result::bad: return self->do_write({400, "text/plain; charset=utf-8", "bad request\n"}, true);
+      case HttpRequestParser::Result::bad:
+        self->refused("http_bad_request");
+        return self->do_write({400, "text/plain; charset=utf-8", "bad request\n"}, true);
       case HttpRequestParser::Result::good: {
         const HttpRequest& request = self->parser_.request();
-        if (request.method != "GET" && request.method != "HEAD")
+        if (request.method != "GET" && request.method != "HEAD") {
+          self->refused("http_method");
           return self->do_write({405, "text/plain; charset=utf-8", "only GET and HEAD\n"}, true);
+        }
         return self->do_write(self->handler_(request), request.method == "GET");
       }
     }

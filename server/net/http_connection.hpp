@@ -27,8 +27,10 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
  public:
   using Handler = std::function<HttpReply(const HttpRequest&)>;
   using DoneCallback = std::function<void(const std::shared_ptr<HttpConnection>&)>;
+  // A request refused for the client's fault: "http_bad_request", "http_method" or "http_timeout".
+  using RefusedCallback = std::function<void(std::string_view reason, const std::string& peer)>;
 
-  HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done);
+  HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done, RefusedCallback on_refused = {});
 
   void start();
   void stop();  // closes the socket; pending operations complete with an error
@@ -37,11 +39,13 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   void do_read();
   void do_write(const HttpReply& reply, bool include_body);
   void finish();
+  void refused(std::string_view reason);
 
   asio::ip::tcp::socket socket_;
   asio::steady_timer deadline_;
   Handler handler_;
   DoneCallback on_done_;
+  RefusedCallback on_refused_;
   HttpRequestParser parser_;
   std::array<char, 2048> read_buffer_{};
   std::string reply_bytes_;

@@ -1,5 +1,7 @@
 #include "metrics_http_server.hpp"
 
+#include <cerrno>
+#include <chrono>
 #include <system_error>
 
 namespace ocean::server {
@@ -19,13 +21,14 @@ asio::ip::tcp::acceptor open_tcp_acceptor(asio::io_context& context, const Liste
 
 MetricsHttpServer::MetricsHttpServer(asio::io_context& context, const ListenAddress& address,
                                      HttpConnection::Handler handler)
-    : acceptor_(open_tcp_acceptor(context, address, "metrics")), handler_(std::move(handler)) {}
+    : acceptor_(open_tcp_acceptor(context, address, "metrics")), backoff_(context), handler_(std::move(handler)) {}
 
 void MetricsHttpServer::start() { do_accept(); }
 
 void MetricsHttpServer::stop() {
   std::error_code ignored;
   acceptor_.close(ignored);
+  backoff_.cancel();
   for (const auto& connection : connections_) connection->stop();
   connections_.clear();
 }
@@ -33,9 +36,18 @@ void MetricsHttpServer::stop() {
 void MetricsHttpServer::do_accept() {
   acceptor_.async_accept([this](std::error_code error, asio::ip::tcp::socket socket) {
     if (!acceptor_.is_open()) return;  // stopped
+    if (error == asio::error::no_descriptors || error.value() == ENFILE) {
+      // Accepting again at once would spin; the client acceptor keeps descriptors in reserve
+      // for this endpoint, so this is rare and brief.
+      backoff_.expires_after(std::chrono::milliseconds(20));
+      return backoff_.async_wait([this](std::error_code e) {
+        if (!e && acceptor_.is_open()) do_accept();
+      });
+    }
     if (!error) {
       auto connection = std::make_shared<HttpConnection>(
-          std::move(socket), handler_, [this](const std::shared_ptr<HttpConnection>& done) { connections_.erase(done); });
+          std::move(socket), handler_, [this](const std::shared_ptr<HttpConnection>& done) { connections_.erase(done); },
+          on_refused_);
       connections_.insert(connection);
       connection->start();
     }

@@ -7,6 +7,7 @@
 
 #include <asio/io_context.hpp>
 #include <asio/ip/tcp.hpp>
+#include <asio/steady_timer.hpp>
 
 #include <memory>
 #include <set>
@@ -18,6 +19,7 @@ class MetricsHttpServer {
   // Binds at once; throws std::system_error naming the address when it cannot.
   MetricsHttpServer(asio::io_context& context, const ListenAddress& address, HttpConnection::Handler handler);
 
+  void set_refused_callback(HttpConnection::RefusedCallback callback) { on_refused_ = std::move(callback); }
   void start();
   void stop();  // closes the acceptor and every open connection
   asio::ip::tcp::endpoint local_endpoint() const { return acceptor_.local_endpoint(); }
@@ -26,7 +28,9 @@ class MetricsHttpServer {
   void do_accept();
 
   asio::ip::tcp::acceptor acceptor_;
+  asio::steady_timer backoff_;  // after EMFILE
   HttpConnection::Handler handler_;
+  HttpConnection::RefusedCallback on_refused_;
   std::set<std::shared_ptr<HttpConnection>> connections_;
 };
 

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <sys/resource.h>
 
 namespace ocean::server {
 namespace {
@@ -94,15 +95,29 @@ Server::Server(ServerConfig config)
     metrics_http_ = std::make_unique<MetricsHttpServer>(context_, *config_.metrics_listen,
                                                         [this](const HttpRequest& r) { return handle_http(r); });
     metrics_port_ = metrics_http_->local_endpoint().port();
+    metrics_http_->set_refused_callback([this](std::string_view reason, const std::string& peer) {
+      metrics_.rejects(reason).inc();
+      log_limited(spdlog::level::info, reason, peer, "reject transport=http peer={} reason={}", peer, reason);
+    });
   }
   for (const Profile* profile : offered_profiles(config_)) {
     metrics_.frames_computed(profile->name);
     for (const char* transport : {"tcp", "udp"}) metrics_.clients(profile->name, transport);
   }
+  set_log_suppressed_hook([this](std::string_view reason) { metrics_.log_suppressed(reason).inc(); });
   do_await_stop();
 }
 
-Server::~Server() { tick_loop_.stop(); }
+Server::~Server() {
+  {
+    std::lock_guard lock(run_mutex_);
+    run_returned_ = true;
+  }
+  run_returned_cv_.notify_all();
+  if (stop_watchdog_.joinable()) stop_watchdog_.join();
+  set_log_suppressed_hook({});
+  tick_loop_.stop();
+}
 
 void Server::run() {
   spdlog::info("listening tcp={} udp={} metrics={}", config_.listen.host + ":" + std::to_string(tcp_port_),
@@ -113,6 +128,12 @@ void Server::run() {
   do_accept();
   do_receive();
   context_.run();
+  {
+    std::lock_guard lock(run_mutex_);
+    run_returned_ = true;
+  }
+  run_returned_cv_.notify_all();
+  if (stop_watchdog_.joinable()) stop_watchdog_.join();
   tick_loop_.stop();
   spdlog::info("stopped");
 }
@@ -137,25 +158,62 @@ void Server::do_stop() {
   acceptor_.close(ignored);
   udp_socket_.close(ignored);
   if (metrics_http_) metrics_http_->stop();
+  accept_backoff_.cancel();
   tick_loop_.stop();  // joins the simulation thread; frames it already queued are drained below
   if (stop_handler_) stop_handler_();  // sessions say Bye while the context still runs
+  // A client that reads slowly (or a network thread far behind) must not hold the exit.
+  stop_watchdog_ = std::thread([this] {
+    std::unique_lock lock(run_mutex_);
+    if (run_returned_cv_.wait_for(lock, std::chrono::duration<double>(kStopGraceS), [this] { return run_returned_; })) return;
+    spdlog::warn("shutdown: goodbyes not flushed within {} s; closing every connection", kStopGraceS);
+    context_.stop();
+  });
 }
 
 void Server::do_accept() {
   acceptor_.async_accept([this](std::error_code error, asio::ip::tcp::socket socket) {
     if (!acceptor_.is_open()) return;
-    if (!error) {
-      if (connection_handler_) {
-        connection_handler_(std::move(socket));
-      } else {
-        std::error_code ignored;
-        const auto peer = socket.remote_endpoint(ignored);
-        log_reject("tcp", peer_text(peer), "sessions_unavailable");
-        metrics_.rejects("sessions_unavailable").inc();
-        socket.close(ignored);
-      }
+    if (error == asio::error::no_descriptors || error.value() == ENFILE || error == asio::error::no_buffer_space ||
+        error == asio::error::no_memory)
+      return back_off_accept();  // accepting again at once would spin on the same error
+    if (!error && descriptors_low(socket)) {
+      std::error_code ignored;
+      socket.close(ignored);
+    } else if (!error && connection_handler_) {
+      connection_handler_(std::move(socket));
+    } else if (!error) {
+      std::error_code ignored;
+      const auto peer = socket.remote_endpoint(ignored);
+      log_reject("tcp", peer_text(peer), "sessions_unavailable");
+      metrics_.rejects("sessions_unavailable").inc();
+      socket.close(ignored);
     }
     do_accept();
+  });
+}
+
+// Descriptors are handed out lowest first: one this high means at most the reserve is free. The
+// limit is read each time: an operator may raise it on a running server (prlimit).
+bool Server::descriptors_low(asio::ip::tcp::socket& socket) {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return false;
+  const long descriptor_limit = static_cast<long>(limit.rlim_cur);
+  if (descriptor_limit == 0 || socket.native_handle() < descriptor_limit - kReserveDescriptors) return false;
+  metrics_.rejects("descriptors_low").inc();
+  log_limited(spdlog::level::warn, "descriptors_low", "",
+              "reject transport=tcp reason=descriptors_low: descriptor {} of {} (RLIMIT_NOFILE) would leave fewer than {} "
+              "free; raise the limit (ulimit -n) or lower --max-clients",
+              socket.native_handle(), descriptor_limit, kReserveDescriptors);
+  return true;
+}
+
+void Server::back_off_accept() {
+  metrics_.rejects("descriptors_exhausted").inc();
+  log_limited(spdlog::level::warn, "descriptors_exhausted", "",
+              "accept failed: no descriptors or buffers left; pausing accepts for 100 ms (raise ulimit -n)");
+  accept_backoff_.expires_after(std::chrono::milliseconds(100));
+  accept_backoff_.async_wait([this](std::error_code error) {
+    if (!error && acceptor_.is_open()) do_accept();
   });
 }
 
@@ -243,6 +301,7 @@ void Server::drain_frames() {
     ready_.store(true);
     if (frame_sink_) frame_sink_(*frames);
   }
+  flush_log_summary();
 }
 
 HttpReply Server::handle_http(const HttpRequest& request) {

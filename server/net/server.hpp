@@ -19,9 +19,12 @@
 #include <asio/ip/tcp.hpp>
 #include <asio/ip/udp.hpp>
 #include <asio/signal_set.hpp>
+#include <asio/steady_timer.hpp>
 
 #include <array>
 #include <atomic>
+#include <condition_variable>
+#include <thread>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -34,6 +37,11 @@ namespace ocean::server {
 
 // SO_RCVBUF and SO_SNDBUF asked for the UDP socket (the kernel caps them at net.core.*mem_max).
 inline constexpr int kUdpSocketBufferBytes = 4 << 20;
+// Descriptors kept free for the metrics endpoint, the log and the UDP socket: a client
+// connection that would leave fewer is closed at once, so /healthz stays answerable.
+inline constexpr long kReserveDescriptors = 16;
+// After SIGTERM, sessions have this long to flush their Bye before every link is closed.
+inline constexpr double kStopGraceS = 1.5;
 
 class Server : public DatagramSocket {
  public:
@@ -83,6 +91,8 @@ class Server : public DatagramSocket {
  private:
   void do_await_stop();
   void do_accept();
+  bool descriptors_low(asio::ip::tcp::socket& socket);
+  void back_off_accept();
   void do_receive();
   void on_datagram(std::size_t n);
   void do_stop();
@@ -107,6 +117,13 @@ class Server : public DatagramSocket {
   ConnectionHandler connection_handler_;
   DatagramHandler datagram_handler_;
   StopHandler stop_handler_;
+  asio::steady_timer accept_backoff_{context_};
+  // After a stop, ends run() if the goodbyes have not drained within kStopGraceS. A thread, not
+  // a timer: a pending timer would itself keep the context running for the whole grace.
+  std::thread stop_watchdog_;
+  std::mutex run_mutex_;
+  std::condition_variable run_returned_cv_;
+  bool run_returned_ = false;  // guarded by run_mutex_
   std::mutex scene_request_mutex_;
   std::vector<std::pair<sim::SceneParams, std::int64_t>> scene_requests_;  // guarded by scene_request_mutex_
 

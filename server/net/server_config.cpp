@@ -60,6 +60,17 @@ std::string validate_server_config(const ServerConfig& config) {
   if (config.max_clients < 1 || config.max_clients > kMaxClientsLimit)
     return "--max-clients " + std::to_string(config.max_clients) + ": must be in 1.." +
            std::to_string(kMaxClientsLimit);
+  if (config.max_handshakes < 1 || config.max_handshakes > kMaxClientsLimit)
+    return "--max-handshakes " + std::to_string(config.max_handshakes) + ": must be in 1.." +
+           std::to_string(kMaxClientsLimit);
+  if (config.max_handshakes_per_ip < 1 || config.max_handshakes_per_ip > config.max_handshakes)
+    return "--max-handshakes-per-ip " + std::to_string(config.max_handshakes_per_ip) + ": must be in 1..--max-handshakes (" +
+           std::to_string(config.max_handshakes) + ")";
+  if (config.max_connections_per_ip < 0 || config.max_connections_per_ip > kMaxClientsLimit)
+    return "--max-connections-per-ip " + std::to_string(config.max_connections_per_ip) + ": must be in 0.." +
+           std::to_string(kMaxClientsLimit) + " (0 = no limit)";
+  if (!(config.handshake_timeout_s > 0.0) || config.handshake_timeout_s > 60.0)
+    return "--handshake-timeout " + std::to_string(config.handshake_timeout_s) + ": must be in (0, 60] seconds";
   if (config.udp_redundancy < 0 || config.udp_redundancy > kMaxUdpRedundancy)
     return "--udp-redundancy " + std::to_string(config.udp_redundancy) + ": must be in 0.." +
            std::to_string(kMaxUdpRedundancy) + " earlier frames per datagram";

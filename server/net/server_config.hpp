@@ -40,7 +40,13 @@ struct ServerConfig {
   std::int64_t epoch_unix_ms = kDefaultEpochUnixMs;
   std::vector<std::string> profiles{"mobile", "desktop"};  // names from protocol/profile.hpp
 
-  int max_clients = 64;
+  int max_clients = 64;                           // welcomed sessions (viewer slots)
+  // Connections before their Hello (they never hold a viewer slot): all of them, per address, and
+  // how long one may stay silent. Per-address connections, welcomed or not: 0 = no limit (NAT).
+  int max_handshakes = 256;
+  int max_handshakes_per_ip = 32;
+  int max_connections_per_ip = 0;
+  double handshake_timeout_s = 3.0;
   int udp_redundancy = 2;                         // earlier unacked frames copied into each datagram
   std::string admin_token_file;                   // empty = admin interface disabled
   std::string admin_token;                        // read from admin_token_file; never logged

@@ -39,6 +39,16 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       network_busy_ratio(registry.gauge("ocean_network_busy_ratio", "Share of the last second the network thread was busy.")),
       admission_capacity(registry.gauge("ocean_admission_capacity",
                                         "Sessions admitted while the network thread is over its busy target (0 = open).")),
+      udp_unproven_bytes_in(registry.counter("ocean_udp_unproven_bytes_total",
+                                             "UDP bytes from and to addresses not proven by a UdpHello.",
+                                             {{"direction", "in"}})),
+      udp_unproven_bytes_out(registry.counter("ocean_udp_unproven_bytes_total",
+                                              "UDP bytes from and to addresses not proven by a UdpHello.",
+                                              {{"direction", "out"}})),
+      udp_rebinds(registry.counter("ocean_udp_rebinds_total",
+                                   "Proven UDP addresses moved to a new port after the old one went quiet.")),
+      udp_rebinds_refused(registry.counter("ocean_udp_rebinds_refused_total",
+                                           "UdpHellos refused because they would move a live proven address.")),
       registry_(registry) {}
 
 Counter& ServerMetrics::frames_computed(std::string_view profile) {
@@ -69,6 +79,12 @@ Counter& ServerMetrics::rejects(std::string_view reason) {
 Counter& ServerMetrics::sessions_ended(std::string_view reason) {
   return registry_.counter("ocean_sessions_ended_total",
                            "Welcomed client sessions that closed, by reason (client_bye, peer_closed, idle_timeout...).",
+                           {{"reason", std::string(reason)}});
+}
+
+Counter& ServerMetrics::log_suppressed(std::string_view reason) {
+  return registry_.counter("ocean_log_suppressed_total",
+                           "Log lines left out by the per-reason and per-peer rate limit (the events are counted elsewhere).",
                            {{"reason", std::string(reason)}});
 }
 

@@ -38,6 +38,10 @@ class ServerMetrics {
   Summary& loop_lag_seconds; // how long after its scheduled time a tick was served
   Gauge& network_busy_ratio; // share of the last second the network thread was busy
   Gauge& admission_capacity; // sessions admitted while over the busy target (0 = the door is open)
+  Counter& udp_unproven_bytes_in;   // UDP bytes from addresses not (yet) proven (anti-amplification)
+  Counter& udp_unproven_bytes_out;  // UDP bytes answered to them
+  Counter& udp_rebinds;             // proven UDP addresses moved to a new port (NAT rebinding)
+  Counter& udp_rebinds_refused;     // UdpHellos that would move a live proven address (replays)
 
   Counter& frames_computed(std::string_view profile);
   Gauge& clients(std::string_view profile, std::string_view transport);
@@ -45,6 +49,7 @@ class ServerMetrics {
   Counter& bytes_sent(std::string_view transport);
   Counter& rejects(std::string_view reason);
   Counter& sessions_ended(std::string_view reason);  // welcomed sessions closed, by the link's reason
+  Counter& log_suppressed(std::string_view reason);  // log lines left out by the rate limit (server_log.hpp)
 
  private:
   MetricsRegistry& registry_;

@@ -32,6 +32,10 @@ struct Session {
   Cookie cookie{};
   bool wants_udp = false;                   // Hello / SetTransport
   std::optional<UdpLink> udp;               // the address a UdpHello proved
+  double udp_heard_s = 0.0;                 // the last valid datagram from that address
+  bool ending = false;                      // Bye or Error sent, closing after a flush
+  bool admitted = false;                    // counted by Admission (its address's connections)
+  int token_failures = 0;                   // ParamChanges with a wrong admin token
   BaselineTracker baselines;
   std::deque<RecentFrame> recent_udp;       // the last kMaxUdpRedundancy single-chunk UDP frames
   std::uint64_t tcp_frames_mark = 0;        // link->enqueued_total() after the last frame queued on it

@@ -23,6 +23,8 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
     : host_(std::move(host)),
       options_(options),
       scenes_(host_.schedule, static_cast<Tick>(std::lround(options.scene_lead_s * host_.config.tick_rate_hz))),
+      admission_(AdmissionLimits{host_.config.max_handshakes, host_.config.max_handshakes_per_ip,
+                                 host_.config.max_connections_per_ip}),
       tick_(start_tick),
       key_budget_(options.keys_per_s, std::max(1.0, 0.5 * options.keys_per_s), 0.0) {
   for (const std::string& name : host_.config.profiles) {
@@ -83,9 +85,38 @@ void SessionCore::open(std::shared_ptr<StreamLink> link, const Instant& now) {
       [this, weak](const std::string& reason) {
         if (auto s = weak.lock()) on_closed(s, reason);
       });
-  if (stopping_ || sessions_.size() + handshaking_.size() > static_cast<std::size_t>(host_.config.max_clients))
+  if (stopping_) return refuse(*session, protocol::Reason::server_full, "server_full: the server is shutting down");
+  // Viewer slots are checked at the Hello: a connection that has said nothing holds only a
+  // handshake, which has its own budget and deadline.
+  std::string limit = admission_.admit(session->link->address());
+  if (limit == "handshakes_full" || limit == "address_handshakes_full") {
+    evict_oldest_handshake(*session, limit);
+    limit = admission_.admit(session->link->address());
+  }
+  if (!limit.empty())
     return refuse(*session, protocol::Reason::server_full,
-                  "server_full: " + std::to_string(host_.config.max_clients) + " clients connected (--max-clients)");
+                  "server_full: too many connections waiting for their Hello (" + limit +
+                      "; --max-handshakes, --max-handshakes-per-ip, --max-connections-per-ip)",
+                  limit);
+  session->admitted = true;
+}
+
+// A full handshake budget closes its oldest waiting connection (of the same address when that
+// address's share is full), not the newcomer: a real client says Hello at once and is through
+// before a reconnect loop comes round again, so sockets that stay silent only push each other out.
+void SessionCore::evict_oldest_handshake(const Session& newcomer, const std::string& limit) {
+  const asio::ip::address address = newcomer.link->address();
+  std::shared_ptr<Session> oldest;
+  for (const auto& waiting : handshaking_)
+    if (waiting.get() != &newcomer && waiting->admitted && !waiting->welcomed &&
+        (limit == "handshakes_full" || waiting->link->address() == address)) {
+      oldest = waiting;
+      break;
+    }
+  if (!oldest) return;
+  host_.metrics.rejects("handshake_evicted").inc();
+  log_reject(oldest->link->transport(), oldest->peer(), "handshake_evicted");
+  oldest->link->close("handshake_evicted");  // at once: the budget is needed now
 }
 
 void SessionCore::on_closed(const std::shared_ptr<Session>& session, const std::string& reason) {
@@ -97,6 +128,8 @@ void SessionCore::on_closed(const std::shared_ptr<Session>& session, const std::
     update_client_gauges();
   }
   std::erase(handshaking_, session);
+  if (session->admitted) admission_.closed(session->link->address(), session->welcomed);
+  session->admitted = false;
 }
 
 void SessionCore::send_control(Session& session, protocol::Bytes bytes) {
@@ -111,8 +144,9 @@ void SessionCore::send_control(Session& session, protocol::Bytes bytes) {
   session.link->send(share(std::move(bytes)));
 }
 
-void SessionCore::refuse(Session& session, protocol::Reason reason, const std::string& text) {
-  const std::string_view name = protocol::to_string(reason);
+void SessionCore::refuse(Session& session, protocol::Reason reason, const std::string& text, std::string_view label) {
+  const std::string_view name = label.empty() ? protocol::to_string(reason) : label;
+  session.ending = true;
   log_reject(session.link->transport(), session.peer(), name);
   host_.metrics.rejects(name).inc();
   send_control(session, protocol::encode(protocol::Error{reason, text.substr(0, protocol::kMaxTextBytes)}));
@@ -120,6 +154,7 @@ void SessionCore::refuse(Session& session, protocol::Reason reason, const std::s
 }
 
 void SessionCore::end(Session& session, wire::ByeReason reason, const std::string& text) {
+  session.ending = true;
   send_control(session, protocol::encode(protocol::Bye{reason, text}));
   session.link->close_after_flush(1.0);
 }
@@ -163,7 +198,7 @@ void SessionCore::on_message(const std::shared_ptr<Session>& session, std::span<
       }
       return update_client_gauges();
     case wire::Body::ParamChange:
-      return on_param_change(session, *message.body_as_ParamChange());
+      return on_param_change(session, *message.body_as_ParamChange(), now);
     case wire::Body::Bye:
       return session->link->close("client_bye");
     default:
@@ -224,11 +259,15 @@ void SessionCore::on_hello(const std::shared_ptr<Session>& session, const wire::
                   "profile_unavailable in Hello.profile_id: " + std::to_string(hello.profile_id) +
                       " is not offered; offered: " + offered);
   }
+  if (sessions_.size() >= static_cast<std::size_t>(host_.config.max_clients))
+    return refuse(*session, protocol::Reason::server_full,
+                  "server_full: " + std::to_string(host_.config.max_clients) + " clients connected (--max-clients)");
   if (sessions_.size() >= session_limit_)
     return refuse(*session, protocol::Reason::server_full,
                   "server_full: at its measured capacity of " + std::to_string(session_limit_) +
                       " sessions; retry in 10 s or use another replica");
   std::erase(handshaking_, session);
+  admission_.welcomed(session->link->address());
   session->id = new_session_id();
   session->stream = stream;
   session->baselines = BaselineTracker(stream->tick_step() * options_.baseline_align_frames);
@@ -269,15 +308,34 @@ protocol::Welcome SessionCore::welcome(const Session& session) const {
   return welcome;
 }
 
-void SessionCore::on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& wire_change) {
-  const protocol::ParamChange change = protocol::read(wire_change);
-  if (!same_token(change.admin_token, host_.config.admin_token)) {
-    spdlog::warn("param_change refused session={} peer={} reason=unauthorized", session->id, session->peer());
-    host_.metrics.rejects("unauthorized").inc();
-    return send_control(*session, protocol::encode(protocol::Error{
-                                      protocol::Reason::unauthorized,
-                                      "unauthorized in ParamChange.admin_token: expected the server's admin token"}));
+// True when the token is refused (answered, and the connection closed after a few guesses).
+bool SessionCore::token_refused(Session& session, const std::string& token, const Instant& now) {
+  const asio::ip::address address = session.link->address();
+  if (admission_.tokens_blocked(address, now.monotonic_s)) {
+    refuse(session, protocol::Reason::unauthorized,
+           "unauthorized in ParamChange.admin_token: too many wrong tokens from this address; try later", "token_guessing");
+    return true;
   }
+  if (same_token(token, host_.config.admin_token)) return false;
+  const bool address_spent = admission_.token_failure(address, now.monotonic_s);
+  if (++session.token_failures >= options_.token_failures_per_connection || address_spent) {
+    refuse(session, protocol::Reason::unauthorized,
+           "unauthorized in ParamChange.admin_token: too many wrong tokens; closing", "token_guessing");
+    return true;
+  }
+  log_limited(spdlog::level::warn, "unauthorized", session.peer(), "param_change refused session={} peer={} reason=unauthorized",
+              session.id, session.peer());
+  host_.metrics.rejects("unauthorized").inc();
+  send_control(session, protocol::encode(protocol::Error{
+                            protocol::Reason::unauthorized,
+                            "unauthorized in ParamChange.admin_token: expected the server's admin token"}));
+  return true;
+}
+
+void SessionCore::on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& wire_change,
+                                  const Instant& now) {
+  const protocol::ParamChange change = protocol::read(wire_change);
+  if (token_refused(*session, change.admin_token, now)) return;
   const Tick from = tick_ + scenes_.lead_ticks();
   sim::SceneParams scene = scenes_.in_force(from).scene;
   if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "tick_frames.hpp"
+#include "admission.hpp"
 #include "link.hpp"
 #include "profile_stream.hpp"
 #include "scene_announcements.hpp"
@@ -32,7 +33,6 @@ namespace ocean::server {
 struct SessionCoreOptions {
   std::size_t send_queue_bytes = 1u << 20;     // per session; frames beyond it are dropped
   double key_interval_s = 1.0;                 // at most one requested or re-sync key per second
-  double handshake_timeout_s = 5.0;            // a connection must send its Hello within this
   std::int64_t cookie_lifetime_ms = 3'600'000; // a UdpHello may (re)prove the address this long
   int socket_send_buffer_bytes = 0;            // SO_SNDBUF of client sockets; 0 = the OS default
   // Sharing (README-server.md "Fan-out"): baselines on a grid of this many frames; keys only on
@@ -49,6 +49,11 @@ struct SessionCoreOptions {
   // delta encodes per profile and tick.
   double keys_per_s = 300.0;
   std::size_t max_encodes_per_tick = 64;
+  // A proven UDP address moves to another port only after this long without a valid datagram
+  // from it (a replayed UdpHello cannot take a live stream; a NAT rebinding still moves it).
+  double udp_rebind_quiet_s = 0.5;
+  // ParamChanges with a wrong admin token a connection may send before it is closed.
+  int token_failures_per_connection = 3;
 };
 
 // What the core needs from the server around it; none of it a socket or a clock.
@@ -101,6 +106,7 @@ class SessionCore {
   const SessionCoreOptions& options() const { return options_; }
   const CoreTickStats& last_tick() const { return last_tick_; }
   std::size_t session_count() const { return sessions_.size(); }
+  const Admission& admission() const { return admission_; }
   std::size_t max_queued_bytes() const;  // over all sessions, now
   std::size_t peak_queued_bytes() const; // over all sessions, ever (closed ones included)
   // Before proof, the UDP bytes received and answered (anti-amplification).
@@ -111,8 +117,10 @@ class SessionCore {
  private:
   void on_message(const std::shared_ptr<Session>& session, std::span<const std::uint8_t> bytes, const Instant& now);
   void on_closed(const std::shared_ptr<Session>& session, const std::string& reason);
+  void evict_oldest_handshake(const Session& newcomer, const std::string& limit);
   void on_hello(const std::shared_ptr<Session>& session, const wire::Hello& hello, const Instant& now);
-  void on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& change);
+  void on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& change, const Instant& now);
+  bool token_refused(Session& session, const std::string& token, const Instant& now);
   // Ack, KeyframeRequest and Ping mean the same on any transport; `reply` carries the Pong.
   void on_session_message(Session& session, const wire::Message& message, Link& reply, const Instant& now);
   void on_udp_hello(Session& session, const wire::Message& message, std::size_t datagram_bytes, bool proven,
@@ -132,7 +140,8 @@ class SessionCore {
                 std::uint32_t request_id = 0);
   protocol::SceneUpdate scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const;
   protocol::Welcome welcome(const Session& session) const;
-  void refuse(Session& session, protocol::Reason reason, const std::string& text);
+  // Error{reason, text}, then close; counted as ocean_rejects_total{reason=label or the reason}.
+  void refuse(Session& session, protocol::Reason reason, const std::string& text, std::string_view label = {});
   void end(Session& session, wire::ByeReason reason, const std::string& text);
   void send_control(Session& session, protocol::Bytes bytes);
   void drop_datagram(protocol::Reason reason, const asio::ip::udp::endpoint& sender);
@@ -147,6 +156,7 @@ class SessionCore {
   std::map<std::uint64_t, std::shared_ptr<Session>> sessions_;  // welcomed, by id
   std::vector<std::shared_ptr<Session>> handshaking_;
   SceneAnnouncements scenes_;
+  Admission admission_;
   Tick tick_ = 0;
   bool stopping_ = false;
   CoreTickStats last_tick_;

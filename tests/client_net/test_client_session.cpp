@@ -140,3 +140,22 @@ TEST_CASE("predictor: the decoder's physics predicts the next frames within a qu
   CHECK(max_h <= d.config().height_step_m);
   CHECK(max_s <= d.config().slope_step);
 }
+
+TEST_CASE("session: after a NAT rebinding the client proves its new port and stays on UDP", "[session]") {
+  CoreSessionHarness h;
+  h.start();
+  h.run_ticks(60);
+  REQUIRE(h.session.path() == ClientSession::Path::udp);
+  const int hellos = h.server.udp_hellos;
+  // The NAT gives the client's flow a new port: the server's datagrams to the old one are lost.
+  h.server.client_udp = asio::ip::udp::endpoint(asio::ip::make_address("127.0.0.1"), 40777);
+  const std::size_t before = h.delivered.size();
+  h.run_ticks(90);
+  CHECK(h.server.udp_hellos > hellos);  // it proved the new port
+  CHECK(h.server.set_transport_tcp == 0);  // without giving up on UDP
+  CHECK(h.session.path() == ClientSession::Path::udp);
+  CHECK(h.server.metrics().udp_rebinds.value() == 1.0);
+  CHECK(h.delivered.size() - before >= 60);  // frames flow again within about a second
+  CHECK(h.frame_mismatches == 0);
+  CHECK(h.session.stats().udp.messages_in > 100);
+}

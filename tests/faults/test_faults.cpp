@@ -192,7 +192,7 @@ TEST_CASE("a client that stops reading but keeps sending Pings cannot grow the s
 }
 
 TEST_CASE("half messages and stalls are timed out while other clients stream", "[faults]") {
-  constexpr double kIdle = 3.0, kHandshake = 5.0;  // --idle-timeout; SessionCoreOptions::handshake_timeout_s
+  constexpr double kIdle = 3.0, kHandshake = 3.0;  // --idle-timeout; --handshake-timeout (default)
   FaultScenario s(small_server(64, kIdle));
   start_population(s);
   struct Outcome {
@@ -228,7 +228,7 @@ TEST_CASE("half messages and stalls are timed out while other clients stream", "
     }
     for (int i = 0; i < 2; ++i)
       attacker("Hello one byte per 400 ms", [&](RawTcp& c) {
-        // 12 bytes in 5 s: never a whole Hello within the handshake time.
+        // 12 bytes in 4.8 s: never a whole Hello within the handshake time.
         for (std::size_t b = 0; b < 12; ++b) {
           c.send(std::span(hello_bytes).subspan(b, 1));
           std::this_thread::sleep_for(milliseconds(400));

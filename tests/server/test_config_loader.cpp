@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cmath>
 
 using namespace ocean::server;
@@ -132,7 +133,7 @@ TEST_CASE("every kind of bad value is refused with a message naming it", "[confi
       {{"--depth", "-3"}, {"--depth", "depth_m"}},
       {{"--choppiness", "-1"}, {"--choppiness"}},
       {{"--small-wave", "-1"}, {"--small-wave"}},
-      {{"--seed", "-1"}, {"--seed", "not an integer"}},
+      {{"--seed", "-1"}, {"--seed", "not an unsigned 64-bit integer"}},
       {{"--listen", "1.2.3.4:70000"}, {"--listen", "0..65535"}},
       {{"--listen", "localhost:80"}, {"--listen", "not an IPv4 or IPv6 literal"}},
       {{"--listen", "1.2.3.4"}, {"--listen", "ADDR:PORT"}},
@@ -275,4 +276,45 @@ TEST_CASE("config text that is not ASCII is refused before the TOML parser sees 
   }
   CHECK(apply_config_toml(config, "# plain\nseed = 9\n", "ok.toml").empty());
   CHECK(config.scene.seed == 9u);
+}
+
+TEST_CASE("an empty file, a directory, a huge file or a negative tick is an error, not the defaults", "[config]") {
+  TempFile empty("");
+  CHECK(load({"--config", empty.path()}).message.find("is empty") != std::string::npos);
+  const ConfigLoadResult directory = load({"--config", "/tmp"});
+  CHECK(directory.outcome == Outcome::error);
+  CHECK(directory.message.find("not a regular file") != std::string::npos);
+  TempFile huge(std::string(kMaxConfigBytes + 1, '#'));
+  CHECK(load({"--config", huge.path()}).message.find("at most") != std::string::npos);
+  TempFile negative("[[schedule]]\ntick = -5\nwind-speed = 12.0\n");
+  const ConfigLoadResult r = load({"--config", negative.path()});
+  CHECK(r.outcome == Outcome::error);
+  CHECK(r.message.find("negative") != std::string::npos);
+}
+
+TEST_CASE("a long schedule loads in linear time, and one over the limit is refused", "[config][schedule]") {
+  auto schedule_text = [](std::size_t entries) {
+    std::string text;
+    for (std::size_t i = 0; i < entries; ++i)
+      text += "[[schedule]]\ntick = " + std::to_string(100 + i) + "\nwind-speed = " + std::to_string(5 + i % 10) + ".0\n";
+    return text;
+  };
+  ServerConfig config;
+  const auto start = std::chrono::steady_clock::now();
+  REQUIRE(apply_config_toml(config, schedule_text(8000), "long.toml").empty());
+  const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(config.schedule.size() == 8000);
+  CHECK(took < 0.5);  // main: 1.43 s (a copy of the growing schedule per entry)
+  ServerConfig over;
+  CHECK(apply_config_toml(over, schedule_text(kMaxScheduleEntries + 1), "over.toml").find("at most") != std::string::npos);
+}
+
+TEST_CASE("any 64-bit seed can be given, in TOML as a string; a bad one says what is allowed", "[config]") {
+  CHECK(load({"--seed", "18446744073709551615"}).config.scene.seed == 18446744073709551615ull);
+  CHECK(load({"--seed", "0xfedcba9876543210"}).config.scene.seed == 0xfedcba9876543210ull);
+  TempFile file("seed = \"0xffffffffffffffff\"\n");
+  CHECK(load({"--config", file.path()}).config.scene.seed == 0xffffffffffffffffull);
+  const ConfigLoadResult bad = load({"--seed", "-1"});
+  CHECK(bad.outcome == Outcome::error);
+  CHECK(bad.message.find("unsigned 64-bit") != std::string::npos);
 }

@@ -38,7 +38,7 @@ class CorePeer {
   }
   void on_udp(std::span<const std::uint8_t> bytes, double now) {
     observe(bytes, wire::Transport::udp);
-    rig_.core().on_datagram(bytes, kClientUdp, CoreRig::at(now));
+    rig_.core().on_datagram(bytes, client_udp, CoreRig::at(now));
   }
 
   // The next tick's frames reach the core; what it sent lands in to_client_tcp / to_client_udp
@@ -49,12 +49,16 @@ class CorePeer {
       if (session_id_ == 0) remember_welcome(message);
       to_client_tcp.push_back(std::move(message));
     }
-    for (auto& datagram : datagrams_.take()) to_client_udp.push_back(std::move(datagram.bytes));
+    for (auto& datagram : datagrams_.take())  // what goes to an address the client left is lost
+      if (datagram.to == client_udp) to_client_udp.push_back(std::move(datagram.bytes));
   }
 
+  server::ServerMetrics& metrics() { return rig_.metrics(); }
   const codec::EncodedFrame* sent_frame(Tick tick) const { return rig_.sent_frame(tick); }
   const codec::ModalState* sent_state(Tick tick) const { return rig_.sent_state(tick); }
 
+  // Where the client's datagrams come from (a NAT rebinding changes the port).
+  asio::ip::udp::endpoint client_udp = kClientUdp;
   std::vector<protocol::Bytes> to_client_tcp, to_client_udp;
   std::vector<protocol::Ack> acks;
   std::vector<wire::KeyframeReason> keyframe_requests;

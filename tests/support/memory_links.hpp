@@ -13,8 +13,9 @@ namespace ocean::test {
 
 class MemoryLink final : public server::StreamLink {
  public:
-  explicit MemoryLink(std::string peer = "127.0.0.1:40000", std::size_t max_queue_bytes = 1u << 20)
-      : peer_(std::move(peer)), max_queue_bytes_(max_queue_bytes) {}
+  explicit MemoryLink(std::string peer = "127.0.0.1:40000", std::size_t max_queue_bytes = 1u << 20,
+                      asio::ip::address address = asio::ip::make_address("127.0.0.1"))
+      : peer_(std::move(peer)), max_queue_bytes_(max_queue_bytes), address_(std::move(address)) {}
 
   std::string_view transport() const override { return "tcp"; }
   const std::string& peer() const override { return peer_; }
@@ -28,12 +29,14 @@ class MemoryLink final : public server::StreamLink {
     on_message_ = std::move(on_message);
     on_close_ = std::move(on_close);
   }
-  asio::ip::address address() const override { return asio::ip::make_address("127.0.0.1"); }
+  asio::ip::address address() const override { return address_; }
   bool has_room(std::size_t bytes) const override { return bytes <= max_queue_bytes_; }
   bool has_control_room(std::size_t bytes) const override { return bytes <= max_queue_bytes_ + kControlHeadroomBytes; }
   void set_rate(double) override {}
   void set_max_message_bytes(std::size_t) override {}
-  void close_after_flush(double) override { close("closed_after_flush"); }
+  void close_after_flush(double) override {
+    if (!linger) close("closed_after_flush");
+  }
   void close(const std::string& reason) override {
     if (closed_) return;
     closed_ = true;
@@ -54,10 +57,12 @@ class MemoryLink final : public server::StreamLink {
   std::vector<protocol::Bytes> take() { return std::exchange(sent_, {}); }
 
   std::string close_reason;
+  bool linger = false;  // close_after_flush leaves it open, like a client that stops reading
 
  private:
   std::string peer_;
   std::size_t max_queue_bytes_;
+  asio::ip::address address_;
   std::uint64_t enqueued_total_ = 0;
   std::vector<protocol::Bytes> sent_;
   bool closed_ = false;
