@@ -78,7 +78,8 @@ void SessionCore::record_tick_stats(std::vector<std::pair<const void*, codec::St
   ServerMetrics& metrics = host_.metrics;
   for (const auto& stream : streams_) {
     stats.encodes += stream->encodes_this_tick();
-    if (stream->encodes_this_tick() > 0) metrics.encode_seconds.observe(stream->encode_seconds_this_tick());
+    if (stream->encodes_this_tick() > 0)
+      metrics.encode_seconds(stream->profile().name).observe(stream->encode_seconds_this_tick());
   }
   metrics.encodes.inc(static_cast<double>(stats.encodes));
   metrics.encodes_last_tick.set(static_cast<double>(stats.encodes));

@@ -305,8 +305,10 @@ void Server::drain_frames() {
 }
 
 HttpReply Server::handle_http(const HttpRequest& request) {
-  if (request.target == "/metrics")
+  if (request.target == "/metrics") {
+    metrics_.update_process();
     return {200, "text/plain; version=0.0.4; charset=utf-8", registry_.render()};
+  }
   if (request.target == "/healthz") return {200, "text/plain; charset=utf-8", "ok\n"};
   if (request.target == "/readyz")
     return ready_.load() ? HttpReply{200, "text/plain; charset=utf-8", "ready\n"}

@@ -1,5 +1,15 @@
 #include "server_metrics.hpp"
 
+#include "chunk_format.hpp"
+#include "protocol_version.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+
 namespace ocean::server {
 
 ServerMetrics::ServerMetrics(MetricsRegistry& registry)
@@ -9,7 +19,6 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       ticks_skipped(registry.counter("ocean_ticks_skipped_total",
                                      "Ticks never run because the loop was too far behind (catch-up policy).")),
       tick_seconds(registry.summary("ocean_tick_seconds", "Simulation time per tick for all offered profiles.")),
-      encode_seconds(registry.summary("ocean_encode_seconds", "Encoder time per frame.")),
       frames_dropped(registry.counter("ocean_frames_dropped_total",
                                       "Computed tick frames dropped because the network side was behind.")),
       current_tick(registry.gauge("ocean_tick", "Index of the last tick run, counted from the epoch.")),
@@ -49,7 +58,49 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
                                    "Proven UDP addresses moved to a new port after the old one went quiet.")),
       udp_rebinds_refused(registry.counter("ocean_udp_rebinds_refused_total",
                                            "UdpHellos refused because they would move a live proven address.")),
-      registry_(registry) {}
+      registry_(registry),
+      resident_bytes_(registry.gauge("process_resident_memory_bytes", "Resident memory of the server process, bytes.")),
+      cpu_seconds_(registry.gauge("process_cpu_seconds_total", "User and system CPU time of the server process, seconds.")),
+      open_fds_(registry.gauge("process_open_fds", "Open file descriptors of the server process.")),
+      start_time_(registry.gauge("process_start_time_seconds", "Start time of the server process, Unix seconds.")) {
+  registry.gauge("ocean_build_info", "Always 1; the labels name the build.",
+                 {{"version", OCEAN_VERSION},
+                  {"protocol", std::to_string(protocol::kProtocolVersion)},
+                  {"codec", std::to_string(codec::kCodecVersion)}})
+      .set(1.0);
+  start_time_.set(static_cast<double>(std::time(nullptr)));
+}
+
+Summary& ServerMetrics::encode_seconds(std::string_view profile) {
+  return registry_.summary("ocean_encode_seconds", "Encoder time of a profile's stream in a tick that encoded.",
+                           {{"profile", std::string(profile)}});
+}
+
+void ServerMetrics::update_process() {
+  // /proc/self/stat fields 14 and 15 (utime, stime) in clock ticks; statm's second field in pages.
+  if (std::FILE* stat = std::fopen("/proc/self/stat", "r")) {
+    char buffer[1024] = {};
+    const std::size_t n = std::fread(buffer, 1, sizeof buffer - 1, stat);
+    std::fclose(stat);
+    const char* after_name = std::strrchr(buffer, ')');  // the command name may hold spaces
+    unsigned long utime = 0, stime = 0;
+    if (n > 0 && after_name &&
+        std::sscanf(after_name + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %lu %lu", &utime, &stime) == 2)
+      cpu_seconds_.set(static_cast<double>(utime + stime) / static_cast<double>(::sysconf(_SC_CLK_TCK)));
+  }
+  if (std::FILE* statm = std::fopen("/proc/self/statm", "r")) {
+    unsigned long pages = 0, resident = 0;
+    if (std::fscanf(statm, "%lu %lu", &pages, &resident) == 2)
+      resident_bytes_.set(static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE)));
+    std::fclose(statm);
+  }
+  std::error_code error;
+  std::size_t fds = 0;
+  for (auto it = std::filesystem::directory_iterator("/proc/self/fd", error); !error && it != std::filesystem::directory_iterator();
+       it.increment(error))
+    ++fds;
+  if (!error) open_fds_.set(static_cast<double>(fds));
+}
 
 Counter& ServerMetrics::frames_computed(std::string_view profile) {
   return registry_.counter("ocean_frames_computed_total", "Frames computed by the simulation, by profile.",

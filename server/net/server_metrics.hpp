@@ -18,7 +18,6 @@ class ServerMetrics {
   Counter& ticks_late;       // ticks run after the following tick was already due
   Counter& ticks_skipped;    // ticks never run (catch-up policy jumped over them)
   Summary& tick_seconds;     // simulation time per tick, all profiles
-  Summary& encode_seconds;   // encoder time of one profile stream in a tick that encoded
   Counter& frames_dropped;   // computed frames the network side had no room for
   Gauge& current_tick;       // the last tick index run
   Counter& scene_changes;    // scheduled scene changes applied
@@ -44,15 +43,22 @@ class ServerMetrics {
   Counter& udp_rebinds_refused;     // UdpHellos that would move a live proven address (replays)
 
   Counter& frames_computed(std::string_view profile);
+  Summary& encode_seconds(std::string_view profile);  // encoder time of that profile in a tick that encoded
   Gauge& clients(std::string_view profile, std::string_view transport);
   Counter& frames_sent(std::string_view transport);
   Counter& bytes_sent(std::string_view transport);
   Counter& rejects(std::string_view reason);
+  // process_* (memory, CPU, descriptors, start time) read from /proc now: call before rendering.
+  void update_process();
   Counter& sessions_ended(std::string_view reason);  // welcomed sessions closed, by the link's reason
   Counter& log_suppressed(std::string_view reason);  // log lines left out by the rate limit (server_log.hpp)
 
  private:
   MetricsRegistry& registry_;
+  Gauge& resident_bytes_;
+  Gauge& cpu_seconds_;
+  Gauge& open_fds_;
+  Gauge& start_time_;
 };
 
 }  // namespace ocean::server

@@ -40,8 +40,13 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
   if (streams_.empty()) throw std::invalid_argument("--profiles: no offered profile can be streamed by the codec");
   // The scenes in force now and within the lead, before the first tick: a Hello may come first.
   announce(scenes_.start(tick_));
-  for (std::size_t r = 0; r < datagram_rejects_.size(); ++r)
-    datagram_rejects_[r] = &host_.metrics.rejects(protocol::to_string(static_cast<protocol::Reason>(r)));
+  // Made up front (no allocation per datagram), except the two no peer can cause: "ok" is not a
+  // refusal and a misaligned buffer is a receiver bug; those slots share an internal_error series.
+  for (std::size_t r = 0; r < datagram_rejects_.size(); ++r) {
+    const auto reason = static_cast<protocol::Reason>(r);
+    const bool peer_caused = reason != protocol::Reason::ok && reason != protocol::Reason::misaligned_buffer;
+    datagram_rejects_[r] = &host_.metrics.rejects(protocol::to_string(peer_caused ? reason : protocol::Reason::internal_error));
+  }
 }
 
 codec::StreamConfig SessionCore::stream_config(const Profile& profile, const sim::SceneParams& scene) const {

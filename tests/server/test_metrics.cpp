@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <ctime>
+
 #include <map>
 #include <regex>
 #include <sstream>
@@ -186,5 +188,24 @@ TEST_CASE("server metrics register the documented families", "[metrics]") {
   CHECK(find(samples, "ocean_bytes_sent_total", {{"transport", "tcp"}})->value == 12345.0);
   CHECK(find(samples, "ocean_rejects_total", {{"reason", "server_full"}})->value == 1.0);
   CHECK(find(samples, "ocean_tick_seconds", {{"quantile", "0.5"}})->value == 0.002);
-  CHECK(find(samples, "ocean_encode_seconds_count")->value == 0.0);
+  CHECK(find(samples, "ocean_encode_seconds_count") == nullptr);  // per profile, made when one encodes
+  metrics.encode_seconds("mobile").observe(0.001);
+  volatile double spin = 0.0;  // CPU time enough for a clock tick to show in /proc
+  for (const auto start = std::clock(); std::clock() - start < CLOCKS_PER_SEC / 20;) spin = spin + 1.0;
+  metrics.update_process();
+  const auto more = parse_all(registry.render(), bad);
+  CHECK(bad.empty());
+  CHECK(find(more, "ocean_encode_seconds_count", {{"profile", "mobile"}})->value == 1.0);
+  CHECK(find(more, "process_resident_memory_bytes")->value > 1e6);
+  CHECK(find(more, "process_open_fds")->value >= 3.0);
+  CHECK(find(more, "process_cpu_seconds_total")->value > 0.0);
+  CHECK(find(more, "process_start_time_seconds")->value > 1.7e9);
+  const Sample* build = nullptr;
+  for (const Sample& sample : more)
+    if (sample.name == "ocean_build_info") build = &sample;
+  REQUIRE(build);
+  CHECK(build->value == 1.0);
+  CHECK(build->labels.at("protocol") == "2");
+  CHECK(build->labels.at("codec") == "2");
+  CHECK(!build->labels.at("version").empty());
 }
