@@ -12,6 +12,7 @@
 #include "client/render/offscreen_target.hpp"
 #include "client/viewer/app_window.hpp"
 #include "client/viewer/fps_meter.hpp"
+#include "client/viewer/viewer_exit.hpp"
 #include "client/viewer/headless_context.hpp"
 #include "client/viewer/png_file.hpp"
 
@@ -72,7 +73,7 @@ int run_headless_loop(FrameSource& source, const LoopSettings& s, LoopResult& re
   source.start();
   if (!source.wait_for_first_frame(error)) {
     source.stop();
-    return 1;
+    return kExitNoServer;
   }
   ViewScene& scene = source.scene();
   const LoopClock clock;

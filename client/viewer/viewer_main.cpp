@@ -43,7 +43,15 @@ int main(int argc, char** argv) {
                  "seconds to render behind the newest frame (0 = three send intervals)")
       ->check(CLI::Range(0.0, 10.0));
   ocean::viewer::add_camera_flags(app, o);
-  CLI11_PARSE(app, argc, argv);
+  app.footer(ocean::viewer::kExitTable);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "ocean-viewer: %s\n", e.what());
+    return ocean::viewer::kExitUsage;
+  }
 
   std::string error;
   if (ocean::client::parse_server_list(o.server, o.servers, error)) {
@@ -52,7 +60,7 @@ int main(int argc, char** argv) {
   }
   if (!error.empty() || !ocean::viewer::parse_size(o.size, o.width, o.height, error)) {
     std::fprintf(stderr, "ocean-viewer: %s\n", error.c_str());
-    return 2;
+    return ocean::viewer::kExitUsage;
   }
   if (!o.headless && !std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) {
     std::fprintf(stderr, "ocean-viewer: no DISPLAY set, rendering headless (pass --headless to silence this)\n");

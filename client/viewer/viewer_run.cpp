@@ -159,7 +159,12 @@ bool make_network_config(const ViewerOptions& o, NetworkThreadConfig& config, st
 }
 
 int run_headless(const ViewerOptions& o, ViewerSummary& summary, std::string& error) {
-  return run_with(run_headless_loop, o, summary, error);
+  const int code = run_with(run_headless_loop, o, summary, error);
+  if (code != kExitNoServer) return code;
+  // A server that answered with an Error refused us; one that never answered is unreachable.
+  for (const char* refusal : {"profile_unavailable", "server_full", "unauthorized", "unknown_version"})
+    if (error.find(refusal) != std::string::npos) return kExitRefused;
+  return code;
 }
 
 int run_window(const ViewerOptions& o, ViewerSummary& summary, std::string& error) {

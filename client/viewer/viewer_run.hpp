@@ -2,6 +2,8 @@
 // headless and window loops (viewer_loops.hpp), and its summary. main() only parses and picks one.
 #pragma once
 
+#include "client/viewer/viewer_exit.hpp"
+
 #include <cstdint>
 #include <string>
 
@@ -34,7 +36,7 @@ struct ViewerSummary {
 // Builds the network configuration from the options; false with a reason (e.g. an unknown profile).
 bool make_network_config(const ViewerOptions& options, NetworkThreadConfig& config, std::string& error);
 
-// Returns the process exit code: 0, or 1 with the reason in error (no first frame in time, GL failure).
+// Returns the process exit code (kExit*), with the reason in error.
 int run_headless(const ViewerOptions& options, ViewerSummary& summary, std::string& error);
 int run_window(const ViewerOptions& options, ViewerSummary& summary, std::string& error);
 
