@@ -35,6 +35,11 @@ int main(int argc, char** argv) {
   try {
     ocean::server::set_log_level(loaded.config.log_level);
     spdlog::info("ocean-server starting: {}", ocean::server::describe_config(loaded.config));
+    const ocean::sim::SceneParams& scene = loaded.config.scene;
+    if (scene.spectrum == ocean::sim::SpectrumKind::phillips &&
+        (scene.spreading != ocean::sim::SceneParams{}.spreading || scene.fetch_m != ocean::sim::SceneParams{}.fetch_m))
+      spdlog::warn("--spreading and --fetch shape JONSWAP only; the Phillips spectrum ignores them "
+                   "(its own |k.w|^2 factor spreads it): use --spectrum jonswap");
     ocean::server::Server server(std::move(loaded.config));
     ocean::server::SessionHub sessions(server);
     server.run();
