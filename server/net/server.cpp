@@ -92,7 +92,7 @@ Server::Server(ServerConfig config)
   udp_port_ = udp_socket_.local_endpoint().port();
   udp_socket_.non_blocking(true);  // a full socket buffer drops a datagram rather than stall the network thread
   if (config_.metrics_listen) {
-    metrics_http_ = std::make_unique<MetricsHttpServer>(context_, *config_.metrics_listen,
+    metrics_http_ = std::make_unique<MetricsHttpServer>(http_context_, *config_.metrics_listen,
                                                         [this](const HttpRequest& r) { return handle_http(r); });
     metrics_port_ = metrics_http_->local_endpoint().port();
     metrics_http_->set_refused_callback([this](std::string_view reason, const std::string& peer) {
@@ -115,6 +115,7 @@ Server::~Server() {
   }
   run_returned_cv_.notify_all();
   if (stop_watchdog_.joinable()) stop_watchdog_.join();
+  stop_http();
   set_log_suppressed_hook({});
   tick_loop_.stop();
 }
@@ -124,10 +125,14 @@ void Server::run() {
                udp_address(config_, tcp_port_).host + ":" + std::to_string(udp_port_),
                metrics_port_ ? config_.metrics_listen->host + ":" + std::to_string(*metrics_port_) : "off");
   tick_loop_.start();
-  if (metrics_http_) metrics_http_->start();
+  if (metrics_http_) {
+    metrics_http_->start();
+    http_thread_ = std::thread([this] { http_context_.run(); });
+  }
   do_accept();
   do_receive();
   context_.run();
+  stop_http();
   {
     std::lock_guard lock(run_mutex_);
     run_returned_ = true;
@@ -157,7 +162,7 @@ void Server::do_stop() {
   signals_.cancel(ignored);
   acceptor_.close(ignored);
   udp_socket_.close(ignored);
-  if (metrics_http_) metrics_http_->stop();
+  if (metrics_http_) asio::post(http_context_, [this] { metrics_http_->stop(); });
   accept_backoff_.cancel();
   tick_loop_.stop();  // joins the simulation thread; frames it already queued are drained below
   if (stop_handler_) stop_handler_();  // sessions say Bye while the context still runs
@@ -296,10 +301,26 @@ void Server::on_tick(const TickDecision& decision) {
   if (pushed.was_empty) asio::post(context_, [this] { drain_frames(); });
 }
 
+void Server::stop_http() {
+  if (!http_thread_.joinable()) return;
+  if (metrics_http_) asio::post(http_context_, [this] { metrics_http_->stop(); });
+  http_context_.stop();
+  http_thread_.join();
+}
+
+namespace {
+std::int64_t steady_ms() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+// /healthz fails when the network thread served no tick for this long (it serves ~30 a second).
+constexpr std::int64_t kStalledMs = 5000;
+}  // namespace
+
 void Server::drain_frames() {
   while (std::optional<std::shared_ptr<const TickFrames>> frames = frames_.pop()) {
     ready_.store(true);
     if (frame_sink_) frame_sink_(*frames);
+    heartbeat_ms_.store(steady_ms());
   }
   flush_log_summary();
 }
@@ -309,7 +330,13 @@ HttpReply Server::handle_http(const HttpRequest& request) {
     metrics_.update_process();
     return {200, "text/plain; version=0.0.4; charset=utf-8", registry_.render()};
   }
-  if (request.target == "/healthz") return {200, "text/plain; charset=utf-8", "ok\n"};
+  if (request.target == "/healthz") {
+    const std::int64_t beat = heartbeat_ms_.load();
+    if (beat != 0 && steady_ms() - beat > kStalledMs)
+      return {503, "text/plain; charset=utf-8",
+              "stalled: the network thread served no tick for " + std::to_string((steady_ms() - beat) / 1000) + " s\n"};
+    return {200, "text/plain; charset=utf-8", "ok\n"};
+  }
   if (request.target == "/readyz")
     return ready_.load() ? HttpReply{200, "text/plain; charset=utf-8", "ready\n"}
                          : HttpReply{503, "text/plain; charset=utf-8", "starting\n"};

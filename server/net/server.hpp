@@ -98,10 +98,16 @@ class Server : public DatagramSocket {
   void do_stop();
   void on_tick(const TickDecision& decision);  // simulation thread
   void drain_frames();                          // network thread
+  void stop_http();                             // stops and joins the probes' thread
   HttpReply handle_http(const HttpRequest& request);
 
   ServerConfig config_;
   asio::io_context context_{1};
+  // /metrics, /healthz and /readyz run on their own thread, so a probe is answered however busy
+  // the network thread is; /healthz reports that thread stalled from its heartbeat instead.
+  asio::io_context http_context_{1};
+  std::thread http_thread_;
+  std::atomic<std::int64_t> heartbeat_ms_{0};  // steady ms when the network thread last served a tick
   asio::signal_set signals_;
   MetricsRegistry registry_;
   ServerMetrics metrics_;

@@ -157,7 +157,7 @@ TEST_CASE("no server: the headless viewer gives up after its timeout with a reas
   o.first_frame_timeout_s = 1.0;
   ViewerSummary summary;
   std::string error;
-  CHECK(run_headless(o, summary, error) == 1);
+  CHECK(run_headless(o, summary, error) == kExitNoServer);  // 3: nothing answered
   CHECK(error.find("no frame from 127.0.0.1:" + std::to_string(port)) != std::string::npos);
   CHECK(error.find("--first-frame-timeout") != std::string::npos);
 }
