@@ -93,11 +93,15 @@ void Encoder::evict() {
     const StateId id = item.first;
     if (id.tick >= oldest) return false;
     if (id.tick < oldest_key) return true;
-    const auto key = keys_.find(id.tick);
-    return key == keys_.end() || key->second->id != id;
+    const auto key = key_ids_.find(id.tick);
+    return key == key_ids_.end() || key->second != id;
   });
-  while (!keys_.empty() && keys_.begin()->first < oldest_key) keys_.erase(keys_.begin());
-  while (!deltas_.empty() && deltas_.begin()->first.first < oldest) deltas_.erase(deltas_.begin());
+  while (!key_ids_.empty() && key_ids_.begin()->first < oldest_key) key_ids_.erase(key_ids_.begin());
+  const Tick oldest_frame =
+      options_.frame_cache_ticks == 0 ? oldest : (newest_ >= options_.frame_cache_ticks ? newest_ - options_.frame_cache_ticks + 1 : 0);
+  const Tick oldest_key_frame = options_.frame_cache_ticks == 0 ? oldest_key : oldest_frame;
+  while (!keys_.empty() && keys_.begin()->first < oldest_key_frame) keys_.erase(keys_.begin());
+  while (!deltas_.empty() && deltas_.begin()->first.first < oldest_frame) deltas_.erase(deltas_.begin());
   scenes_.forget_before(states_.empty() ? oldest : std::min(oldest, states_.begin()->first.tick));
 }
 
@@ -122,6 +126,7 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_key(Tick tick) {
   const KeyCoding coding;
   auto frame = finish_frame(tick, std::move(predicted), corrections, &coding, {});
   keys_[tick] = frame;
+  key_ids_[tick] = frame->id;
   return frame;
 }
 
@@ -160,6 +165,7 @@ std::shared_ptr<const EncodedFrame> Encoder::explicit_key(Tick tick) {
   const Corrections corrections = correct(tick, predicted);
   auto frame = finish_frame(tick, std::move(predicted), corrections, &coding, {});
   keys_[tick] = frame;
+  key_ids_[tick] = frame->id;
   return frame;
 }
 

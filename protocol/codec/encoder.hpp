@@ -28,6 +28,11 @@ struct EncoderOptions {
   // ... except the states of keys, kept this long: a key that reaches a client late on a thin link
   // is still its baseline (0 = as history_ticks).
   std::uint32_t key_history_ticks = 0;
+  // Encoded frames (keys and deltas, with their reconstructions) are cached to hand the same frame
+  // out again; this many newest ticks of them (0 = as history_ticks). The states stay for their
+  // history either way. A server that only encodes its newest tick sets 1: desktop frames hold
+  // 0.8 MB of reconstruction each, and a few hundred of them were most of its memory.
+  std::uint32_t frame_cache_ticks = 0;
   int key_precision_bits = 6;        // key position error about step * 2^-bits rms (0..16)
   int key_velocity_extra_bits = 3;   // key velocity this many bits finer than position (0..16)
   // A modeled key with more corrections than this share of its samples falls back to explicit
@@ -107,7 +112,8 @@ class Encoder {
   SceneTimeline scenes_;
   std::map<Tick, TruthFrame> truth_;
   std::map<StateId, ModalState> states_;
-  std::map<Tick, std::shared_ptr<const EncodedFrame>> keys_;
+  std::map<Tick, std::shared_ptr<const EncodedFrame>> keys_;  // cached frames (frame_cache_ticks)
+  std::map<Tick, StateId> key_ids_;                             // every key's state, for key_history_ticks
   std::map<std::pair<Tick, StateId>, std::shared_ptr<const EncodedFrame>> deltas_;
   std::uint32_t next_serial_ = 1;
   Tick newest_ = 0;

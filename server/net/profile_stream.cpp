@@ -14,6 +14,7 @@ codec::EncoderOptions stream_encoder_options() {
   options.max_payload = protocol::kMaxChunkPayloadUdp;
   options.history_ticks = protocol::kMaxBaselineGap + 2;  // the acked baseline plus the tick before a key
   options.key_history_ticks = protocol::kMaxFrameLag;    // a key is a baseline however late it is acked
+  options.frame_cache_ticks = 1;  // ProfileStream shares each tick's encodes; older frames are never asked for
   return options;
 }
 
