@@ -1,4 +1,6 @@
-// LoadSummary: the figures of one load-test run, printed as a human table or one JSON object.
+// LoadSummary: the figures of one load-test run, printed as a human table or one JSON object. The
+// JSON carries the parts (histograms, byte counts) the figures are computed from, so summaries of
+// several threads or processes merge into one (summary_merge.hpp) with exact percentiles.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +10,7 @@
 #include <string>
 
 #include "client_figures.hpp"
+#include "sparse_histogram.hpp"
 
 namespace ocean::loadtest {
 
@@ -40,7 +43,20 @@ struct LoadSummary : ConnectionFigures {
   double duration_s = 0.0;
   std::string profile, transport, link, scenario;
   std::uint64_t bandwidth_bps = 0;  // announced in every client's Hello (0 = unstated)
+  int threads = 1;    // threads the clients ran on, over all processes merged
+  int processes = 1;  // load-test processes merged into this summary
+
+  // What the non-additive figures are computed from (finalize): latencies of every counted frame
+  // (0.1 ms bins), the per-client connection facts, and the traffic behind kbps_mean.
+  SparseHistogram latency_s{1e-4};
+  ConnectionParts connection;
+  std::uint64_t bytes_received = 0, udp_datagrams = 0;
+  double client_seconds = 0.0;  // over clients: the time each was part of the run
 };
+
+// Fills in frames_ok_pct, kbps_mean(_ip), the latency percentiles and the ConnectionFigures from
+// the counts and parts above.
+void finalize(LoadSummary& s);
 
 void print_table(std::ostream& out, const LoadSummary& s);
 std::string to_json(const LoadSummary& s);  // one line, no trailing newline
