@@ -108,6 +108,16 @@ TEST_CASE("client tally: late, bad, stalls, and expected vs received") {
   CHECK(tally.record(16 + ClientTally::kWindowTicks + 1, {true, true}, 0.0));
   CHECK_FALSE(tally.record(16, {true, true}, 0.0));  // out of the window: forgotten, not recounted
 
+  // Ticks far apart, and ticks one ring length apart, never stand for each other.
+  const ocean::Tick base = 16 + ClientTally::kWindowTicks + 1;
+  CHECK(tally.record(base + 128, {true, true}, 0.0));
+  CHECK(tally.record(base + 127, {true, true}, 0.0));
+  CHECK_FALSE(tally.record(base + 127, {true, true}, 0.0));
+  CHECK(tally.record(base + 1000, {true, true}, 0.0));
+  CHECK(tally.record(base + 1000 - 128 + 64, {true, true}, 0.0));
+  CHECK(tally.record(base + 1001, {true, true}, 0.0));
+  CHECK_FALSE(tally.record(base + 1000, {true, true}, 0.0));
+
   ClientTally every_other(1.0 / 30, 2);
   CHECK(every_other.expected(7, 15) == 4);  // 8, 10, 12, 14 from the Welcome when no frame came
   CHECK(every_other.expected(20, 15) == 0);
