@@ -25,7 +25,11 @@ std::string histogram_json(const SparseHistogram& h) {
   std::string bins = "[";
   for (const auto& [bin, n] : h.bins()) {
     if (bins.size() > 1) bins += ',';
-    bins += "[" + std::to_string(bin) + "," + std::to_string(n) + "]";
+    bins += '[';
+    bins += std::to_string(bin);
+    bins += ',';
+    bins += std::to_string(n);
+    bins += ']';
   }
   common::JsonWriter w(common::JsonWriter::Style::compact);
   w.number("bin", h.bin_width(), 17).number("max", h.max(), 17).raw("bins", bins + "]");
@@ -78,9 +82,11 @@ std::string to_json(const LoadSummary& s) {
   if (s.server_cpu_pct) w.raw("server_cpu_pct", num(*s.server_cpu_pct));
   for (const auto& f : kSummedDoubles) w.raw(f.name, num(s.*f.member));
   w.integer("scenes", s.scenes);
-  common::JsonWriter reasons(common::JsonWriter::Style::compact);
-  for (const auto& [name, n] : s.codec_rejections) reasons.integer(name, n);
-  w.raw("codec_rejections", reasons.str());
+  for (const auto& f : kSummedMaps) {
+    common::JsonWriter counts(common::JsonWriter::Style::compact);
+    for (const auto& [name, n] : s.*f.member) counts.integer(name, n);
+    w.raw(f.name, counts.str());
+  }
   for (const auto& f : kSameTexts) w.text(f.name, s.*f.member);
   w.integer("bandwidth_bps", s.bandwidth_bps);
   w.raw("parts", parts_json(s));
@@ -118,6 +124,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
     label += name;
     row(label.c_str(), std::to_string(n));
   }
+  for (const auto& [reason, n] : s.refusals) row(("refused: " + reason).c_str(), std::to_string(n));
   row("messages rejected", std::to_string(s.messages_rejected));
   row("fallbacks to tcp", std::to_string(s.transport_fallbacks));
   row("frames recovered", std::to_string(s.frames_recovered));

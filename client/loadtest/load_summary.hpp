@@ -30,6 +30,9 @@ struct LoadSummary : ConnectionFigures {
   std::uint64_t chunks_rejected_by_codec = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0;
   std::uint64_t frames_recovered = 0;  // completed from a FrameBundle copy after their own datagram was lost
   std::map<std::string, std::uint64_t> codec_rejections;  // by codec::ChunkError name
+  // Clients not connected at the end whose last attempt the server refused (an Error before the
+  // Welcome), by the Error's reason: what admission control said to the clients beyond capacity.
+  std::map<std::string, std::uint64_t> refusals;
   double frames_ok_pct = 0.0;    // verified and on time, over frames expected
   double max_err_m = 0.0;
   double error_bound_m = 0.0;

@@ -58,6 +58,11 @@ inline constexpr SummaryField<double> kSameDoubles[] = {
     {"error_bound_m", &LoadSummary::error_bound_m},
     {"interpolation_delay_ms", &LoadSummary::interpolation_delay_ms},
 };
+// Counts by name, summed name by name.
+inline constexpr SummaryField<std::map<std::string, std::uint64_t>> kSummedMaps[] = {
+    {"codec_rejections", &LoadSummary::codec_rejections},
+    {"refusals", &LoadSummary::refusals},
+};
 inline constexpr SummaryField<std::string> kSameTexts[] = {
     {"profile", &LoadSummary::profile},
     {"transport", &LoadSummary::transport},

@@ -39,7 +39,8 @@ std::string merge_into(LoadSummary& total, const LoadSummary& part) {
   // A part whose clients never got a Welcome knows no bound (0): the others' stands.
   for (const auto& f : kSameDoubles)
     if (part.*f.member != 0.0) total.*f.member = part.*f.member;
-  for (const auto& [name, n] : part.codec_rejections) total.codec_rejections[name] += n;
+  for (const auto& f : kSummedMaps)
+    for (const auto& [name, n] : part.*f.member) (total.*f.member)[name] += n;
   total.scenes = std::max(total.scenes, part.scenes);
   // Every part measured the same server over (nearly) the same time: the largest reading stands.
   if (part.server_cpu_pct) total.server_cpu_pct = std::max(total.server_cpu_pct.value_or(0.0), *part.server_cpu_pct);
@@ -119,8 +120,9 @@ bool read_fields(const JsonValue& j, LoadSummary& s, std::string& error) {
   }
   if (!read_number("scenes", s.scenes) || !read_number("bandwidth_bps", s.bandwidth_bps)) return missing("scenes or bandwidth_bps");
   if (const JsonValue* cpu = j.find("server_cpu_pct"); cpu && cpu->kind == JsonValue::Kind::number) s.server_cpu_pct = cpu->number;
-  if (const JsonValue* reasons = j.find("codec_rejections"))
-    for (const auto& [name, n] : reasons->fields) s.codec_rejections[name] = n.as_uint().value_or(0);
+  for (const auto& f : kSummedMaps)
+    if (const JsonValue* counts = j.find(std::string(f.name)))
+      for (const auto& [name, n] : counts->fields) (s.*f.member)[name] = n.as_uint().value_or(0);
   return true;
 }
 
