@@ -56,6 +56,7 @@ std::string optional_json(const std::optional<double>& v) { return v ? num(*v) :
 
 void finalize(LoadSummary& s) {
   s.frames_ok_pct = s.frames_expected ? 100.0 * static_cast<double>(std::min(s.frames_ok, s.frames_expected)) / static_cast<double>(s.frames_expected) : 0.0;
+  s.frames_ok_pct_welcomed = s.frames_expected_welcomed ? 100.0 * static_cast<double>(std::min(s.frames_ok, s.frames_expected_welcomed)) / static_cast<double>(s.frames_expected_welcomed) : 0.0;
   const double per_client_s = s.client_seconds > 0 ? 8.0 / 1000.0 / s.client_seconds : 0.0;
   s.kbps_mean = static_cast<double>(s.bytes_received) * per_client_s;
   s.kbps_mean_ip = static_cast<double>(s.bytes_received + kIpUdpHeaderBytes * s.udp_datagrams) * per_client_s;
@@ -68,7 +69,7 @@ void finalize(LoadSummary& s) {
 std::string to_json(const LoadSummary& s) {
   common::JsonWriter w(common::JsonWriter::Style::compact);
   for (const auto& f : kSummedInts) w.integer(f.name, s.*f.member);
-  w.raw("frames_ok_pct", num(s.frames_ok_pct));
+  w.raw("frames_ok_pct", num(s.frames_ok_pct)).raw("frames_ok_pct_welcomed", num(s.frames_ok_pct_welcomed));
   for (const auto& f : kSummedCounts) w.integer(f.name, s.*f.member);
   for (const auto& f : kLargestDoubles) w.raw(f.name, num(s.*f.member));
   for (const auto& f : kSameDoubles) w.raw(f.name, num(s.*f.member));
@@ -108,7 +109,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
                                   std::to_string(s.clients_welcomed) + " ever)");
   row("duration s", num(s.duration_s));
   row("frames expected", std::to_string(s.frames_expected));
-  row("frames ok (on time) %", num(s.frames_ok_pct));
+  row("frames ok (on time) %", num(s.frames_ok_pct) + " (of clients welcomed: " + num(s.frames_ok_pct_welcomed) + ")");
   row("frames late", std::to_string(s.frames_late));
   row("frames lost", std::to_string(s.frames_lost));
   row("frames bad", std::to_string(s.frames_bad));

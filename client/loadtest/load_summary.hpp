@@ -33,7 +33,11 @@ struct LoadSummary : ConnectionFigures {
   // Clients not connected at the end whose last attempt the server refused (an Error before the
   // Welcome), by the Error's reason: what admission control said to the clients beyond capacity.
   std::map<std::string, std::uint64_t> refusals;
+  // Frames owed to the clients that got a Welcome: beyond capacity, the refused clients' frames
+  // are all lost, and the admitted clients' service is judged over these alone.
+  std::uint64_t frames_expected_welcomed = 0;
   double frames_ok_pct = 0.0;    // verified and on time, over frames expected
+  double frames_ok_pct_welcomed = 0.0;  // verified and on time, over frames_expected_welcomed
   double max_err_m = 0.0;
   double error_bound_m = 0.0;
   double kbps_mean = 0.0;        // received kbit/s per client, envelopes included

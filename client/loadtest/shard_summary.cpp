@@ -27,6 +27,7 @@ void LoadShard::add_client_figures(LoadSummary& s, double wall) const {
     const ClientTally& t = c.tally ? *c.tally : empty;
     const std::uint64_t expected = t.expected(start_tick, last_tick);
     s.frames_expected += expected;
+    if (c.welcome_tick) s.frames_expected_welcomed += expected;
     s.frames_received += t.received();
     s.frames_ok += t.ok();
     s.frames_late += t.late();

@@ -18,6 +18,7 @@ struct SummaryField {
 // Summed.
 inline constexpr SummaryField<std::uint64_t> kSummedCounts[] = {
     {"frames_expected", &LoadSummary::frames_expected},
+    {"frames_expected_welcomed", &LoadSummary::frames_expected_welcomed},
     {"frames_received", &LoadSummary::frames_received},
     {"frames_ok", &LoadSummary::frames_ok},
     {"frames_late", &LoadSummary::frames_late},
