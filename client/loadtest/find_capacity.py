@@ -9,7 +9,8 @@ beyond capacity. Prints one JSON object per try and a summary last (one line eac
   client/loadtest/find_capacity.py --build build --at 1000      # one try: cost per datagram at 1000
 
 Each try starts the clients at --join-rate per second, then measures --duration seconds. Passing
-a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every frame). Per try:
+a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every frame); with
+--repeat R, the median of R runs must reach the target and none may have a bad frame. Per try:
 server_us_per_datagram is the server's CPU time over the datagrams the clients received (on
 loopback with no --link, what it sent); at twice capacity, admitted_ok_pct is the on-time share
 of the clients that got a Welcome, refusals the reasons the others were given.
@@ -91,6 +92,15 @@ def row_of(s, clients, target):
             "latency_p99_ms": s["latency_p99_ms"], "kbps_mean": s["kbps_mean"], "server_alive": s["alive"]}
 
 
+def median_row(rows, target):
+    """On a noisy machine one try decides nothing: the run with the median on-time share stands,
+    and a bad frame in any run fails N."""
+    row = dict(sorted(rows, key=lambda r: r["frames_ok_pct"])[len(rows) // 2])
+    row["frames_bad"] = sum(r["frames_bad"] for r in rows)
+    row["pass"] = row["server_alive"] and row["frames_bad"] == 0 and row["frames_ok_pct"] >= target
+    return row
+
+
 def search(args, attempt):
     """Doubling, then bisection: (largest passing N, first failing N)."""
     lo, hi = 0, None
@@ -129,6 +139,7 @@ def parse_args():
     ap.add_argument("--server-cpus", default="0", help="taskset -c list for the server ('' = not pinned)")
     ap.add_argument("--loadtest-cpus", default="1", help="taskset -c list for the load test ('' = not pinned)")
     ap.add_argument("--threads", type=int, default=0, help="ocean-loadtest --threads (default: one per load-test CPU)")
+    ap.add_argument("--repeat", type=int, default=1, help="runs per N; the median run decides (a noisy machine)")
     ap.add_argument("--no-double", action="store_true", help="skip the try at twice the largest passing N")
     ap.add_argument("--server-arg", action="append", default=[], help="extra ocean-server argument (repeatable)")
     args = ap.parse_args()
@@ -153,8 +164,12 @@ def main():
     tries = []
 
     def attempt(n):
-        row = row_of(run_once(args, n), n, args.target)
-        print(json.dumps(row), flush=True)
+        rows = [row_of(run_once(args, n), n, args.target) for _ in range(args.repeat)]
+        for r in rows:
+            print(json.dumps(r), flush=True)
+        row = median_row(rows, args.target)
+        if args.repeat > 1:
+            print(json.dumps(dict(row, median_of=args.repeat)), flush=True)
         tries.append(row)
         return row
 
