@@ -10,6 +10,7 @@
 #include "json_value.hpp"
 #include "latency_histogram.hpp"
 #include "load_summary.hpp"
+#include "series_board.hpp"
 #include "summary_merge.hpp"
 
 using namespace ocean::loadtest;
@@ -155,4 +156,37 @@ TEST_CASE("json reader: values, big integers exact, errors say where") {
   CHECK_THAT(error, Catch::Contains("at byte"));
   CHECK_FALSE(parse_json("[1] 2", error));
   CHECK_FALSE(parse_json(std::string(100, '['), error));
+}
+
+TEST_CASE("series board: a second's row adds up every thread's share, latency from the merged bins") {
+  SeriesBoard board(2, 30, false);
+  SecondPart a, b;
+  a.second = b.second = 1;
+  a.connected = 10;
+  b.connected = 20;
+  a.bytes = 10000;
+  b.bytes = 20000;
+  a.frames = 100;
+  a.ok = 90;
+  b.frames = 300;
+  b.ok = 300;
+  b.bad = 2;
+  for (int i = 1; i <= 100; ++i) a.latency_s.add(0.001 * i);
+  for (int i = 0; i < 300; ++i) b.latency_s.add(0.2);
+  board.add(a);
+  board.add(b);
+  SecondPart late;  // the run ended before the other thread reached second 2
+  late.second = 2;
+  late.connected = 5;
+  late.frames = late.ok = 10;
+  board.add(late);
+  const std::vector<SeriesRow> rows = board.rows();
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0].clients == 30);
+  CHECK(rows[0].kbps_mean == Approx(30000 * 8.0 / 1000 / 30));
+  CHECK(rows[0].ok_pct == Approx(100.0 * 390 / 400));
+  CHECK(rows[0].bad == 2);
+  CHECK(rows[0].latency_p50_ms == Approx(200.0));  // 300 of the 400 samples are 0.2 s
+  CHECK(rows[1].clients == 5);
+  CHECK(rows[1].ok_pct == 100.0);
 }
