@@ -10,7 +10,8 @@ Services' targetPorts resolve to container ports of the same protocol (TCP and U
 point at declared TCP ports; mounted ConfigMap/Secret keys exist; the container runs locked down;
 the server config (ConfigMap and ocean-server.toml) parses as TOML, uses only options the server
 knows (read from ../server/net/config_options.cpp when present) and listens on the ports the
-Deployment and Dockerfile declare; the systemd unit carries the hardening keys. With
+Deployment and Dockerfile declare; the systemd unit carries the hardening keys; the load-test Job
+runs its processes together, one per node, against a Service of these manifests, printing --json. With
 python3-jsonschema installed it also validates each document against a SUBSET schema
 (checks/schemas.py).
 """
@@ -21,6 +22,7 @@ sys.dont_write_bytecode = True  # importing checks/ must not litter the source t
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from checks.dockerfile import check_dockerfile  # noqa: E402  (beside this script)
 from checks.k8s_documents import by_kind, check_schemas, load_documents  # noqa: E402
+from checks.k8s_jobs import check_jobs  # noqa: E402
 from checks.k8s_workloads import check_kustomization, check_workloads  # noqa: E402
 from checks.report import Report  # noqa: E402
 from checks.self_test import self_test  # noqa: E402
@@ -46,6 +48,7 @@ def check(deploy_dir):
     if not any(configs.values()):
         report.problem("k8s", "no ConfigMap holds an ocean-server .toml config")
     check_workloads(report, documents, configs)
+    check_jobs(report, documents)
     check_kustomization(report, documents, k8s_dir)
     example = deploy_dir / "ocean-server.toml"
     example_config = None

@@ -1,41 +1,45 @@
 #include "client_figures.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <vector>
 
 namespace ocean::loadtest {
-namespace {
 
-// Nearest rank, as LatencyHistogram: the value at or below which half of them lie.
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const auto rank = static_cast<std::size_t>(std::ceil(0.5 * static_cast<double>(values.size())));
-  return values[std::max<std::size_t>(rank, 1) - 1];
+void ConnectionParts::add(const ClientConnectionFacts& c) {
+  if (c.ttff_s) ttff_s.add(*c.ttff_s);
+  else ++clients_without_frame;
+  if (c.peak_kbps) peak_kbps.add(*c.peak_kbps);
+  if (c.calm_kbps) calm_kbps.add(*c.calm_kbps);
+  startup_peak_kbps = std::max(startup_peak_kbps, c.startup_peak_kbps);
 }
 
-}  // namespace
+void ConnectionParts::merge(const ConnectionParts& o) {
+  ttff_s.merge(o.ttff_s);
+  peak_kbps.merge(o.peak_kbps);
+  calm_kbps.merge(o.calm_kbps);
+  startup_peak_kbps = std::max(startup_peak_kbps, o.startup_peak_kbps);
+  clients_without_frame += o.clients_without_frame;
+}
+
+ConnectionFigures ConnectionParts::figures() const {
+  ConnectionFigures f;
+  f.clients_without_frame = clients_without_frame;
+  f.kbps_peak_1s_startup = startup_peak_kbps;
+  if (ttff_s.count()) {
+    f.ttff_max_s = ttff_s.max();
+    f.ttff_p50_s = ttff_s.percentile(50);
+  }
+  if (peak_kbps.count()) {
+    f.kbps_peak_1s = peak_kbps.max();
+    f.kbps_peak_1s_p50 = peak_kbps.percentile(50);
+  }
+  if (calm_kbps.count()) f.kbps_calm = calm_kbps.percentile(50);
+  return f;
+}
 
 ConnectionFigures connection_figures(std::span<const ClientConnectionFacts> clients) {
-  ConnectionFigures f;
-  std::vector<double> ttff, peaks, calm;
-  for (const ClientConnectionFacts& c : clients) {
-    if (c.ttff_s) ttff.push_back(*c.ttff_s);
-    else ++f.clients_without_frame;
-    if (c.peak_kbps) peaks.push_back(*c.peak_kbps);
-    if (c.calm_kbps) calm.push_back(*c.calm_kbps);
-    f.kbps_peak_1s_startup = std::max(f.kbps_peak_1s_startup, c.startup_peak_kbps);
-  }
-  if (!ttff.empty()) {
-    f.ttff_max_s = *std::max_element(ttff.begin(), ttff.end());
-    f.ttff_p50_s = median(ttff);
-  }
-  if (!peaks.empty()) {
-    f.kbps_peak_1s = *std::max_element(peaks.begin(), peaks.end());
-    f.kbps_peak_1s_p50 = median(peaks);
-  }
-  if (!calm.empty()) f.kbps_calm = median(calm);
-  return f;
+  ConnectionParts parts;
+  for (const ClientConnectionFacts& c : clients) parts.add(c);
+  return parts.figures();
 }
 
 }  // namespace ocean::loadtest

@@ -1,9 +1,13 @@
 // ConnectionFigures: how soon the clients of a run had a picture, and how bursty their downlink
-// was, from per-client facts. Pure, so the load test and its unit tests agree on the arithmetic.
+// was, from per-client facts. The facts go into ConnectionParts (histograms and extremes), which
+// merge across threads and processes; the figures are read from the parts, so one run and a
+// merge of several agree on the arithmetic. Pure.
 #pragma once
 
 #include <optional>
 #include <span>
+
+#include "sparse_histogram.hpp"
 
 namespace ocean::loadtest {
 
@@ -24,6 +28,21 @@ struct ConnectionFigures {
   double kbps_peak_1s = 0.0, kbps_peak_1s_p50 = 0.0, kbps_peak_1s_startup = 0.0;
   // The median client's median 100 ms rate from its first frame on: the stream between bursts.
   double kbps_calm = 0.0;
+};
+
+// Medians over clients come from these histograms: 1 ms bins for the first frame, 0.01 kbit/s for
+// rates, finer than any figure is read to.
+struct ConnectionParts {
+  static constexpr double kTtffBinS = 1e-3;
+  static constexpr double kKbpsBin = 0.01;
+  SparseHistogram ttff_s{kTtffBinS}, peak_kbps{kKbpsBin}, calm_kbps{kKbpsBin};
+  double startup_peak_kbps = 0.0;
+  int clients_without_frame = 0;
+
+  void add(const ClientConnectionFacts& client);
+  void merge(const ConnectionParts& other);
+  ConnectionFigures figures() const;
+  bool operator==(const ConnectionParts&) const = default;
 };
 
 ConnectionFigures connection_figures(std::span<const ClientConnectionFacts> clients);

@@ -1,18 +1,26 @@
 #!/usr/bin/python3
 """Finds the largest number of clients one ocean-server holds with >= --target % of frames on
-time and none wrong, on this machine: a fresh server per try, N doubled from --start until a try
-fails, then bisected to --resolution. Prints one JSON object per try and a summary last.
+time and none wrong, with the server and the load test pinned to different cores (taskset), so
+that neither measures the other: a fresh server per try, N doubled from --start until a try
+fails, then bisected to --resolution; then one try at twice the largest N shows what happens
+beyond capacity. Prints one JSON object per try and a summary last (one line each).
 
-  client/loadtest/find_capacity.py --build build --profile mobile --start 250 --max 8000
+  client/loadtest/find_capacity.py --build build --profile mobile --server-cpus 0 --loadtest-cpus 1
+  client/loadtest/find_capacity.py --build build --at 1000      # one try: cost per datagram at 1000
 
 Each try starts the clients at --join-rate per second, then measures --duration seconds. Passing
-a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every frame).
+a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every frame); with
+--repeat R, the median of R runs must reach the target and none may have a bad frame. Per try:
+server_us_per_datagram is the server's CPU time over the datagrams the clients received (on
+loopback with no --link, what it sent); at twice capacity, admitted_ok_pct is the on-time share
+of the clients that got a Welcome, refusals the reasons the others were given.
 
 --scenario NAME runs an ocean-loadtest scenario instead of --profile/--transport/--link, with the
 server started as the scenario needs (tick rate, epoch, weather schedule: local_server.py)."""
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -20,32 +28,45 @@ import tempfile
 import local_server
 
 
+def pinned(cpus, argv):
+    return ["taskset", "-c", cpus] + argv if cpus else argv
+
+
 def run_once(args, clients):
     with tempfile.TemporaryDirectory() as workdir:
         return run_in(args, clients, workdir)
+
+
+def stream_args(args, ramp, workdir):
+    """(server flags, load-test flags) for the stream under test."""
+    if not args.scenario:
+        return (["--profiles", args.profile],
+                ["--profile", args.profile, "--transport", args.transport] + (["--link", args.link] if args.link else []))
+    entry = local_server.scenario(os.path.join(args.build, "client/loadtest/ocean-loadtest"), args.scenario)
+    server_args = local_server.scenario_server_args(entry, workdir, first_change_s=ramp + 2.0,
+                                                    horizon_s=ramp + args.duration + 60)
+    if "--profiles" not in server_args:
+        server_args += ["--profiles", entry["profile"]]
+    return server_args, ["--scenario", args.scenario]
 
 
 def run_in(args, clients, workdir):
     loadtest = os.path.join(args.build, "client/loadtest/ocean-loadtest")
     ramp = max(0.5, clients / args.join_rate)
     port = local_server.free_port()
-    if args.scenario:
-        entry = local_server.scenario(loadtest, args.scenario)
-        server_args = local_server.scenario_server_args(entry, workdir, first_change_s=ramp + 2.0,
-                                                        horizon_s=ramp + args.duration + 60)
-        if "--profiles" not in server_args:
-            server_args += ["--profiles", entry["profile"]]
-        loadtest_args = ["--scenario", args.scenario]
-    else:
-        server_args = ["--profiles", args.profile]
-        loadtest_args = ["--profile", args.profile, "--transport", args.transport] + (["--link", args.link] if args.link else [])
-    server = local_server.start(
-        os.path.join(args.build, "server/ocean-server"),
-        ["--listen", f"127.0.0.1:{port}", "--metrics-listen", "off", "--max-clients", str(clients + 16),
-         "--log-level", "warn"] + server_args + args.server_arg, port)
+    server_args, loadtest_args = stream_args(args, ramp, workdir)
+    # --max-clients above N: the limit under test is what the server can serve, not a setting
+    # (admission control, where the server has it, decides by itself).
+    # taskset execs the server, so the pid the load test reads /proc for is the server's.
+    argv = pinned(args.server_cpus, [os.path.join(args.build, "server/ocean-server"), "--listen", f"127.0.0.1:{port}",
+                                     "--metrics-listen", "off", "--max-clients", str(clients + 16), "--log-level",
+                                     "warn"] + server_args + args.server_arg)
+    server = local_server.start(argv[0], argv[1:], port)
     try:
-        cmd = [loadtest, "--server", f"127.0.0.1:{port}", "--clients", str(clients), "--ramp", f"{ramp:g}",
-               "--duration", str(args.duration), "--json", "--quiet", "--server-pid", str(server.pid)] + loadtest_args
+        cmd = pinned(args.loadtest_cpus, [loadtest, "--server", f"127.0.0.1:{port}", "--clients", str(clients),
+                                          "--ramp", f"{ramp:g}", "--duration", str(args.duration), "--threads",
+                                          str(args.threads), "--json", "--quiet", "--server-pid", str(server.pid)]
+                     + loadtest_args)
         run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                              timeout=ramp + args.duration + 120)
         if run.returncode != 0:
@@ -57,39 +78,35 @@ def run_in(args, clients, workdir):
         local_server.stop(server)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--build", default="build", help="build tree holding server/ and client/loadtest/")
-    ap.add_argument("--profile", default="mobile")
-    ap.add_argument("--transport", default="udp")
-    ap.add_argument("--link", default="", help="ocean-loadtest --link, e.g. rate=256kbit,delay=80ms,loss=5%%")
-    ap.add_argument("--scenario", default="", help="an ocean-loadtest scenario (replaces --profile/--transport/--link)")
-    ap.add_argument("--start", type=int, default=250)
-    ap.add_argument("--max", type=int, default=8000)
-    ap.add_argument("--target", type=float, default=99.0, help="frames_ok_pct a try must reach")
-    ap.add_argument("--duration", type=float, default=20.0, help="measured seconds after the ramp")
-    ap.add_argument("--join-rate", type=float, default=100.0, help="clients started per second")
-    ap.add_argument("--resolution", type=float, default=0.1, help="stop bisecting when hi/lo - 1 is below this")
-    ap.add_argument("--server-arg", action="append", default=[], help="extra ocean-server argument (repeatable)")
-    args = ap.parse_args()
+def row_of(s, clients, target):
+    datagrams = s["parts"]["udp_datagrams"]
+    server_cpu_s = (s.get("server_cpu_pct") or 0.0) / 100.0 * s["duration_s"]
+    ok = s["alive"] and s["frames_bad"] == 0 and s["frames_ok_pct"] >= target
+    return {"clients": clients, "pass": ok, "frames_ok_pct": s["frames_ok_pct"],
+            "admitted_ok_pct": s["frames_ok_pct_welcomed"], "frames_bad": s["frames_bad"],
+            "clients_welcomed": s["clients_welcomed"], "clients_connected": s["clients_connected"],
+            "refusals": s["refusals"], "transport_fallbacks": s["transport_fallbacks"], "keyframes": s["keyframes"],
+            "server_cpu_pct": s.get("server_cpu_pct"), "loadtest_cpu_pct": s["loadtest_cpu_pct"],
+            "server_us_per_datagram": round(server_cpu_s / datagrams * 1e6, 2) if datagrams else None,
+            "datagrams_per_s": round(datagrams / s["duration_s"]) if s["duration_s"] else 0,
+            "latency_p99_ms": s["latency_p99_ms"], "kbps_mean": s["kbps_mean"], "server_alive": s["alive"]}
 
-    tries = []
 
-    def attempt(n):
-        s = run_once(args, n)
-        ok = s["alive"] and s["frames_bad"] == 0 and s["frames_ok_pct"] >= args.target
-        row = {"clients": n, "pass": ok, "frames_ok_pct": s["frames_ok_pct"], "frames_bad": s["frames_bad"],
-               "server_cpu_pct": s.get("server_cpu_pct"), "loadtest_cpu_pct": s["loadtest_cpu_pct"],
-               "latency_p99_ms": s["latency_p99_ms"], "kbps_mean": s["kbps_mean"], "keyframes": s["keyframes"],
-               "clients_connected": s["clients_connected"]}
-        print(json.dumps(row), flush=True)
-        tries.append(row)
-        return ok
+def median_row(rows, target):
+    """On a noisy machine one try decides nothing: the run with the median on-time share stands,
+    and a bad frame in any run fails N."""
+    row = dict(sorted(rows, key=lambda r: r["frames_ok_pct"])[len(rows) // 2])
+    row["frames_bad"] = sum(r["frames_bad"] for r in rows)
+    row["pass"] = row["server_alive"] and row["frames_bad"] == 0 and row["frames_ok_pct"] >= target
+    return row
 
+
+def search(args, attempt):
+    """Doubling, then bisection: (largest passing N, first failing N)."""
     lo, hi = 0, None
     n = args.start
     while n <= args.max:
-        if attempt(n):
+        if attempt(n)["pass"]:
             lo = n
             n *= 2
         else:
@@ -98,15 +115,76 @@ def main():
     if hi is not None and lo > 0:
         while hi / lo - 1 > args.resolution:
             mid = (lo + hi) // 2
-            if attempt(mid):
+            if attempt(mid)["pass"]:
                 lo = mid
             else:
                 hi = mid
+    return lo, hi
+
+
+def parse_args():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default="build", help="build tree holding server/ and client/loadtest/")
+    ap.add_argument("--profile", default="mobile")
+    ap.add_argument("--transport", default="udp")
+    ap.add_argument("--link", default="", help="ocean-loadtest --link, e.g. rate=256kbit,delay=80ms,loss=5%%")
+    ap.add_argument("--scenario", default="", help="an ocean-loadtest scenario (replaces --profile/--transport/--link)")
+    ap.add_argument("--start", type=int, default=250)
+    ap.add_argument("--max", type=int, default=8000)
+    ap.add_argument("--at", type=int, default=0, help="run one try at this N instead of searching")
+    ap.add_argument("--target", type=float, default=99.0, help="frames_ok_pct a try must reach")
+    ap.add_argument("--duration", type=float, default=20.0, help="measured seconds after the ramp")
+    ap.add_argument("--join-rate", type=float, default=100.0, help="clients started per second")
+    ap.add_argument("--resolution", type=float, default=0.1, help="stop bisecting when hi/lo - 1 is below this")
+    ap.add_argument("--server-cpus", default="0", help="taskset -c list for the server ('' = not pinned)")
+    ap.add_argument("--loadtest-cpus", default="1", help="taskset -c list for the load test ('' = not pinned)")
+    ap.add_argument("--threads", type=int, default=0, help="ocean-loadtest --threads (default: one per load-test CPU)")
+    ap.add_argument("--repeat", type=int, default=1, help="runs per N; the median run decides (a noisy machine)")
+    ap.add_argument("--no-double", action="store_true", help="skip the try at twice the largest passing N")
+    ap.add_argument("--server-arg", action="append", default=[], help="extra ocean-server argument (repeatable)")
+    args = ap.parse_args()
+    if (args.server_cpus or args.loadtest_cpus) and not shutil.which("taskset"):
+        ap.error("taskset (util-linux) is needed to pin the server and the load test; or pass --server-cpus '' --loadtest-cpus ''")
+    if args.threads <= 0:
+        args.threads = max(1, len(cpu_list(args.loadtest_cpus))) if args.loadtest_cpus else 1
+    return args
+
+
+def cpu_list(text):
+    """taskset's list syntax: 1,3-5 -> [1, 3, 4, 5]."""
+    cpus = []
+    for part in filter(None, text.split(",")):
+        first, _, last = part.partition("-")
+        cpus += list(range(int(first), int(last or first) + 1))
+    return cpus
+
+
+def main():
+    args = parse_args()
+    tries = []
+
+    def attempt(n):
+        rows = [row_of(run_once(args, n), n, args.target) for _ in range(args.repeat)]
+        for r in rows:
+            print(json.dumps(r), flush=True)
+        row = median_row(rows, args.target)
+        if args.repeat > 1:
+            print(json.dumps(dict(row, median_of=args.repeat)), flush=True)
+        tries.append(row)
+        return row
+
+    if args.at:
+        return 0 if attempt(args.at)["pass"] else 1
+    lo, hi = search(args, attempt)
     best = next((t for t in tries if t["clients"] == lo), None)
+    double = attempt(2 * lo) if lo > 0 and not args.no_double else None
     print(json.dumps({"largest_passing_clients": lo, "first_failing_clients": hi, "target_pct": args.target,
                       "scenario": args.scenario, "profile": args.profile, "transport": args.transport, "link": args.link,
-                      "duration_s": args.duration, "server_cpu_pct_at_largest": best and best["server_cpu_pct"],
-                      "tries": len(tries)}))
+                      "duration_s": args.duration, "server_cpus": args.server_cpus, "loadtest_cpus": args.loadtest_cpus,
+                      "loadtest_threads": args.threads,
+                      "server_cpu_pct_at_largest": best and best["server_cpu_pct"],
+                      "server_us_per_datagram_at_largest": best and best["server_us_per_datagram"],
+                      "at_double": double, "tries": len(tries)}))
     return 0 if lo > 0 else 1
 
 

@@ -42,15 +42,16 @@ double GroundTruth::time_of(Tick tick) const {
   return static_cast<double>(seconds) + static_cast<double>(tick - seconds * rate_hz_) / rate_hz_;
 }
 
-const sim::Frame& GroundTruth::at(Tick tick, int grid) {
+std::shared_ptr<const sim::Frame> GroundTruth::at(Tick tick, int grid) {
   const std::uint64_t key = std::uint64_t{tick} << 16 | static_cast<std::uint16_t>(grid);
   if (auto it = cache_.find(key); it != cache_.end()) return it->second;
   SceneEntry* scene = scene_for(tick);
   if (!scene) throw std::logic_error("GroundTruth::at: no scene yet (call set_scene with the Welcome's scene first)");
   while (cache_.size() >= cache_frames_) cache_.erase(cache_.begin());
-  sim::Frame& frame = cache_[key];
-  scene->ocean->evaluate_band(time_of(tick), grid, grid, frame, sim::FrameRequest{true, false});
+  auto frame = std::make_shared<sim::Frame>();
+  scene->ocean->evaluate_band(time_of(tick), grid, grid, *frame, sim::FrameRequest{true, false});
   ++evaluations_;
+  cache_[key] = frame;
   return frame;
 }
 

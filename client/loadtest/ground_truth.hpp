@@ -24,8 +24,9 @@ class GroundTruth {
   // every client may report the Welcome and SceneUpdates it sees.
   void set_scene(Tick effective_tick, const protocol::SceneParams& scene);
 
-  // The grid x grid band (heights and slopes) at tick; valid until the next call.
-  const sim::Frame& at(Tick tick, int grid);
+  // The grid x grid band (heights and slopes) at tick. Shared, so that a caller may compare a frame
+  // with it after handing the truth to another thread (load_run.cpp locks around at() only).
+  std::shared_ptr<const sim::Frame> at(Tick tick, int grid);
 
   // Server time of a tick as the server computes it (whole seconds and the fraction apart).
   double time_of(Tick tick) const;
@@ -43,7 +44,7 @@ class GroundTruth {
   int rate_hz_;
   std::size_t cache_frames_;
   std::vector<SceneEntry> scenes_;  // sorted by effective_tick
-  std::map<std::uint64_t, sim::Frame> cache_;  // key: tick << 16 | grid, so begin() is the oldest
+  std::map<std::uint64_t, std::shared_ptr<const sim::Frame>> cache_;  // key: tick << 16 | grid, so begin() is the oldest
   std::uint64_t evaluations_ = 0;
 };
 

@@ -25,6 +25,13 @@ void LatencyHistogram::clear() {
   max_s_ = 0.0;
 }
 
+SparseHistogram LatencyHistogram::sparse() const {
+  SparseHistogram out(kBinS);
+  for (std::size_t i = 0; i < kBins; ++i) out.add_bin(i, bins_[i]);
+  out.note_max(max_s_);
+  return out;
+}
+
 double LatencyHistogram::percentile(double p) const {
   if (count_ == 0) return 0.0;
   const double clamped = std::clamp(p, 0.0, 100.0);

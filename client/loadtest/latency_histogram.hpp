@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "sparse_histogram.hpp"
+
 namespace ocean::loadtest {
 
 class LatencyHistogram {
@@ -22,6 +24,8 @@ class LatencyHistogram {
   // Nearest-rank percentile (p in [0, 100]) in seconds, the upper edge of its bin; 0 when empty.
   double percentile(double p) const;
   double max_s() const { return max_s_; }
+  // The same counts in a form that travels in a summary and merges (bins of kBinS seconds).
+  SparseHistogram sparse() const;
 
  private:
   std::vector<std::uint64_t> bins_;

@@ -1,20 +1,16 @@
 #include "load_summary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+
+#include "common/json_writer.hpp"
+#include "summary_fields.hpp"
 
 namespace ocean::loadtest {
 namespace {
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    out += c;
-  }
-  return out + "\"";
-}
+constexpr int kIpUdpHeaderBytes = 28;  // IPv4 20 + UDP 8, per datagram
 
 std::string num(double v) {
   if (!std::isfinite(v)) return "null";
@@ -23,73 +19,79 @@ std::string num(double v) {
   return buf;
 }
 
+// {"bin":W,"max":M,"bins":[[index,count],...]}: the max with 17 digits, so that a percentile read
+// back (capped at the max) is the one written.
+std::string histogram_json(const SparseHistogram& h) {
+  std::string bins = "[";
+  for (const auto& [bin, n] : h.bins()) {
+    if (bins.size() > 1) bins += ',';
+    bins += '[';
+    bins += std::to_string(bin);
+    bins += ',';
+    bins += std::to_string(n);
+    bins += ']';
+  }
+  common::JsonWriter w(common::JsonWriter::Style::compact);
+  w.number("bin", h.bin_width(), 17).number("max", h.max(), 17).raw("bins", bins + "]");
+  return w.str();
+}
+
+std::string parts_json(const LoadSummary& s) {
+  common::JsonWriter w(common::JsonWriter::Style::compact);
+  w.raw("latency_s", histogram_json(s.latency_s))
+      .raw("ttff_s", histogram_json(s.connection.ttff_s))
+      .raw("peak_kbps", histogram_json(s.connection.peak_kbps))
+      .raw("calm_kbps", histogram_json(s.connection.calm_kbps))
+      .number("startup_peak_kbps", s.connection.startup_peak_kbps, 17)
+      .integer("clients_without_frame", s.connection.clients_without_frame)
+      .integer("bytes_received", s.bytes_received)
+      .integer("udp_datagrams", s.udp_datagrams)
+      .number("client_seconds", s.client_seconds, 17);
+  return w.str();
+}
+
+std::string optional_json(const std::optional<double>& v) { return v ? num(*v) : "null"; }
+
 }  // namespace
 
+void finalize(LoadSummary& s) {
+  s.frames_ok_pct = s.frames_expected ? 100.0 * static_cast<double>(std::min(s.frames_ok, s.frames_expected)) / static_cast<double>(s.frames_expected) : 0.0;
+  s.frames_ok_pct_welcomed = s.frames_expected_welcomed ? 100.0 * static_cast<double>(std::min(s.frames_ok, s.frames_expected_welcomed)) / static_cast<double>(s.frames_expected_welcomed) : 0.0;
+  const double per_client_s = s.client_seconds > 0 ? 8.0 / 1000.0 / s.client_seconds : 0.0;
+  s.kbps_mean = static_cast<double>(s.bytes_received) * per_client_s;
+  s.kbps_mean_ip = static_cast<double>(s.bytes_received + kIpUdpHeaderBytes * s.udp_datagrams) * per_client_s;
+  s.latency_p50_ms = s.latency_s.percentile(50) * 1e3;
+  s.latency_p99_ms = s.latency_s.percentile(99) * 1e3;
+  s.latency_max_ms = s.latency_s.max() * 1e3;
+  static_cast<ConnectionFigures&>(s) = s.connection.figures();
+}
+
 std::string to_json(const LoadSummary& s) {
-  std::string j = "{";
-  auto field = [&](const char* name, const std::string& value) {
-    if (j.size() > 1) j += ",";
-    j += "\"";
-    j += name;
-    j += "\":" + value;
-  };
-  auto u = [](std::uint64_t v) { return std::to_string(v); };
-  field("clients", std::to_string(s.clients));
-  field("clients_connected", std::to_string(s.clients_connected));
-  field("clients_welcomed", std::to_string(s.clients_welcomed));
-  field("frames_ok_pct", num(s.frames_ok_pct));
-  field("frames_bad", u(s.frames_bad));
-  field("max_err_m", num(s.max_err_m));
-  field("error_bound_m", num(s.error_bound_m));
-  field("kbps_mean", num(s.kbps_mean));
-  field("kbps_mean_ip", num(s.kbps_mean_ip));
-  field("kbps_peak_1s", num(s.kbps_peak_1s));
-  field("kbps_peak_1s_p50", num(s.kbps_peak_1s_p50));
-  field("kbps_peak_1s_startup", num(s.kbps_peak_1s_startup));
-  field("kbps_calm", num(s.kbps_calm));
-  field("ttff_max_s", s.ttff_max_s ? num(*s.ttff_max_s) : "null");
-  field("ttff_p50_s", s.ttff_p50_s ? num(*s.ttff_p50_s) : "null");
-  field("clients_without_frame", std::to_string(s.clients_without_frame));
-  field("latency_p50_ms", num(s.latency_p50_ms));
-  field("latency_p99_ms", num(s.latency_p99_ms));
-  field("latency_max_ms", num(s.latency_max_ms));
-  if (s.server_cpu_pct) field("server_cpu_pct", num(*s.server_cpu_pct));
-  field("loadtest_cpu_pct", num(s.loadtest_cpu_pct));
-  field("frames_expected", u(s.frames_expected));
-  field("frames_received", u(s.frames_received));
-  field("frames_ok", u(s.frames_ok));
-  field("frames_late", u(s.frames_late));
-  field("frames_lost", u(s.frames_lost));
-  field("stalls", u(s.stalls));
-  field("keyframes", u(s.keyframes));
-  field("reconnects", u(s.reconnects));
-  field("truth_evaluations", u(s.truth_evaluations));
-  field("scenes", std::to_string(s.scenes));
-  field("decodes_run", u(s.decodes_run));
-  field("decodes_shared", u(s.decodes_shared));
-  field("truth_checks", u(s.truth_checks));
-  field("keyframe_requests", u(s.keyframe_requests));
-  field("chunks_rejected_by_codec", u(s.chunks_rejected_by_codec));
-  std::string reasons = "{";
-  for (const auto& [name, n] : s.codec_rejections) {
-    if (reasons.size() > 1) reasons += ',';
-    reasons += json_string(name);
-    reasons += ':';
-    reasons += u(n);
+  common::JsonWriter w(common::JsonWriter::Style::compact);
+  for (const auto& f : kSummedInts) w.integer(f.name, s.*f.member);
+  w.raw("frames_ok_pct", num(s.frames_ok_pct)).raw("frames_ok_pct_welcomed", num(s.frames_ok_pct_welcomed));
+  for (const auto& f : kSummedCounts) w.integer(f.name, s.*f.member);
+  for (const auto& f : kLargestDoubles) w.raw(f.name, num(s.*f.member));
+  for (const auto& f : kSameDoubles) w.raw(f.name, num(s.*f.member));
+  w.raw("kbps_mean", num(s.kbps_mean)).raw("kbps_mean_ip", num(s.kbps_mean_ip));
+  w.raw("kbps_peak_1s", num(s.kbps_peak_1s)).raw("kbps_peak_1s_p50", num(s.kbps_peak_1s_p50));
+  w.raw("kbps_peak_1s_startup", num(s.kbps_peak_1s_startup)).raw("kbps_calm", num(s.kbps_calm));
+  w.raw("ttff_max_s", optional_json(s.ttff_max_s)).raw("ttff_p50_s", optional_json(s.ttff_p50_s));
+  w.integer("clients_without_frame", s.clients_without_frame);
+  w.raw("latency_p50_ms", num(s.latency_p50_ms)).raw("latency_p99_ms", num(s.latency_p99_ms));
+  w.raw("latency_max_ms", num(s.latency_max_ms));
+  if (s.server_cpu_pct) w.raw("server_cpu_pct", num(*s.server_cpu_pct));
+  for (const auto& f : kSummedDoubles) w.raw(f.name, num(s.*f.member));
+  w.integer("scenes", s.scenes);
+  for (const auto& f : kSummedMaps) {
+    common::JsonWriter counts(common::JsonWriter::Style::compact);
+    for (const auto& [name, n] : s.*f.member) counts.integer(name, n);
+    w.raw(f.name, counts.str());
   }
-  field("codec_rejections", reasons + "}");
-  field("messages_rejected", u(s.messages_rejected));
-  field("transport_fallbacks", u(s.transport_fallbacks));
-  field("frames_recovered", u(s.frames_recovered));
-  field("interpolation_delay_ms", num(s.interpolation_delay_ms));
-  field("interpolation_delay_max_ms", num(s.interpolation_delay_max_ms));
-  field("duration_s", num(s.duration_s));
-  field("profile", json_string(s.profile));
-  field("transport", json_string(s.transport));
-  field("link", json_string(s.link));
-  field("scenario", json_string(s.scenario));
-  field("bandwidth_bps", u(s.bandwidth_bps));
-  return j + "}";
+  for (const auto& f : kSameTexts) w.text(f.name, s.*f.member);
+  w.integer("bandwidth_bps", s.bandwidth_bps);
+  w.raw("parts", parts_json(s));
+  return w.str();
 }
 
 void print_table(std::ostream& out, const LoadSummary& s) {
@@ -107,7 +109,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
                                   std::to_string(s.clients_welcomed) + " ever)");
   row("duration s", num(s.duration_s));
   row("frames expected", std::to_string(s.frames_expected));
-  row("frames ok (on time) %", num(s.frames_ok_pct));
+  row("frames ok (on time) %", num(s.frames_ok_pct) + " (of clients welcomed: " + num(s.frames_ok_pct_welcomed) + ")");
   row("frames late", std::to_string(s.frames_late));
   row("frames lost", std::to_string(s.frames_lost));
   row("frames bad", std::to_string(s.frames_bad));
@@ -123,6 +125,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
     label += name;
     row(label.c_str(), std::to_string(n));
   }
+  for (const auto& [reason, n] : s.refusals) row(("refused: " + reason).c_str(), std::to_string(n));
   row("messages rejected", std::to_string(s.messages_rejected));
   row("fallbacks to tcp", std::to_string(s.transport_fallbacks));
   row("frames recovered", std::to_string(s.frames_recovered));
@@ -138,7 +141,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
   row("interpolation delay ms", num(s.interpolation_delay_ms));
   row("interpolation delay max ms", num(s.interpolation_delay_max_ms));
   row("server cpu %", s.server_cpu_pct ? num(*s.server_cpu_pct) : "(unknown: pass --server-pid)");
-  row("loadtest cpu %", num(s.loadtest_cpu_pct));
+  row("loadtest cpu %", num(s.loadtest_cpu_pct) + " (" + std::to_string(s.threads) + " threads, " + std::to_string(s.processes) + " process" + (s.processes == 1 ? ")" : "es)"));
 }
 
 }  // namespace ocean::loadtest

@@ -1,4 +1,6 @@
-// LoadSummary: the figures of one load-test run, printed as a human table or one JSON object.
+// LoadSummary: the figures of one load-test run, printed as a human table or one JSON object. The
+// JSON carries the parts (histograms, byte counts) the figures are computed from, so summaries of
+// several threads or processes merge into one (summary_merge.hpp) with exact percentiles.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +10,7 @@
 #include <string>
 
 #include "client_figures.hpp"
+#include "sparse_histogram.hpp"
 
 namespace ocean::loadtest {
 
@@ -27,7 +30,14 @@ struct LoadSummary : ConnectionFigures {
   std::uint64_t chunks_rejected_by_codec = 0, messages_rejected = 0, keyframe_requests = 0, transport_fallbacks = 0;
   std::uint64_t frames_recovered = 0;  // completed from a FrameBundle copy after their own datagram was lost
   std::map<std::string, std::uint64_t> codec_rejections;  // by codec::ChunkError name
+  // Clients not connected at the end whose last attempt the server refused (an Error before the
+  // Welcome), by the Error's reason: what admission control said to the clients beyond capacity.
+  std::map<std::string, std::uint64_t> refusals;
+  // Frames owed to the clients that got a Welcome: beyond capacity, the refused clients' frames
+  // are all lost, and the admitted clients' service is judged over these alone.
+  std::uint64_t frames_expected_welcomed = 0;
   double frames_ok_pct = 0.0;    // verified and on time, over frames expected
+  double frames_ok_pct_welcomed = 0.0;  // verified and on time, over frames_expected_welcomed
   double max_err_m = 0.0;
   double error_bound_m = 0.0;
   double kbps_mean = 0.0;        // received kbit/s per client, envelopes included
@@ -40,7 +50,20 @@ struct LoadSummary : ConnectionFigures {
   double duration_s = 0.0;
   std::string profile, transport, link, scenario;
   std::uint64_t bandwidth_bps = 0;  // announced in every client's Hello (0 = unstated)
+  int threads = 1;    // threads the clients ran on, over all processes merged
+  int processes = 1;  // load-test processes merged into this summary
+
+  // What the non-additive figures are computed from (finalize): latencies of every counted frame
+  // (0.1 ms bins), the per-client connection facts, and the traffic behind kbps_mean.
+  SparseHistogram latency_s{1e-4};
+  ConnectionParts connection;
+  std::uint64_t bytes_received = 0, udp_datagrams = 0;
+  double client_seconds = 0.0;  // over clients: the time each was part of the run
 };
+
+// Fills in frames_ok_pct, kbps_mean(_ip), the latency percentiles and the ConnectionFigures from
+// the counts and parts above.
+void finalize(LoadSummary& s);
 
 void print_table(std::ostream& out, const LoadSummary& s);
 std::string to_json(const LoadSummary& s);  // one line, no trailing newline

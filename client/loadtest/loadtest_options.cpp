@@ -42,7 +42,11 @@ void add_flags(CLI::App& app, LoadtestOptions& o, Flags& f) {
   app.add_option("--bandwidth", f.bandwidth,
                  "bandwidth each client announces in its Hello: bits/s or a rate such as 32kbit (0 = unstated; "
                  "default: the scenario's, else the link's rate)");
-  app.add_option("--seed", o.seed, "seed of the link randomness");
+  app.add_option("--seed", o.seed, "seed of the link randomness (client i uses seed + i; give each process of a multi-machine run its own)");
+  app.add_option("--threads", o.threads, "threads the clients are spread over, 1..256 (each its own event loop; pin with taskset, see SCENARIOS.md)");
+  app.add_option("--merge", o.merge_paths,
+                 "combine the --json summaries in these files (one per load-test process) into one summary and exit; "
+                 "percentiles come from the merged histograms");
   app.add_option("--server-pid", o.server_pid, "pid of a local server, for server_cpu_pct from /proc");
   app.add_flag("--json", o.json, "print one JSON summary object as the last stdout line");
   app.add_flag("--quiet", f.quiet, "no progress line on stderr");
@@ -63,6 +67,8 @@ std::string check_run(const CLI::App& app, LoadtestOptions& o, Flags& f) {
   if (!client::parse_server_list(f.server, o.servers, error)) return error;
   o.host = o.servers.front().host;
   o.port = o.servers.front().port;
+  if (o.threads < 1 || o.threads > 256)
+    return "--threads: " + std::to_string(o.threads) + " is out of range; allowed 1..256";
   if (o.clients < 1 || o.clients > 100000)
     return "--clients: " + std::to_string(o.clients) + " is out of range; allowed 1..100000";
   if (!(o.ramp_s >= 0.0 && o.ramp_s <= 3600.0))
@@ -107,7 +113,7 @@ std::string check_run(const CLI::App& app, LoadtestOptions& o, Flags& f) {
 OptionsResult parse_options(const std::vector<std::string>& args) {
   OptionsResult result;
   LoadtestOptions& o = result.options;
-  CLI::App app{"ocean-loadtest: N simulated clients on one thread, each behind a simulated link, every frame checked against the sim"};
+  CLI::App app{"ocean-loadtest: N simulated clients on one or more threads, each behind a simulated link, every frame checked against the sim"};
   Flags f;
   f.server = {o.host + ":" + o.port};
   add_flags(app, o, f);
@@ -124,7 +130,7 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
   }
   o.shared_decode = !f.own_decode;
   o.progress = !f.quiet;
-  if (o.list_scenarios) return result;
+  if (o.list_scenarios || !o.merge_paths.empty()) return result;
   result.error = check_run(app, o, f);
   return result;
 }

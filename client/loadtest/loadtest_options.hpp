@@ -31,6 +31,11 @@ struct LoadtestOptions {
   bool json = false;
   bool progress = true;
   bool list_scenarios = false;
+  // Threads the clients are spread over (client i on thread i % threads), each with its own
+  // io_context, so that the load generator is not the bottleneck; clamped to the client count.
+  int threads = 1;
+  // --merge: the JSON summaries to combine instead of running (ocean-loadtest --merge A.json B.json).
+  std::vector<std::string> merge_paths;
   bool shared_decode = true;  // clients of one stream share a DecodeMemo (exact; off = each decodes alone)
   std::string csv_path, plot_path, record_path;
 };

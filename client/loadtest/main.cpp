@@ -1,13 +1,16 @@
 // ocean-loadtest: parses the flags, runs the load, prints the table / JSON and writes the series.
-// Exit status: 0 ran; 1 the run failed (no client ever connected, an output not written); 2 bad flags.
+// Exit status: 0 ran (or merged); 1 the run failed (no client ever connected, an output not
+// written); 2 bad flags, or a --merge input that is not a summary of the same stream.
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "load_run.hpp"
 #include "loadtest_options.hpp"
 #include "scenario_listing.hpp"
+#include "summary_merge.hpp"
 
 int main(int argc, char** argv) {
   using namespace ocean::loadtest;
@@ -21,6 +24,17 @@ int main(int argc, char** argv) {
     return 2;
   }
   const LoadtestOptions& options = parsed.options;
+  if (!options.merge_paths.empty()) {
+    std::string error;
+    const std::optional<LoadSummary> merged = merge_summary_files(options.merge_paths, error);
+    if (!merged) {
+      std::cerr << "ocean-loadtest: --merge: " << error << "\n";
+      return 2;
+    }
+    print_table(options.json ? std::cerr : std::cout, *merged);
+    if (options.json) std::cout << to_json(*merged) << std::endl;
+    return 0;
+  }
   if (options.list_scenarios) {
     if (options.json) std::cout << scenarios_json() << std::endl;
     else print_scenarios(std::cout);

@@ -18,6 +18,13 @@ void SimClient::add_counters_to(LoadSummary& s) const {
       s.codec_rejections[std::string(codec::to_string(static_cast<codec::ChunkError>(r)))] += counts.codec_by_reason[r];
   if (connection && connection->counters().connects > 1) s.reconnects += connection->counters().connects - 1;
   if (welcome_tick) ++s.clients_welcomed;
+  if (connection && !connection->connected()) {
+    // "server refused the Hello: <reason>: <text>" (ClientSession): counted by reason, as the
+    // text may carry numbers (a retry hint) that would make every client its own row.
+    static constexpr std::string_view kRefused = "server refused the Hello: ";
+    const std::string& why = connection->counters().last_close_reason;
+    if (why.starts_with(kRefused)) ++s.refusals[why.substr(kRefused.size(), why.find(':', kRefused.size()) - kRefused.size())];
+  }
 }
 
 ClientConnectionFacts SimClient::connection_facts() const {

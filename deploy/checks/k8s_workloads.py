@@ -17,6 +17,7 @@ def container_port(container, target, protocol):
 
 
 def check_container(report, where, pod, container, configmaps, secrets):
+    """A server container: probes on declared ports and the server's endpoints, and locked down."""
     name = container.get("name")
     for probe_kind in ("livenessProbe", "readinessProbe", "startupProbe"):
         probe = container.get(probe_kind) or {}
@@ -27,6 +28,13 @@ def check_container(report, where, pod, container, configmaps, secrets):
         got = ((container.get(probe_kind) or {}).get("httpGet") or {}).get("path")
         if got != path:
             report.problem(where, f"container {name}: {probe_kind} must GET {path} (ocean-server's endpoint), not {got!r}")
+    check_locked_down(report, where, pod, container, configmaps, secrets)
+
+
+def check_locked_down(report, where, pod, container, configmaps, secrets):
+    """Any container of ours: no privilege, read-only root, no capabilities, non-root, sized, and
+    its mounts resolve."""
+    name = container.get("name")
     security = container.get("securityContext") or {}
     pod_security = pod.get("securityContext") or {}
     if security.get("allowPrivilegeEscalation") is not False:
@@ -62,11 +70,17 @@ def check_container(report, where, pod, container, configmaps, secrets):
                     report.problem(where, f"volume {volume['name']}: key {item.get('key')!r} is not in {source_kind} {source.get(source_key)!r}")
 
 
-def check_workloads(report, documents, configs):
+def mounted_sources(documents):
+    """The keys of every ConfigMap and Secret, by name, for checking what pods mount."""
     configmaps = {d["metadata"]["name"]: set((d.get("data") or {}).keys())
                   for _, d in by_kind(documents, "ConfigMap") if isinstance(d.get("metadata"), dict)}
     secrets = {d["metadata"]["name"]: set((d.get("stringData") or {}).keys()) | set((d.get("data") or {}).keys())
                for _, d in by_kind(documents, "Secret") if isinstance(d.get("metadata"), dict)}
+    return configmaps, secrets
+
+
+def check_workloads(report, documents, configs):
+    configmaps, secrets = mounted_sources(documents)
     deployments = by_kind(documents, "Deployment")
     if not deployments:
         report.problem("k8s", "no Deployment")

@@ -105,6 +105,38 @@ _key_to_path = {
               "properties": {"key": {"type": "string"}, "path": {"type": "string"}}},
 }
 
+_pod_spec = {
+    "type": "object",
+    "required": ["containers"],
+    "properties": {
+        "containers": {"type": "array", "minItems": 1, "items": _container},
+        "restartPolicy": {"enum": ["Always", "OnFailure", "Never"]},
+        "securityContext": {
+            "type": "object",
+            "properties": {
+                "runAsNonRoot": {"type": "boolean"},
+                "runAsUser": {"type": "integer", "minimum": 0},
+                "runAsGroup": {"type": "integer", "minimum": 0},
+                "fsGroup": {"type": "integer", "minimum": 0},
+            },
+        },
+        "volumes": {
+            "type": "array",
+            "items": {
+                "type": "object",
+                "required": ["name"],
+                "properties": {
+                    "name": _name,
+                    "configMap": {"type": "object", "required": ["name"],
+                                  "properties": {"items": _key_to_path}},
+                    "secret": {"type": "object", "required": ["secretName"],
+                               "properties": {"items": _key_to_path}},
+                },
+            },
+        },
+    },
+}
+
 _deployment = {
     "type": "object",
     "required": ["apiVersion", "kind", "metadata", "spec"],
@@ -122,36 +154,37 @@ _deployment = {
                     "required": ["metadata", "spec"],
                     "properties": {
                         "metadata": {"type": "object", "required": ["labels"]},
-                        "spec": {
-                            "type": "object",
-                            "required": ["containers"],
-                            "properties": {
-                                "containers": {"type": "array", "minItems": 1, "items": _container},
-                                "securityContext": {
-                                    "type": "object",
-                                    "properties": {
-                                        "runAsNonRoot": {"type": "boolean"},
-                                        "runAsUser": {"type": "integer", "minimum": 0},
-                                        "runAsGroup": {"type": "integer", "minimum": 0},
-                                        "fsGroup": {"type": "integer", "minimum": 0},
-                                    },
-                                },
-                                "volumes": {
-                                    "type": "array",
-                                    "items": {
-                                        "type": "object",
-                                        "required": ["name"],
-                                        "properties": {
-                                            "name": _name,
-                                            "configMap": {"type": "object", "required": ["name"],
-                                                          "properties": {"items": _key_to_path}},
-                                            "secret": {"type": "object", "required": ["secretName"],
-                                                       "properties": {"items": _key_to_path}},
-                                        },
-                                    },
-                                },
-                            },
-                        },
+                        "spec": _pod_spec,
+                    },
+                },
+            },
+        },
+    },
+}
+
+# A Job's pods end: they may not restart Always.
+_job = {
+    "type": "object",
+    "required": ["apiVersion", "kind", "metadata", "spec"],
+    "properties": {
+        "apiVersion": {"const": "batch/v1"},
+        "metadata": _metadata,
+        "spec": {
+            "type": "object",
+            "required": ["template"],
+            "properties": {
+                "completionMode": {"enum": ["NonIndexed", "Indexed"]},
+                "completions": {"type": "integer", "minimum": 1},
+                "parallelism": {"type": "integer", "minimum": 0},
+                "backoffLimit": {"type": "integer", "minimum": 0},
+                "ttlSecondsAfterFinished": {"type": "integer", "minimum": 0},
+                "activeDeadlineSeconds": {"type": "integer", "minimum": 1},
+                "template": {
+                    "type": "object",
+                    "required": ["spec"],
+                    "properties": {
+                        "spec": {"allOf": [_pod_spec, {"type": "object", "required": ["restartPolicy"],
+                                                       "properties": {"restartPolicy": {"enum": ["OnFailure", "Never"]}}}]},
                     },
                 },
             },
@@ -242,6 +275,7 @@ _kustomization = {
 
 SCHEMAS = {
     "Deployment": _deployment,
+    "Job": _job,
     "Service": _service,
     "ConfigMap": _configmap,
     "Secret": _secret,

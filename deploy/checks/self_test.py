@@ -28,10 +28,17 @@ BREAKAGES = [
     ("ocean-server.service", "RestrictAddressFamilies=AF_INET AF_INET6 AF_UNIX",
      "RestrictAddressFamilies=AF_INET AF_INET6 AF_UNIX AF_NETLINK", "RestrictAddressFamilies"),
     ("Dockerfile", "EXPOSE 7700/tcp 7700/udp 9464/tcp", "EXPOSE 7700/tcp 9464/tcp", "EXPOSE lacks 7700/udp"),
+    ("k8s/loadtest-job.yaml", "completionMode: Indexed", "completionMode: NonIndexed", "completionMode must be Indexed"),
+    ("k8s/loadtest-job.yaml", "parallelism: 20", "parallelism: 5", "parallelism 5 != completions 20"),
+    ("k8s/loadtest-job.yaml", "- ocean-server:7700", "- ocean-server:7701", "--server ocean-server:7701: no Service"),
+    ("k8s/loadtest-job.yaml", "            - --json\n", "", "needs --json"),
+    ("k8s/loadtest-job.yaml", "whenUnsatisfiable: DoNotSchedule", "whenUnsatisfiable: ScheduleAnyway", "share its cores"),
+    ("k8s/loadtest-job.yaml", "readOnlyRootFilesystem: true", "readOnlyRootFilesystem: false", "readOnlyRootFilesystem"),
 ]
 SCHEMA_BREAKAGES = [
     ("k8s/service.yaml", "      port: 9464", '      port: "9464"', "schema: spec.ports.0.port"),
     ("k8s/deployment.yaml", "          readinessProbe:", "          readynessProbe:", "'readynessProbe' is not one of"),
+    ("k8s/loadtest-job.yaml", "restartPolicy: Never", "restartPolicy: Always", "'Always' is not one of"),
 ]
 
 

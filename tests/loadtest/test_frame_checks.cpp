@@ -23,10 +23,10 @@ ocean::protocol::SceneParams small_scene(double wind = 10.0) {
 TEST_CASE("ground truth: one evaluation per (tick, grid), shared by every caller") {
   GroundTruth truth(30);
   truth.set_scene(0, small_scene());
-  const ocean::sim::Frame a = truth.at(900, 32);
+  const ocean::sim::Frame a = *truth.at(900, 32);
   truth.at(900, 32);
   CHECK(truth.evaluations() == 1);
-  const ocean::sim::Frame& b = truth.at(901, 32);
+  const ocean::sim::Frame& b = *truth.at(901, 32);
   CHECK(truth.evaluations() == 2);
   REQUIRE(a.height.size() == 32u * 32u);
   CHECK(a.slope_x.size() == a.height.size());
@@ -37,19 +37,19 @@ TEST_CASE("ground truth: one evaluation per (tick, grid), shared by every caller
 TEST_CASE("ground truth: a scene change applies from its effective tick only") {
   GroundTruth truth(30);
   truth.set_scene(0, small_scene(10.0));
-  const ocean::sim::Frame before = truth.at(100, 32);
-  const ocean::sim::Frame old_after = truth.at(200, 32);
+  const ocean::sim::Frame before = *truth.at(100, 32);
+  const ocean::sim::Frame old_after = *truth.at(200, 32);
   truth.set_scene(150, small_scene(20.0));
   truth.set_scene(0, small_scene(10.0));  // a late Welcome re-announcing the old scene changes nothing
   CHECK(truth.scenes() == 2);
-  CHECK(truth.at(100, 32).height == before.height);
-  CHECK(truth.at(200, 32).height != old_after.height);
+  CHECK(truth.at(100, 32)->height == before.height);
+  CHECK(truth.at(200, 32)->height != old_after.height);
 }
 
 TEST_CASE("frame check: within the bound passes, beyond it is bad") {
   GroundTruth truth(30);
   truth.set_scene(0, small_scene());
-  const ocean::sim::Frame& t = truth.at(30, 32);
+  const ocean::sim::Frame& t = *truth.at(30, 32);
   const ErrorBounds bounds{0.005, 1.0 / 512};
   std::vector<float> h = t.height, sx = t.slope_x, sz = t.slope_z;
   for (float& v : h) v += 0.0049f;
@@ -107,6 +107,16 @@ TEST_CASE("client tally: late, bad, stalls, and expected vs received") {
   CHECK(tally.stalls() == 2);  // only a newer frame after a gap is a stall
   CHECK(tally.record(16 + ClientTally::kWindowTicks + 1, {true, true}, 0.0));
   CHECK_FALSE(tally.record(16, {true, true}, 0.0));  // out of the window: forgotten, not recounted
+
+  // Ticks far apart, and ticks one ring length apart, never stand for each other.
+  const ocean::Tick base = 16 + ClientTally::kWindowTicks + 1;
+  CHECK(tally.record(base + 128, {true, true}, 0.0));
+  CHECK(tally.record(base + 127, {true, true}, 0.0));
+  CHECK_FALSE(tally.record(base + 127, {true, true}, 0.0));
+  CHECK(tally.record(base + 1000, {true, true}, 0.0));
+  CHECK(tally.record(base + 1000 - 128 + 64, {true, true}, 0.0));
+  CHECK(tally.record(base + 1001, {true, true}, 0.0));
+  CHECK_FALSE(tally.record(base + 1000, {true, true}, 0.0));
 
   ClientTally every_other(1.0 / 30, 2);
   CHECK(every_other.expected(7, 15) == 4);  // 8, 10, 12, 14 from the Welcome when no frame came

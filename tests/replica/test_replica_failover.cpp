@@ -64,7 +64,7 @@ TEST_CASE("a viewer whose replica dies continues on another after one keyframe",
   connection = client::ClientConnection::create(
       io, config, [&](const codec::ReconstructedFrame& frame, std::uint32_t tick, double arrival_s) {
         if (!truth) return;  // never: the Welcome comes first
-        const sim::Frame& expected = truth->at(tick, mobile.grid);
+        const sim::Frame& expected = *truth->at(tick, mobile.grid);
         const loadtest::FrameError error = loadtest::frame_error(frame.height, frame.slope_x, frame.slope_z,
                                                                  expected.height, expected.slope_x, expected.slope_z);
         shown.push_back({connection->server_index(), connection->counters().connects, tick,
