@@ -57,11 +57,15 @@ LoadRunResult run_load(const LoadtestOptions& options) {
   result.series = shared.board.rows();
   for (const auto& shard : shards)
     if (result.error.empty()) result.error = shard->record_error();
+  if (!result.error.empty()) result.exit_code = kExitFailure;
   if (total.clients_welcomed == 0) {
     // The figures of a run no client took part in are zeros, not a measurement.
     const std::string why = shards[0]->first_close_reason();
-    result.error = "no client ever connected to " + server_names(options) + " (client 0: " + (why.empty() ? "no answer" : why) + ")" +
+    const bool refused = !total.refusals.empty();
+    result.error = std::string(refused ? "every client was refused by " : "no client ever connected to ") +
+                   server_names(options) + " (client 0: " + (why.empty() ? "no answer" : why) + ")" +
                    (result.error.empty() ? "" : "; " + result.error);
+    result.exit_code = refused ? kExitRefused : kExitUnreachable;
   }
   return result;
 }

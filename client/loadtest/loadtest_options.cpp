@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 
+#include "load_run.hpp"
 #include "profile.hpp"
 #include "scenario.hpp"
 
@@ -48,6 +49,9 @@ void add_flags(CLI::App& app, LoadtestOptions& o, Flags& f) {
                  "combine the --json summaries in these files (one per load-test process) into one summary and exit; "
                  "percentiles come from the merged histograms");
   app.add_option("--server-pid", o.server_pid, "pid of a local server, for server_cpu_pct from /proc");
+  app.add_option("--expect-ok-pct", o.expect_ok_pct,
+                 "fail (exit 5) when fewer frames than this % are verified and on time, or any frame is wrong")
+      ->check(CLI::Range(0.0, 100.0));
   app.add_flag("--json", o.json, "print one JSON summary object as the last stdout line");
   app.add_flag("--quiet", f.quiet, "no progress line on stderr");
   app.add_flag("--list-scenarios", o.list_scenarios,
@@ -117,6 +121,7 @@ OptionsResult parse_options(const std::vector<std::string>& args) {
   Flags f;
   f.server = {o.host + ":" + o.port};
   add_flags(app, o, f);
+  app.footer(kExitTable);
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
   try {
     app.parse(reversed);

@@ -28,6 +28,7 @@ struct LoadtestOptions {
   std::uint64_t bandwidth_bps = 0;
   std::uint64_t seed = 1;    // link randomness; client i uses seed + i
   int server_pid = 0;       // 0 = none
+  double expect_ok_pct = -1.0;  // --expect-ok-pct: below it (or any bad frame) the run fails with kExitChecksFailed
   bool json = false;
   bool progress = true;
   bool list_scenarios = false;

@@ -1,6 +1,6 @@
 // ocean-loadtest: parses the flags, runs the load, prints the table / JSON and writes the series.
-// Exit status: 0 ran (or merged); 1 the run failed (no client ever connected, an output not
-// written); 2 bad flags, or a --merge input that is not a summary of the same stream.
+// Exit status: kExitTable in load_run.hpp (0 ran, 1 an output not written, 2 bad flags,
+// 3 no client connected, 4 all refused, 5 --expect-ok-pct not met or a frame wrong).
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -63,7 +63,13 @@ int main(int argc, char** argv) {
     // Last, so it is the line a reader of the output sees.
     if (!result.error.empty()) {
       std::cerr << "ocean-loadtest: " << result.error << "\n";
-      status = 1;
+      return result.exit_code;
+    }
+    const LoadSummary& s = result.summary;
+    if (options.expect_ok_pct >= 0.0 && (s.frames_ok_pct < options.expect_ok_pct || s.frames_bad > 0)) {
+      std::cerr << "ocean-loadtest: checks failed: " << s.frames_ok_pct << " % of frames verified and on time (--expect-ok-pct "
+                << options.expect_ok_pct << "), " << s.frames_bad << " wrong\n";
+      return kExitChecksFailed;
     }
     return status;
   } catch (const std::exception& e) {
