@@ -97,13 +97,16 @@ if ! pm image exists debian:bookworm || ! pm image exists debian:bookworm-slim; 
   nice debootstrap --variant=minbase bookworm "$work/rootfs" "$mirror" > "$work/debootstrap.log" 2>&1 ||
     { tail -20 "$work/debootstrap.log" >&2; fail "debootstrap of bookworm from $mirror failed"; }
   path='ENV PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin'
-  tar -C "$work/rootfs" -c --exclude='./var/cache/apt/archives/*.deb' . |
+  # As Debian's own images: no package cache or package lists (apt-get update fetches them).
+  tar -C "$work/rootfs" -c --exclude='./var/cache/apt/archives/*.deb' --exclude='./var/lib/apt/lists/*' . |
     pm import --quiet --change "$path" - debian:bookworm >/dev/null
   # slim as Debian's own: no documentation, manuals or translations, now or from later installs.
   mkdir -p "$work/rootfs/etc/dpkg/dpkg.cfg.d"
   printf 'path-exclude /usr/share/doc/*\npath-include /usr/share/doc/*/copyright\npath-exclude /usr/share/man/*\npath-exclude /usr/share/info/*\npath-exclude /usr/share/locale/*\n' \
     > "$work/rootfs/etc/dpkg/dpkg.cfg.d/slim"
-  tar -C "$work/rootfs" -c --exclude='./var/cache/apt/archives/*.deb' --exclude='./usr/share/man/*' \
+  find "$work/rootfs/usr/share/doc" -type f ! -name copyright -delete
+  tar -C "$work/rootfs" -c --exclude='./var/cache/apt/archives/*.deb' --exclude='./var/lib/apt/lists/*' \
+    --exclude='./usr/share/man/*' \
     --exclude='./usr/share/info/*' --exclude='./usr/share/locale/*' . |
     pm import --quiet --change "$path" - debian:bookworm-slim >/dev/null
   rm -rf "$work/rootfs"
@@ -267,7 +270,7 @@ say "kube play: 2 replicas ready at ${servers[*]}"
   > "$work/failover.json" 2> "$work/failover.json.err" &
 loadtest_pid=$!
 sleep 4
-pm pod rm -f -t 0 "${pods[0]}" > /dev/null || fail "could not remove pod ${pods[0]}"
+pm pod rm -f -t 0 "${pods[0]}" > /dev/null 2>> "$work/run.log" || fail "could not remove pod ${pods[0]}"
 say "removed pod ${pods[0]}"
 wait "$loadtest_pid" || { cat "$work/failover.json.err" >&2; fail "ocean-loadtest across the 2 replicas exited non-zero"; }
 check_load "$work/failover.json" "failover across 2 replicas" 5 5 || fail "failover from the removed replica did not pass (above)"
