@@ -52,7 +52,10 @@ cleanup() {
   pm rm -f -t 0 "$name" >/dev/null 2>&1 || true
   if [[ -n "$kube_file" ]]; then
     pm kube down "$kube_file" >/dev/null 2>&1 || true
-    pm pod rm -f -t 0 "$name-pod-0" "$name-pod-1" >/dev/null 2>&1 || true
+    # One at a time: podman removes none of a list that names a pod already gone.
+    for pod in "$name-pod-0" "$name-pod-1"; do
+      pm pod rm -f -t 0 "$pod" >/dev/null 2>&1 || true
+    done
     pm secret rm "$name-secrets" >/dev/null 2>&1 || true
     pm volume rm -f "$name-secrets" "$name-config" >/dev/null 2>&1 || true
   fi
