@@ -14,6 +14,11 @@ packages=(
 if [[ "${OCEAN_SANITIZE:-}" == 1 || "${OCEAN_FUZZ:-}" == 1 ]]; then
   packages+=(clang libclang-rt-14-dev)
 fi
+# The container stage (deploy/container_test.sh): podman with runc, catatonit for kube play's
+# pause image, debootstrap for the base images (no registry is reachable), curl for the probes.
+if [[ "${OCEAN_CONTAINER:-}" == 1 ]]; then
+  packages+=(podman runc catatonit debootstrap curl)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
