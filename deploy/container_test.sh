@@ -4,14 +4,16 @@
 #      (debootstrap from this machine's apt mirror: no registry is reachable here);
 #   2. builds deploy/Dockerfile (docker format, so the HEALTHCHECK is kept);
 #   3. runs it as Kubernetes would (read-only root, no capabilities, no new privileges), waits for
-#      /readyz, checks /healthz, /metrics and the image's HEALTHCHECK, streams to ocean-loadtest
-#      clients over UDP and TCP (every frame checked against the sim: 0 bad frames), then SIGTERM
-#      must stop it with exit status 0 within 5 s;
+#      /readyz, checks /healthz, /metrics and the image's HEALTHCHECK, streams to 100
+#      ocean-loadtest clients over UDP (>= 99 % on time) and 5 over TCP (every frame checked
+#      against the sim: 0 bad frames), then SIGTERM must stop it with exit status 0 within 5 s;
 #   4. `podman kube play` of a manifest derived from deploy/k8s (ConfigMap, Secret, Deployment
-#      with 2 replicas), a load test given both pods (--server A,B) while one pod is removed:
-#      every client must fail over and keep receiving good frames.
+#      with 3 replicas): the 3 pods must send byte-identical frames for the same tick
+#      (tests/replica's hidden [external] case), then a load test given two pods (--server A,B)
+#      while one pod is removed: every client must fail over and keep receiving good frames.
 # Usage: deploy/container_test.sh [--no-kube]
-# Needs the host's ocean-loadtest ($OCEAN_BUILD_DIR, default build/; ./deploy/build.sh makes it)
+# Needs the host's ocean-loadtest and test_replica ($OCEAN_BUILD_DIR, default build/;
+# ./deploy/build.sh makes them)
 # and podman, runc, catatonit and debootstrap (OCEAN_CONTAINER=1 ./deploy/install-deps.sh).
 # Exit status: 0 passed; 1 failed (the reason is the last line); 77 skipped because podman cannot
 # create any container on this machine (the probe's error is printed).
@@ -29,6 +31,8 @@ done
 image=ocean-server:0.1.0          # the tag deploy/k8s/kustomization.yaml names
 build_dir=${OCEAN_BUILD_DIR:-build}
 loadtest=$build_dir/client/loadtest/ocean-loadtest
+replica_test=$build_dir/tests/replica/test_replica
+replicas=3
 stage_start=$SECONDS
 name=ocean-ct-$$
 work=$(mktemp -d)
@@ -53,7 +57,8 @@ cleanup() {
   if [[ -n "$kube_file" ]]; then
     pm kube down "$kube_file" >/dev/null 2>&1 || true
     # One at a time: podman removes none of a list that names a pod already gone.
-    for pod in "$name-pod-0" "$name-pod-1"; do
+    for ((i = 0; i < replicas; ++i)); do
+      pod=$name-pod-$i
       pm pod rm -f -t 0 "$pod" >/dev/null 2>&1 || true
     done
     pm secret rm "$name-secrets" >/dev/null 2>&1 || true
@@ -68,6 +73,7 @@ for tool in podman runc catatonit debootstrap curl python3; do
     fail "$tool is not installed: run OCEAN_CONTAINER=1 ./deploy/install-deps.sh"
 done
 [[ -x "$loadtest" ]] || fail "$loadtest is missing: run ./deploy/build.sh first"
+((kube == 0)) || [[ -x "$replica_test" ]] || fail "$replica_test is missing: run ./deploy/build.sh first"
 
 # --- Can podman create a container here at all? -------------------------------------------------
 # The probe runs the host's /bin/true from a throw-away rootfs, so neither a base image nor the
@@ -148,12 +154,14 @@ wait_ready() {
   fail "$url did not answer 200 within 30 s"
 }
 
-# check_load JSON_FILE WHAT CLIENTS [MIN_RECONNECTS]: all welcomed, frames received, none bad.
+# check_load JSON_FILE WHAT CLIENTS [MIN_RECONNECTS [MIN_ON_TIME_PCT]]: all welcomed, frames
+# received, none bad.
 check_load() {
   python3 - "$@" <<'EOF'
 import json, sys
 path, what, clients = sys.argv[1], sys.argv[2], int(sys.argv[3])
 min_reconnects = int(sys.argv[4]) if len(sys.argv) > 4 else 0
+min_on_time = float(sys.argv[5]) if len(sys.argv) > 5 else 0.0
 lines = [l for l in open(path).read().splitlines() if l.startswith("{")]
 if not lines:
     sys.exit(f"{what}: ocean-loadtest printed no JSON summary")
@@ -165,6 +173,7 @@ if s["clients_welcomed"] < clients: problems.append(f"only {s['clients_welcomed'
 if s["clients_connected"] < clients: problems.append(f"only {s['clients_connected']} of {clients} clients were connected at the end")
 if s["frames_received"] < clients * 10: problems.append(f"only {s['frames_received']} frames received")
 if s["frames_bad"] != 0: problems.append(f"{s['frames_bad']} frames did not match the simulation")
+if s["frames_ok_pct"] < min_on_time: problems.append(f"{s['frames_ok_pct']}% of frames on time, expected at least {min_on_time}%")
 if s["reconnects"] < min_reconnects: problems.append(f"{s['reconnects']} reconnects, expected at least {min_reconnects} (failover)")
 if problems:
     sys.exit(f"{what}: " + "; ".join(problems))
@@ -186,7 +195,7 @@ mport=$(free_port)
 say "running $image as $name (ports 127.0.0.1:$port tcp+udp, metrics 127.0.0.1:$mport)"
 pm run -d --name "$name" --read-only --cap-drop=ALL --security-opt no-new-privileges \
   -p "127.0.0.1:$port:7700/tcp" -p "127.0.0.1:$port:7700/udp" -p "127.0.0.1:$mport:9464/tcp" \
-  "$image" > /dev/null 2> "$work/run.log" || { cat "$work/run.log" >&2; fail "podman run of $image failed"; }
+  "$image" --max-clients 200 > /dev/null 2> "$work/run.log" || { cat "$work/run.log" >&2; fail "podman run of $image failed"; }
 t0=$SECONDS
 wait_ready "http://127.0.0.1:$mport/readyz" "$name"
 say "/readyz answered 200 after $((SECONDS - t0)) s"
@@ -196,8 +205,8 @@ grep -q '^ocean_build_info{' "$work/metrics" || fail "/metrics has no ocean_buil
 pm healthcheck run "$name" > /dev/null 2>&1 || fail "the image's HEALTHCHECK reports the server unhealthy"
 [[ "$(pm exec "$name" id -u)" == 10001 ]] || fail "the server process does not run as uid 10001"
 
-run_load "$work/udp.json" --server "127.0.0.1:$port" --clients 5 --duration 5 --transport udp
-check_load "$work/udp.json" "5 UDP clients" 5 || fail "the load test over UDP did not pass (above)"
+run_load "$work/udp.json" --server "127.0.0.1:$port" --clients 100 --ramp 2 --duration 10 --transport udp
+check_load "$work/udp.json" "100 UDP clients" 100 0 99 || fail "the load test over UDP did not pass (above)"
 run_load "$work/tcp.json" --server "127.0.0.1:$port" --clients 5 --duration 5 --transport tcp
 check_load "$work/tcp.json" "5 TCP clients" 5 || fail "the load test over TCP did not pass (above)"
 
@@ -217,20 +226,20 @@ if ((kube == 0)); then
   exit 0
 fi
 
-# --- podman kube play: 2 replicas and failover --------------------------------------------------
+# --- podman kube play: 3 replicas, byte-identical frames, failover --------------------------------------------------
 # Derived from deploy/k8s, changed only where podman 4.3 differs from Kubernetes (each named):
 kube_file=$work/fleet.yaml
-python3 - deploy/k8s "$kube_file" "$name" <<'EOF'
+python3 - deploy/k8s "$kube_file" "$name" "$replicas" <<'EOF'
 import secrets, sys, yaml
 k8s, out, name = sys.argv[1], sys.argv[2], sys.argv[3]
 config = yaml.safe_load(open(f"{k8s}/configmap.yaml"))
 deployment = yaml.safe_load(open(f"{k8s}/deployment.yaml"))
 secret = yaml.safe_load(open(f"{k8s}/secret.example.yaml"))
 deployment["metadata"]["name"] = name
-deployment["spec"]["replicas"] = 2
+deployment["spec"]["replicas"] = int(sys.argv[4])
 pod = deployment["spec"]["template"]["spec"]
 container = pod["containers"][0]
-# podman publishes every containerPort on the host (as hostPort), so 2 replicas would collide;
+# podman publishes every containerPort on the host (as hostPort), so replicas would collide;
 # the pods are reached on their own IPs instead. The probes then name the port by number.
 del container["ports"]
 for probe in ("startupProbe", "livenessProbe", "readinessProbe"):
@@ -257,7 +266,8 @@ yaml.safe_dump_all([config, deployment], open(out, "w"), sort_keys=False)
 EOF
 pm secret create "$name-secrets" "$kube_file.secret" > /dev/null
 pm kube play "$kube_file" > "$work/kube.log" 2>&1 || { cat "$work/kube.log" >&2; fail "podman kube play of the derived deploy/k8s manifest failed"; }
-pods=("$name-pod-0" "$name-pod-1")
+pods=()
+for ((i = 0; i < replicas; ++i)); do pods+=("$name-pod-$i"); done
 servers=()
 for pod in "${pods[@]}"; do
   infra=$(pm pod inspect --format '{{.InfraContainerID}}' "$pod") || fail "podman kube play made no pod $pod"
@@ -266,7 +276,15 @@ for pod in "${pods[@]}"; do
   wait_ready "http://$ip:9464/readyz" "$pod-ocean-server"
   servers+=("$ip:7700")
 done
-say "kube play: 2 replicas ready at ${servers[*]}"
+say "kube play: $replicas replicas ready at ${servers[*]}"
+
+# Every pod computes the same sea: frames of the same tick, byte for byte (as test_replica checks
+# for processes).
+replica_list=$(IFS=,; echo "${servers[*]}")
+OCEAN_REPLICA_SERVERS=$replica_list OCEAN_REPLICA_PROFILES=mobile,desktop \
+  "$replica_test" "[external]" > "$work/replicas.log" 2>&1 ||
+  { cat "$work/replicas.log" >&2; fail "the $replicas replicas did not send byte-identical frames (above)"; }
+grep -h 'replicas, ' "$work/replicas.log" | sed 's/^ *//' | while read -r line; do say "$line"; done
 
 # The clients start on the first replica; after 4 s that pod is removed, so each must fail over.
 "$loadtest" --json --quiet --server "${servers[0]},${servers[1]}" --clients 5 --duration 12 --transport tcp \
@@ -276,5 +294,5 @@ sleep 4
 pm pod rm -f -t 0 "${pods[0]}" > /dev/null 2>> "$work/run.log" || fail "could not remove pod ${pods[0]}"
 say "removed pod ${pods[0]}"
 wait "$loadtest_pid" || { cat "$work/failover.json.err" >&2; fail "ocean-loadtest across the 2 replicas exited non-zero"; }
-check_load "$work/failover.json" "failover across 2 replicas" 5 5 || fail "failover from the removed replica did not pass (above)"
+check_load "$work/failover.json" "failover between 2 of the replicas" 5 5 || fail "failover from the removed replica did not pass (above)"
 say "passed in $((SECONDS - stage_start)) s"

@@ -38,9 +38,9 @@ struct RecordedFrame {
 class FrameRecorder {
  public:
   // Connects at once (blocking); the Hello waits for send_hello(), so a test can time it.
-  FrameRecorder(asio::io_context& io, std::uint16_t port, std::uint8_t profile_id)
+  FrameRecorder(asio::io_context& io, const asio::ip::tcp::endpoint& server, std::uint8_t profile_id)
       : socket_(io), profile_id_(profile_id) {
-    socket_.connect({asio::ip::address_v4::loopback(), port});
+    socket_.connect(server);
     socket_.set_option(asio::ip::tcp::no_delay(true));
     do_read();
   }

@@ -16,6 +16,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include <asio/ip/tcp.hpp>
+
 #include "server_process.hpp"
 
 namespace ocean::replica_test {
@@ -92,6 +94,9 @@ class ReplicaPair {
 
   ServerProcess& server(int i) { return *servers_[i]; }
   std::uint16_t port(int i) const { return ports_[i]; }
+  std::vector<asio::ip::tcp::endpoint> endpoints() const {
+    return {{asio::ip::address_v4::loopback(), ports_[0]}, {asio::ip::address_v4::loopback(), ports_[1]}};
+  }
   std::string logs() const { return "replica 0:\n" + servers_[0]->log() + "replica 1:\n" + servers_[1]->log(); }
 
  private:

@@ -4,9 +4,15 @@
 // tick, every frame both sent along the same chain of baselines must match byte for byte. (A
 // replica starved of CPU may skip a frame; from there on its chain differs and nothing more is
 // compared, so the test records a fresh pair of streams until enough frames were compared.)
+// The same check runs against replicas started elsewhere (a hidden test case below): the
+// container stage compares the pods of deploy/k8s this way.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <optional>
 #include <cmath>
 #include <sstream>
 #include <thread>
@@ -118,9 +124,18 @@ std::string describe(const FrameRecorder& r) {
   return out.str();
 }
 
-// Records both replicas' streams of one profile, as often as needed, until the frames compared
-// (identical lineage in both) hold a keyframe and kMinDeltas deltas; all must be byte-identical.
-void check_profile(ReplicaPair& pair, const Profile& profile) {
+// Where the replicas under test listen, what their logs say, and the epoch they must all
+// announce (none: whatever it is, as long as they agree).
+struct Replicas {
+  std::vector<asio::ip::tcp::endpoint> servers;
+  std::function<std::string()> logs;
+  std::optional<std::int64_t> epoch_unix_ms;
+};
+
+// Records every replica's stream of one profile, as often as needed, until the frames compared
+// (identical lineage in the first replica and each other one) hold a keyframe and kMinDeltas
+// deltas; all must be byte-identical.
+void check_profile(const Replicas& replicas, const Profile& profile) {
   const std::uint32_t step = kTickRateHz / profile.rate_hz;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(kProfileBudgetS);
   Overlap total;
@@ -128,44 +143,63 @@ void check_profile(ReplicaPair& pair, const Profile& profile) {
   const auto enough = [&](const Overlap& more) { return total.keys + more.keys >= 1 && total.deltas + more.deltas >= kMinDeltas; };
   for (int attempt = 1; attempt <= kMaxAttempts && !enough({}) && std::chrono::steady_clock::now() < deadline; ++attempt) {
     asio::io_context io;
-    FrameRecorder a(io, pair.port(0), profile.id), b(io, pair.port(1), profile.id);
+    std::vector<std::unique_ptr<FrameRecorder>> recorders;
+    for (const auto& server : replicas.servers) recorders.push_back(std::make_unique<FrameRecorder>(io, server, profile.id));
+    const FrameRecorder& a = *recorders.front();
     sleep_to_frame_phase(step, 0.5);
-    a.send_hello();
-    b.send_hello();
-    INFO(pair.logs());
-    REQUIRE(run_until(io, [&] { return a.first_key_tick() && b.first_key_tick(); }, 10.0));
-    if (*a.first_key_tick() != *b.first_key_tick()) {
-      // A Hello straddled a key tick: these two streams share no frame. Try again.
-      attempts.push_back("keys at ticks " + std::to_string(*a.first_key_tick()) + " and " +
-                         std::to_string(*b.first_key_tick()));
+    for (auto& r : recorders) r->send_hello();
+    INFO(replicas.logs());
+    const auto all_keyed = [&] {
+      return std::all_of(recorders.begin(), recorders.end(), [](const auto& r) { return r->first_key_tick().has_value(); });
+    };
+    REQUIRE(run_until(io, all_keyed, 10.0));
+    const bool same_key = std::all_of(recorders.begin(), recorders.end(),
+                                      [&](const auto& r) { return *r->first_key_tick() == *a.first_key_tick(); });
+    if (!same_key) {
+      // A Hello straddled a key tick: these streams share no frame. Try again.
+      std::string ticks;
+      for (const auto& r : recorders) ticks += " " + std::to_string(*r->first_key_tick());
+      attempts.push_back("keys at ticks" + ticks);
       continue;
     }
-    // Until enough is compared, or the streams diverged (then nothing more can be compared).
+    // Each replica against the first, until enough is compared or one diverged (then nothing
+    // more can be compared); what counts is the least any pair compared.
+    const auto overlap = [&] {
+      Overlap least, all;
+      for (std::size_t i = 1; i < recorders.size(); ++i) {
+        const Overlap o = compare(a, *recorders[i]);
+        if (i == 1 || o.keys + o.deltas < least.keys + least.deltas) least = o;
+        all += o;
+      }
+      least.mismatched_chunks = all.mismatched_chunks;
+      least.other_lineage = all.other_lineage;
+      least.mismatches = all.mismatches;
+      return least;
+    };
     Overlap o;
     run_until(io, [&] {
-      o = compare(a, b);
+      o = overlap();
       return enough(o) || o.other_lineage > 0;
     }, kAttemptS);
-    a.close();
-    b.close();
-    o = compare(a, b);
+    for (auto& r : recorders) r->close();
+    o = overlap();
+    std::string described;
+    for (std::size_t i = 0; i < recorders.size(); ++i) described += "; replica " + std::to_string(i) + ": " + describe(*recorders[i]);
     attempts.push_back("keys at tick " + std::to_string(*a.first_key_tick()) + ": " + std::to_string(o.keys) + " key + " +
                        std::to_string(o.deltas) + " deltas compared, " + std::to_string(o.other_lineage) +
-                       " frames reached by other baselines; A " + describe(a) + "; B " + describe(b));
+                       " frames reached by other baselines" + described);
     INFO(profile.name << " attempt " << attempt << ": " << attempts.back());
-    CHECK(a.faults().empty());
-    CHECK(b.faults().empty());
-
-    // Both replicas describe one stream: same scene, stream parameters, epoch and tick period.
-    REQUIRE(a.welcome());
-    REQUIRE(b.welcome());
-    CHECK(a.welcome()->stream == b.welcome()->stream);
-    CHECK(a.welcome()->scene == b.welcome()->scene);
-    CHECK(a.welcome()->stream.profile_id == profile.id);
-    CHECK(a.welcome()->epoch_unix_ms == kEpochUnixMs);
-    CHECK(b.welcome()->epoch_unix_ms == kEpochUnixMs);
-    CHECK(a.welcome()->tick_period_s == b.welcome()->tick_period_s);
-    CHECK(a.welcome()->session_id != b.welcome()->session_id);
+    // All replicas describe one stream: same scene, stream parameters, epoch and tick period.
+    for (const auto& r : recorders) {
+      CHECK(r->faults().empty());
+      REQUIRE(r->welcome());
+      CHECK(r->welcome()->stream == a.welcome()->stream);
+      CHECK(r->welcome()->scene == a.welcome()->scene);
+      CHECK(r->welcome()->stream.profile_id == profile.id);
+      CHECK(r->welcome()->epoch_unix_ms == replicas.epoch_unix_ms.value_or(a.welcome()->epoch_unix_ms));
+      CHECK(r->welcome()->tick_period_s == a.welcome()->tick_period_s);
+      if (r.get() != &a) CHECK(r->welcome()->session_id != a.welcome()->session_id);
+    }
     total += o;
   }
   std::string tried, first_mismatches;
@@ -177,18 +211,54 @@ void check_profile(ReplicaPair& pair, const Profile& profile) {
   CHECK(total.mismatched_chunks == 0);
   CHECK(total.keys >= 1);
   CHECK(total.deltas >= kMinDeltas);
-  WARN(profile.name << ": " << total.keys << " key(s) + " << total.deltas << " deltas compared (" << total.chunks
-                    << " chunks, " << total.bytes << " bytes), " << total.mismatched_chunks << " chunks differ; "
-                    << attempts.size() << " attempt(s)");
+  WARN(profile.name << ": " << replicas.servers.size() << " replicas, " << total.keys << " key(s) + " << total.deltas
+                    << " deltas compared with the first (" << total.chunks << " chunks, " << total.bytes << " bytes), "
+                    << total.mismatched_chunks << " chunks differ; " << attempts.size() << " attempt(s)");
+}
+
+// "HOST:PORT,HOST:PORT,..." (numeric addresses) as TCP endpoints.
+std::vector<asio::ip::tcp::endpoint> parse_endpoints(const std::string& text) {
+  std::vector<asio::ip::tcp::endpoint> out;
+  std::size_t from = 0;
+  while (from <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', from), text.size());
+    const std::string item = text.substr(from, comma - from);
+    const std::size_t colon = item.rfind(':');
+    REQUIRE(colon != std::string::npos);
+    out.emplace_back(asio::ip::make_address(item.substr(0, colon)),
+                     static_cast<std::uint16_t>(std::stoi(item.substr(colon + 1))));
+    from = comma + 1;
+  }
+  return out;
 }
 
 }  // namespace
 
 TEST_CASE("replicas send byte-identical frames", "[replica]") {
   ReplicaPair pair(1.0);
+  const Replicas replicas{pair.endpoints(), [&] { return pair.logs(); }, kEpochUnixMs};
   for (const char* name : {"mobile", "lite"}) {
     const Profile* profile = find_profile(name);
     REQUIRE(profile);
-    check_profile(pair, *profile);
+    check_profile(replicas, *profile);
+  }
+}
+
+// Hidden (not run by CTest): replicas started elsewhere, e.g. the pods of deploy/k8s that
+// deploy/container_test.sh starts with podman kube play. OCEAN_REPLICA_SERVERS lists them
+// ("IP:PORT,IP:PORT,..."), OCEAN_REPLICA_PROFILES the profiles to compare (default "mobile").
+// They must run at kTickRateHz.
+TEST_CASE("replicas named in OCEAN_REPLICA_SERVERS send byte-identical frames", "[.][external]") {
+  const char* servers = std::getenv("OCEAN_REPLICA_SERVERS");
+  REQUIRE(servers);
+  const Replicas replicas{parse_endpoints(servers), [] { return std::string("(external replicas: no logs here)"); }, std::nullopt};
+  REQUIRE(replicas.servers.size() >= 2);
+  const char* profiles = std::getenv("OCEAN_REPLICA_PROFILES");
+  std::stringstream names(profiles ? profiles : "mobile");
+  for (std::string name; std::getline(names, name, ',');) {
+    const Profile* profile = find_profile(name);
+    INFO("profile " << name);
+    REQUIRE(profile);
+    check_profile(replicas, *profile);
   }
 }
