@@ -21,7 +21,8 @@ endfunction()
 # allocations behind whose stacks then point into unmapped memory, so no suppression can name
 # them. Every other ASan and UBSan check stays on; the code without GL runs with the leak check.
 function(ocean_add_test name)
-  cmake_parse_arguments(T "GL" "" "SOURCES;LIBS" ${ARGN})
+  # PROPERTIES: more CTest properties for every test case of the binary (RUN_SERIAL TRUE, LABELS x).
+  cmake_parse_arguments(T "GL" "" "SOURCES;LIBS;PROPERTIES" ${ARGN})
   if(T_GL AND OCEAN_SANITIZE MATCHES "address")
     list(APPEND T_SOURCES ${PROJECT_SOURCE_DIR}/tests/sanitizers/no_leak_check.cpp)
   endif()
@@ -30,5 +31,5 @@ function(ocean_add_test name)
   ocean_target_defaults(${name})
   # One variable only: catch_discover_tests splits a list into separate property arguments.
   catch_discover_tests(${name} TEST_PREFIX "${name}:" DISCOVERY_TIMEOUT 60
-    PROPERTIES ENVIRONMENT "OCEAN_BUILD_DIR=${CMAKE_BINARY_DIR}")
+    PROPERTIES ENVIRONMENT "OCEAN_BUILD_DIR=${CMAKE_BINARY_DIR}" ${T_PROPERTIES})
 endfunction()

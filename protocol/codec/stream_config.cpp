@@ -1,6 +1,8 @@
 // StreamConfig factory and validation.
 #include "stream_config.hpp"
 
+#include "chunk_format.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -53,7 +55,8 @@ std::string validate(const StreamConfig& c) {
   else if (c.normals && !(c.slope_step >= 1e-5f && c.slope_step <= 0.5f))
     m << "slope_step = " << c.slope_step << ": must be in [1e-5, 0.5] when normals are streamed";
   else if (c.choppy)
-    m << "choppy = true: displacement channels are not coded by codec version 1 (use a non-choppy profile)";
+    m << "choppy = true: displacement channels are not coded by codec version " << int(kCodecVersion)
+      << " (use a non-choppy profile)";
   return m.str();
 }
 

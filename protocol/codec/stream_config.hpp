@@ -25,7 +25,7 @@ struct StreamConfig {
   float slope_step = 1.0f / 256; // slope error bound is step / 2 (normals only); in [1e-5, 0.5]
   float disp_step_m = 0.01f;     // choppy only (not yet coded by this codec version)
   bool normals = true;           // stream slopes dh/dx, dh/dz
-  bool choppy = false;           // not supported by codec version 1: validate() refuses it
+  bool choppy = false;           // no codec version codes displacement yet: validate() refuses it
 
   // The profile's grid/rate/steps/channels with the scene's patch and physics.
   // depth_m as on the wire: 0 for deep water (scene_wire::wire_depth converts the sim's infinity).

@@ -134,7 +134,7 @@ class FakeServer {
   int udp_hellos = 0, set_transport_tcp = 0, keyframes_sent = 0, rejected = 0, pings = 0;
 
  private:
-  // The encoder cannot code choppy channels (codec version 1); the Welcome still says what the
+  // The encoder cannot code choppy channels (no codec version does yet); the Welcome still says what the
   // profile says, which is how the refusal test offers a stream the client cannot decode.
   static codec::StreamConfig codec_config(const Profile& profile) {
     codec::StreamConfig c = codec::StreamConfig::from_profile(profile, 64.0, 64.0, 9.81, 0.0);

@@ -5,6 +5,8 @@
 // (both late) from a fault that hurts the attacked server's clients (only they are late).
 #pragma once
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -115,5 +117,36 @@ class FaultScenario {
   ClientPopulation population_;
   ClientPopulation control_;
 };
+
+// Waits for both populations to stream, then a quiet second: the clients' fastest arrivals are
+// known before any fault starts.
+inline void start_population(FaultScenario& s) {
+  const bool streaming = s.population().wait_streaming(30, 15.0) && s.control().wait_streaming(30, 5.0);
+  INFO("welcomed frames/udp-frames per client: " << s.population().status() << "| control " << s.control().status());
+  REQUIRE(streaming);
+  const FaultMeasure quiet = s.measure("no fault", [] { std::this_thread::sleep_for(std::chrono::milliseconds(1000)); });
+  if (quiet.control.on_time_share() >= kOnTimeShare) CHECK(quiet.window.on_time_share() >= kOnTimeShare);
+}
+
+// True when the machine kept the unattacked server's clients on time over the fault's ticks, so
+// late frames of the attacked server's clients are the fault's doing; else printed as inconclusive.
+inline bool machine_kept_up(const FaultMeasure& m) {
+  if (m.control.on_time_share() >= kOnTimeShare) return true;
+  std::printf("[faults] INCONCLUSIVE on-time share %.2f%%: the unattacked server's clients kept only %.2f%% (busy machine)\n",
+              100.0 * m.window.on_time_share(), 100.0 * m.control.on_time_share());
+  std::fflush(stdout);
+  return false;
+}
+
+// After a fault: nobody was dropped, the server lives and answers, and - when the machine kept
+// up - the clients kept their frames on time.
+inline void check_population(FaultScenario& s, const FaultMeasure& fault) {
+  INFO(fault.window.describe());
+  CHECK(fault.window.owed() >= static_cast<std::uint64_t>(s.population().size()) * 25);  // the window covered the fault
+  for (const std::uint64_t connects : s.population().connects()) CHECK(connects == 1);  // nobody was dropped
+  CHECK(s.server().alive());
+  CHECK(s.healthy());
+  if (machine_kept_up(fault)) CHECK(fault.window.on_time_share() >= kOnTimeShare);
+}
 
 }  // namespace ocean::faults

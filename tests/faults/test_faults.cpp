@@ -45,37 +45,6 @@ std::vector<std::string> small_server(int max_clients, double idle_timeout_s) {
           std::to_string(idle_timeout_s)};
 }
 
-// Waits for both populations to stream, then a quiet second: the clients' fastest arrivals are
-// known before any fault starts.
-void start_population(FaultScenario& s) {
-  const bool streaming = s.population().wait_streaming(30, 15.0) && s.control().wait_streaming(30, 5.0);
-  INFO("welcomed frames/udp-frames per client: " << s.population().status() << "| control " << s.control().status());
-  REQUIRE(streaming);
-  const FaultMeasure quiet = s.measure("no fault", [] { std::this_thread::sleep_for(milliseconds(1000)); });
-  if (quiet.control.on_time_share() >= kOnTimeShare) CHECK(quiet.window.on_time_share() >= kOnTimeShare);
-}
-
-// True when the machine kept the unattacked server's clients on time over the fault's ticks, so
-// late frames of the attacked server's clients are the fault's doing; else printed as inconclusive.
-bool machine_kept_up(const FaultMeasure& m) {
-  if (m.control.on_time_share() >= kOnTimeShare) return true;
-  std::printf("[faults] INCONCLUSIVE on-time share %.2f%%: the unattacked server's clients kept only %.2f%% (busy machine)\n",
-              100.0 * m.window.on_time_share(), 100.0 * m.control.on_time_share());
-  std::fflush(stdout);
-  return false;
-}
-
-// After a fault: nobody was dropped, the server lives and answers, and - when the machine kept
-// up - the clients kept their frames on time.
-void check_population(FaultScenario& s, const FaultMeasure& fault) {
-  INFO(fault.window.describe());
-  CHECK(fault.window.owed() >= static_cast<std::uint64_t>(s.population().size()) * 25);  // the window covered the fault
-  for (const std::uint64_t connects : s.population().connects()) CHECK(connects == 1);  // nobody was dropped
-  CHECK(s.server().alive());
-  CHECK(s.healthy());
-  if (machine_kept_up(fault)) CHECK(fault.window.on_time_share() >= kOnTimeShare);
-}
-
 double rejects(const std::string& metrics, const std::string& reason) {
   return metric_value(metrics, "ocean_rejects_total{reason=\"" + reason + "\"}").value_or(0.0);
 }

@@ -1,19 +1,23 @@
 // The real ocean-server against peers without a token (issue 16), each attack a few seconds:
 // a wrong-token ParamChange flood (log bytes per second), silent sockets against viewer slots,
 // descriptor exhaustion under a low RLIMIT_NOFILE (/healthz latency, CPU), and SIGTERM while
-// clients that never read hold full send queues. Figures are printed ("[hostile]" lines), so
+// clients that never read hold full send queues; and beside well-behaved viewers (FaultScenario:
+// they must stay >= 99 % on time): a UdpHello replayed from two ports, a viewer's UdpHello
+// replayed from another port of its address, and a connect loop against a full server. Figures are printed ("[hostile]" lines), so
 // running this binary with OCEAN_BUILD_DIR pointing at another build measures that server.
 #include <catch2/catch.hpp>
 
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <csignal>
 #include <sys/resource.h>
 #include <thread>
 #include <unistd.h>
 
+#include "fault_scenario.hpp"
 #include "http_probe.hpp"
 #include "message_builders.hpp"
 #include "raw_peers.hpp"
@@ -157,4 +161,108 @@ TEST_CASE("SIGTERM ends the server within 2 s while clients that never read hold
   std::printf("[hostile] SIGTERM with 60 stalled desktop clients: exited after %.2f s\n", took);
   CHECK_FALSE(server.alive());
   CHECK(took < 2.0);
+}
+
+namespace {
+
+std::vector<std::string> victims_server(int max_clients) {
+  return {"--size", "64", "--profiles", "mobile,lite", "--max-clients", std::to_string(max_clients)};
+}
+
+double log_rate_during(ServerProcess& server, const std::function<void()>& attack, double& seconds) {
+  const std::size_t before = server.log().size();
+  const auto start = Clock::now();
+  attack();
+  seconds = seconds_since(start);
+  std::this_thread::sleep_for(milliseconds(200));
+  return static_cast<double>(server.log().size() - before) / seconds;
+}
+
+}  // namespace
+
+TEST_CASE("a session's UdpHello replayed from two ports in turn writes little log and moves nothing", "[hostile]") {
+  FaultScenario s(victims_server(64));
+  start_population(s);
+  RawTcp session(s.port());
+  const auto welcome = session.handshake(proto::Hello{1, 0, ocean::wire::Transport::udp, "rebinder"});
+  REQUIRE(welcome);
+  const proto::Bytes hello = proto::encode(proto::UdpHello{welcome->session_id, welcome->udp_cookie});
+  std::uint64_t sent = 0;
+  double seconds = 0.0, log_rate = 0.0;
+  const FaultMeasure m = s.measure("UdpHello from 2 ports", [&] {
+    log_rate = log_rate_during(s.server(), [&] {
+      RawUdp a, b;
+      const auto end = Clock::now() + milliseconds(3000);
+      while (Clock::now() < end) {
+        for (int i = 0; i < 100; ++i, ++sent) (sent % 2 ? a : b).send_to(s.port(), hello);  // 20 000 a second
+        a.drain();
+        b.drain();
+        std::this_thread::sleep_for(milliseconds(5));
+      }
+    }, seconds);
+  });
+  const std::string metrics = s.metrics();
+  const double refused = metric_value(metrics, "ocean_udp_rebinds_refused_total").value_or(0.0);
+  std::printf("[hostile] %llu UdpHellos from 2 ports in %.1f s: log %.0f B/s, %.0f rebinds refused, %.0f moved\n",
+              static_cast<unsigned long long>(sent), seconds, log_rate, refused,
+              metric_value(metrics, "ocean_udp_rebinds_total").value_or(0.0));
+  check_population(s, m);
+  CHECK(log_rate < 2000.0);  // main: 1.84 MB/s at 20 000 a second (a "udp proven" line each)
+  CHECK(refused > 0.0);      // counted, whatever the log kept
+}
+
+TEST_CASE("a viewer's UdpHello replayed from another port of its address does not take its stream", "[hostile]") {
+  FaultScenario s(victims_server(64));
+  start_population(s);
+  const auto victim = s.population().welcome(0);
+  REQUIRE(victim);
+  REQUIRE(s.population().on_udp(0));
+  const std::uint64_t victim_keys_before = s.population().keyframes(0);
+  std::uint64_t stolen_bytes = 0;
+  const FaultMeasure m = s.measure("UdpHello replayed, new port", [&] {
+    RawUdp thief;  // 127.0.0.1 like the victim: the cookie's address matches, the port does not
+    const proto::Bytes hello = proto::encode(proto::UdpHello{victim->session_id, victim->udp_cookie});
+    const auto end = Clock::now() + milliseconds(3000);
+    while (Clock::now() < end) {
+      thief.send_to(s.port(), hello);
+      thief.drain();
+      std::this_thread::sleep_for(milliseconds(5));
+    }
+    std::this_thread::sleep_for(milliseconds(200));
+    thief.drain();
+    stolen_bytes = thief.bytes_in();
+  });
+  std::printf("[hostile] the victim's UdpHello replayed from another port for 3 s: thief got %llu bytes, victim keys %llu -> %llu\n",
+              static_cast<unsigned long long>(stolen_bytes), static_cast<unsigned long long>(victim_keys_before),
+              static_cast<unsigned long long>(s.population().keyframes(0)));
+  check_population(s, m);
+  CHECK(stolen_bytes == 0);         // main: the thief's port got the victim's frames
+  CHECK(s.population().on_udp(0));  // the victim streams on, over UDP
+  CHECK(metric_value(s.metrics(), "ocean_udp_rebinds_refused_total").value_or(0.0) > 0.0);
+}
+
+TEST_CASE("connecting in a loop to a full server is refused with a reason and writes little log", "[hostile]") {
+  // The population (kUdpClients + kTcpClients viewers) fills every slot.
+  FaultScenario s(victims_server(kUdpClients + kTcpClients));
+  start_population(s);
+  int attempts = 0, refused_full = 0;
+  double seconds = 0.0, log_rate = 0.0;
+  const FaultMeasure m = s.measure("connect loop, full server", [&] {
+    log_rate = log_rate_during(s.server(), [&] {
+      const auto end = Clock::now() + milliseconds(3000);
+      while (Clock::now() < end) {
+        RawTcp joiner(s.port());
+        ++attempts;
+        if (!joiner.send(proto::encode(tcp_hello()))) continue;
+        const RawTcp::Ending ending = joiner.wait_closed(1.0);
+        refused_full += ending.error && ending.error->code == proto::Reason::server_full;
+      }
+    }, seconds);
+  });
+  std::printf("[hostile] %d joins of a full server in %.1f s: %d told server_full, log %.0f B/s\n", attempts, seconds,
+              refused_full, log_rate);
+  check_population(s, m);
+  CHECK(refused_full >= attempts * 9 / 10);  // each told why
+  CHECK(log_rate < 2000.0);                   // main: 20.7 MB in 24 s
+  CHECK(rejects(s.server().metrics_port(), "server_full") >= refused_full);
 }

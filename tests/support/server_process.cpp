@@ -49,10 +49,12 @@ std::string temporary_log_path() {
 
 }  // namespace
 
-std::string server_binary() {
+std::string build_binary(const std::string& program) {
   const char* build = std::getenv("OCEAN_BUILD_DIR");
-  return std::string(build ? build : ".") + "/server/ocean-server";
+  return std::string(build ? build : ".") + "/" + program;
 }
+
+std::string server_binary() { return build_binary("server/ocean-server"); }
 
 std::optional<ListeningPorts> parse_listening_line(const std::string& log) {
   const std::size_t start = log.find("listening tcp=");
@@ -70,7 +72,7 @@ ServerProcess::ServerProcess(ServerOptions options)
     : args_(std::move(options.args)),
       log_path_(options.log_path.empty() ? temporary_log_path() : options.log_path),
       owns_log_(options.log_path.empty()) {
-  args_.insert(args_.begin(), server_binary());
+  args_.insert(args_.begin(), build_binary(options.program));
   if (::access(args_[0].c_str(), X_OK) != 0)
     throw std::runtime_error("no executable " + args_[0] + " (set OCEAN_BUILD_DIR to the build directory)");
   spawn();

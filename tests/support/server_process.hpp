@@ -23,6 +23,8 @@ namespace ocean::test_support {
 
 // $OCEAN_BUILD_DIR/server/ocean-server; CTest sets OCEAN_BUILD_DIR (ocean_add_test), "." otherwise.
 std::string server_binary();
+// $OCEAN_BUILD_DIR/`program`.
+std::string build_binary(const std::string& program);
 
 // The ports of the first "listening" line in `log`; 0 for one that is "off".
 struct ListeningPorts {
@@ -33,6 +35,9 @@ struct ListeningPorts {
 std::optional<ListeningPorts> parse_listening_line(const std::string& log);
 
 struct ServerOptions {
+  // The program, relative to the build tree; another of the project's tools (the load test
+  // beside a server) runs the same way, with wait_listening off.
+  std::string program = "server/ocean-server";
   std::vector<std::string> args;  // after the binary's name
   std::string log_path;           // empty: a temporary file, removed with the ServerProcess
   // Whether the constructor waits for the "listening" line and throws (with the log) without
