@@ -5,7 +5,8 @@
 #   2. builds deploy/Dockerfile (docker format, so the HEALTHCHECK is kept);
 #   3. runs it as Kubernetes would (read-only root, no capabilities, no new privileges), waits for
 #      /readyz, checks /healthz, /metrics and the image's HEALTHCHECK, streams to 100
-#      ocean-loadtest clients over UDP (>= 99 % on time) and 5 over TCP (every frame checked
+#      ocean-loadtest clients over UDP through the published port (--udp-public-port: no client
+#      may fall back to TCP; >= 99 % on time) and 5 over TCP (every frame checked
 #      against the sim: 0 bad frames), then SIGTERM must stop it with exit status 0 within 5 s;
 #   4. `podman kube play` of a manifest derived from deploy/k8s (ConfigMap, Secret, Deployment
 #      with 3 replicas): the 3 pods must send byte-identical frames for the same tick
@@ -173,6 +174,8 @@ if s["clients_welcomed"] < clients: problems.append(f"only {s['clients_welcomed'
 if s["clients_connected"] < clients: problems.append(f"only {s['clients_connected']} of {clients} clients were connected at the end")
 if s["frames_received"] < clients * 10: problems.append(f"only {s['frames_received']} frames received")
 if s["frames_bad"] != 0: problems.append(f"{s['frames_bad']} frames did not match the simulation")
+if s["transport"] == "udp" and s["transport_fallbacks"] > 0:
+    problems.append(f"{s['transport_fallbacks']} clients fell back to TCP: UDP did not reach the server")
 if s["frames_ok_pct"] < min_on_time: problems.append(f"{s['frames_ok_pct']}% of frames on time, expected at least {min_on_time}%")
 if s["reconnects"] < min_reconnects: problems.append(f"{s['reconnects']} reconnects, expected at least {min_reconnects} (failover)")
 if problems:
@@ -195,7 +198,7 @@ mport=$(free_port)
 say "running $image as $name (ports 127.0.0.1:$port tcp+udp, metrics 127.0.0.1:$mport)"
 pm run -d --name "$name" --read-only --cap-drop=ALL --security-opt no-new-privileges \
   -p "127.0.0.1:$port:7700/tcp" -p "127.0.0.1:$port:7700/udp" -p "127.0.0.1:$mport:9464/tcp" \
-  "$image" --max-clients 200 > /dev/null 2> "$work/run.log" || { cat "$work/run.log" >&2; fail "podman run of $image failed"; }
+  "$image" --max-clients 200 --udp-public-port "$port" > /dev/null 2> "$work/run.log" || { cat "$work/run.log" >&2; fail "podman run of $image failed"; }
 t0=$SECONDS
 wait_ready "http://127.0.0.1:$mport/readyz" "$name"
 say "/readyz answered 200 after $((SECONDS - t0)) s"
@@ -284,7 +287,7 @@ replica_list=$(IFS=,; echo "${servers[*]}")
 OCEAN_REPLICA_SERVERS=$replica_list OCEAN_REPLICA_PROFILES=mobile,desktop \
   "$replica_test" "[external]" > "$work/replicas.log" 2>&1 ||
   { cat "$work/replicas.log" >&2; fail "the $replicas replicas did not send byte-identical frames (above)"; }
-grep -h 'replicas, ' "$work/replicas.log" | sed 's/^ *//' | while read -r line; do say "$line"; done
+grep -h '^\[replica\]' "$work/replicas.log" | while read -r line; do say "$line"; done
 
 # The clients start on the first replica; after 4 s that pod is removed, so each must fail over.
 "$loadtest" --json --quiet --server "${servers[0]},${servers[1]}" --clients 5 --duration 12 --transport tcp \

@@ -121,6 +121,11 @@ const ConfigOption kOptions[] = {
     {"udp-listen", "ADDR:PORT", "UDP address for frame datagrams", ValueKind::text, false,
      [](ServerConfig& c, std::string_view v) { return apply_address(c.udp_listen, v, false); },
      [](const ServerConfig& c) { return show_optional_address(c.udp_listen, "the --listen address"); }},
+    {"udp-public-port", "N",
+     "UDP port clients are told to use, when a port mapping (container, NAT, Service) changes the bound one; "
+     "in 0..65535, 0 = the bound port",
+     ValueKind::integer, false, [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.udp_public_port); },
+     [](const ServerConfig& c) { return c.udp_public_port ? std::to_string(c.udp_public_port) : std::string("the bound port"); }},
     {"metrics-listen", "ADDR:PORT|off", "HTTP address serving /metrics (Prometheus), /healthz and /readyz; 'off' disables it",
      ValueKind::text, false,
      [](ServerConfig& c, std::string_view v) { return apply_address(c.metrics_listen, v, true); },

@@ -57,6 +57,8 @@ std::string validate_server_config(const ServerConfig& config) {
   if (config.tick_rate_hz < kMinTickRateHz || config.tick_rate_hz > kMaxTickRateHz)
     return "--tick-rate " + std::to_string(config.tick_rate_hz) + ": must be an integer in " +
            std::to_string(kMinTickRateHz) + ".." + std::to_string(kMaxTickRateHz) + " Hz";
+  if (config.udp_public_port < 0 || config.udp_public_port > 65535)
+    return "--udp-public-port " + std::to_string(config.udp_public_port) + ": must be in 0..65535 (0 = the bound port)";
   if (config.max_clients < 1 || config.max_clients > kMaxClientsLimit)
     return "--max-clients " + std::to_string(config.max_clients) + ": must be in 1.." +
            std::to_string(kMaxClientsLimit);

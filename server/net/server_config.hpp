@@ -29,6 +29,9 @@ inline constexpr double kMaxSimTimeS = 1e9;
 struct ServerConfig {
   ListenAddress listen{"0.0.0.0", 7700};         // TCP
   std::optional<ListenAddress> udp_listen;       // empty = the TCP address and (bound) port
+  // The UDP port the Welcome names, where clients reach the server through a port mapping that
+  // changes it (podman -p 17700:7700/udp, a Service's port); 0 = the bound UDP port.
+  int udp_public_port = 0;
   std::optional<ListenAddress> metrics_listen = ListenAddress{"127.0.0.1", 9464};  // empty = off
 
   sim::SceneParams scene;                         // the scene at the epoch (tick 0 onward)

@@ -16,7 +16,8 @@ Tick tick_now(const ServerConfig& config) {
 
 SessionCoreHost host_of(Server& server) {
   return SessionCoreHost{server.config(), server.schedule(), server.metrics(), server.cookie_key(), server,
-                         server.udp_port(),
+                         server.config().udp_public_port ? static_cast<std::uint16_t>(server.config().udp_public_port)
+                                                         : server.udp_port(),
                          [&server](const sim::SceneParams& scene, std::int64_t from) { server.request_scene(scene, from); }};
 }
 

@@ -14,6 +14,7 @@
 #include <functional>
 #include <optional>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <thread>
 
@@ -211,9 +212,11 @@ void check_profile(const Replicas& replicas, const Profile& profile) {
   CHECK(total.mismatched_chunks == 0);
   CHECK(total.keys >= 1);
   CHECK(total.deltas >= kMinDeltas);
-  WARN(profile.name << ": " << replicas.servers.size() << " replicas, " << total.keys << " key(s) + " << total.deltas
-                    << " deltas compared with the first (" << total.chunks << " chunks, " << total.bytes << " bytes), "
-                    << total.mismatched_chunks << " chunks differ; " << attempts.size() << " attempt(s)");
+  std::printf("[replica] %.*s: %zu replicas, %zu key(s) + %zu deltas compared with the first (%zu chunks, %zu bytes), "
+              "%zu chunks differ; %zu attempt(s)\n",
+              static_cast<int>(profile.name.size()), profile.name.data(), replicas.servers.size(), total.keys, total.deltas, total.chunks, total.bytes,
+              total.mismatched_chunks, attempts.size());
+  std::fflush(stdout);
 }
 
 // "HOST:PORT,HOST:PORT,..." (numeric addresses) as TCP endpoints.

@@ -138,6 +138,8 @@ TEST_CASE("every kind of bad value is refused with a message naming it", "[confi
       {{"--listen", "localhost:80"}, {"--listen", "not an IPv4 or IPv6 literal"}},
       {{"--listen", "1.2.3.4"}, {"--listen", "ADDR:PORT"}},
       {{"--udp-listen", "1.2.3.4:x"}, {"--udp-listen", "port"}},
+      {{"--udp-public-port", "70000"}, {"--udp-public-port", "0..65535"}},
+      {{"--udp-public-port", "-1"}, {"--udp-public-port", "0..65535"}},
       {{"--metrics-listen", "on"}, {"--metrics-listen", "ADDR:PORT"}},
       {{"--tick-rate", "0"}, {"--tick-rate", "1..240"}},
       {{"--tick-rate", "241"}, {"--tick-rate", "1..240"}},
