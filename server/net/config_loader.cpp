@@ -161,9 +161,19 @@ std::string read_config_file(const std::string& path, std::string& text) {
   return {};
 }
 
+// A whole-configuration error names the option ("--wind-speed: ..."); when the file set it, the
+// file and line go first, since that is where the operator has to look.
+std::string with_file_origin(const std::string& error, const std::map<std::string, std::string>& origins) {
+  if (error.rfind("--", 0) != 0) return error;
+  const std::size_t end = error.find_first_of(": ", 2);
+  const auto origin = origins.find(error.substr(2, end == std::string::npos ? std::string::npos : end - 2));
+  return origin == origins.end() ? error : origin->second + ": " + error;
+}
+
 }  // namespace
 
-std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, std::string_view source) {
+std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, std::string_view source,
+                              std::map<std::string, std::string>* origins) {
   if (toml_text.size() > kMaxConfigBytes)
     return std::string(source) + ": " + std::to_string(toml_text.size()) + " bytes; at most " +
            std::to_string(kMaxConfigBytes) + " are allowed";
@@ -195,6 +205,7 @@ std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, 
     const std::string text = toml_value_text(*option, node, error);
     if (error.empty()) error = option->apply(config, text);
     if (!error.empty()) return at_line(source, node) + ": " + std::string(key.str()) + " " + error;
+    if (origins) (*origins)[std::string(key.str())] = at_line(source, node);
   }
   return schedule ? apply_schedule(config, *schedule, source) : std::string();
 }
@@ -239,26 +250,28 @@ ConfigLoadResult load_config(const std::vector<std::string>& args) {
   }
 
   ServerConfig& config = result.config;
+  std::map<std::string, std::string> file_origins;  // option name -> "file:line", until a flag overrides it
   if (!config_file.empty()) {
     std::string text;
     if (std::string error = read_config_file(config_file, text); !error.empty()) {
       result.message = error;
       return result;
     }
-    if (std::string error = apply_config_toml(config, text, config_file); !error.empty()) {
+    if (std::string error = apply_config_toml(config, text, config_file, &file_origins); !error.empty()) {
       result.message = error;
       return result;
     }
   }
   for (std::size_t i = 0; i < options.size(); ++i) {
     if (flags[i]->count() == 0) continue;
+    file_origins.erase(std::string(options[i].name));
     if (std::string error = options[i].apply(config, flag_values[i]); !error.empty()) {
       result.message = "--" + std::string(options[i].name) + ": " + error;
       return result;
     }
   }
   if (std::string error = validate_server_config(config); !error.empty()) {
-    result.message = error;
+    result.message = with_file_origin(error, file_origins);
     return result;
   }
   result.outcome = ConfigLoadResult::Outcome::run;

@@ -5,6 +5,7 @@
 #include "server_config.hpp"
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,7 +29,10 @@ ConfigLoadResult load_config(const std::vector<std::string>& args);
 
 // Applies a TOML document on top of `config` (top-level keys named like the flags, plus
 // [[schedule]] entries). `source` names the document in errors. Returns "" or the error.
-std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, std::string_view source);
+// `origins`, when given, receives "source:line" for each top-level key the text set (by option
+// name), so that an error found later, on the whole configuration, can point at the line.
+std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, std::string_view source,
+                              std::map<std::string, std::string>* origins = nullptr);
 
 // The --help text.
 std::string config_help(std::string_view program);
