@@ -31,7 +31,8 @@ int main(int argc, char** argv) {
                  "fail over to, round robin")
       ->required();
   ocean::viewer::add_output_flags(
-      app, o, {300, 10000000, "print one JSON summary {frames, fps, kbps, cpu_ms_per_frame, ...}"});
+      app, o, {300, 10000000, "print one JSON summary {frames, fps, kbps, cpu_ms_per_frame, ...}; its kbps is every byte received over the whole run, "
+       "keyframe included (the HUD's kbit/s is the last second's rate)"});
   app.add_option("--profile", o.profile, "stream profile to ask for (" + profile_names() + ")");
   app.add_option("--transport", o.transport, "udp (falls back to tcp when UDP fails) or tcp")
       ->check(CLI::IsMember({"udp", "tcp"}));

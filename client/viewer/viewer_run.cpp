@@ -80,8 +80,13 @@ class NetworkSource final : public FrameSource {
 
 render::HudStats NetworkSource::hud_stats(double fps) const {
   const NetworkStats net = net_.stats();
-  char extra[160];
-  std::snprintf(extra, sizeof extra, "%s %s grid %d rx %llu reconnects %llu", net.connected ? "connected" : "reconnecting",
+  char extra[224];
+  // Not connected: say why the last session ended ("connection refused", "server_full: ..."),
+  // so a viewer with no server does not just show the sky.
+  const std::string state = net.connected ? "connected"
+                            : net.last_close_reason.empty() ? "connecting"
+                                                            : "reconnecting (" + net.last_close_reason.substr(0, 60) + ")";
+  std::snprintf(extra, sizeof extra, "%s %s grid %d rx %llu reconnects %llu", state.c_str(),
                 net.path.c_str(), view_.shape().grid, static_cast<unsigned long long>(net.frames_received),
                 static_cast<unsigned long long>(net.connects > 0 ? net.connects - 1 : 0));
   const double delay_ms = interpolation_delay_ms(options_, view_);
