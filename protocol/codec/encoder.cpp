@@ -49,7 +49,11 @@ Encoder::Encoder(const StreamConfig& config, EncoderOptions options)
     throw std::invalid_argument("EncoderOptions.key_velocity_extra_bits must be in [0, 16]");
 }
 
-void Encoder::set_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene) { scenes_.add(from, tag, scene); }
+void Encoder::set_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene) {
+  scenes_.add(from, tag, scene);
+  advanced_.clear();  // advanced under the timeline as it was
+  predictions_.clear();
+}
 
 void Encoder::add_truth(Tick tick, const TruthView& truth) {
   const std::size_t nn = static_cast<std::size_t>(model_.n()) * model_.n();
@@ -96,6 +100,7 @@ void Encoder::evict() {
     const auto key = key_ids_.find(id.tick);
     return key == key_ids_.end() || key->second != id;
   });
+  std::erase_if(advanced_, [&](const auto& item) { return states_.count(item.first) == 0; });
   while (!key_ids_.empty() && key_ids_.begin()->first < oldest_key) key_ids_.erase(key_ids_.begin());
   const Tick oldest_frame =
       options_.frame_cache_ticks == 0 ? oldest : (newest_ >= options_.frame_cache_ticks ? newest_ - options_.frame_cache_ticks + 1 : 0);
@@ -118,7 +123,7 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_key(Tick tick) {
     throw std::invalid_argument("Encoder::encode_key(" + std::to_string(tick) + "): no scene set for this tick");
   ModalState predicted;
   scenes_.model_state(tick, predicted);
-  const Corrections corrections = correct(tick, predicted);
+  const Corrections corrections = correct_once(tick, predicted);
   const double samples = static_cast<double>(model_.n()) * model_.n() * (config_.normals ? 3 : 1);
   if (static_cast<double>(corrections.total()) > options_.modeled_key_max_correction_share * samples &&
       tick > 0 && truth_.count(tick - 1) != 0)
@@ -183,12 +188,38 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_delta(Tick tick, StateId bas
     throw std::invalid_argument("Encoder::encode_delta: no truth for tick " + std::to_string(tick));
   if (!scenes_.at(baseline.tick))
     throw std::invalid_argument("Encoder::encode_delta: no scene set for tick " + std::to_string(baseline.tick));
-  ModalState predicted = st->second;
-  scenes_.advance(predicted, baseline.tick, tick);
-  const Corrections corrections = correct(tick, predicted);
+  ModalState predicted = advanced(baseline, st->second, tick);
+  const Corrections corrections = correct_once(tick, predicted);
   auto frame = finish_frame(tick, std::move(predicted), corrections, nullptr, baseline);
   deltas_[cache_key] = frame;
   return frame;
+}
+
+ModalState Encoder::advanced(StateId baseline, const ModalState& state, Tick tick) {
+  auto [it, fresh] = advanced_.try_emplace(baseline);
+  Advanced& a = it->second;
+  if (fresh || a.tick > tick) {
+    a.tick = baseline.tick;
+    a.state = state;
+  }
+  scenes_.advance(a.state, a.tick, tick);
+  a.tick = tick;
+  return a.state;
+}
+
+Corrections Encoder::correct_once(Tick tick, const ModalState& predicted) {
+  if (predictions_tick_ != tick) {
+    predictions_.clear();
+    predictions_tick_ = tick;
+  }
+  for (const Prediction& p : predictions_)
+    if (p.state == predicted) {
+      fields_ = p.fields;
+      return p.corrections;
+    }
+  Corrections corrections = correct(tick, predicted);
+  if (predictions_.size() < kMaxPredictionsPerTick) predictions_.push_back({predicted, corrections, fields_});
+  return corrections;
 }
 
 // Synthesizes the prediction into fields_ and returns the corrections that bring every sample

@@ -99,6 +99,13 @@ class Encoder {
     int pos_shift = 0, vel_shift = 0;
   };
   Corrections correct(Tick tick, const ModalState& predicted);
+  // correct(), run once per distinct prediction of a tick: deltas from different baselines (and
+  // a modeled key) mostly predict the very same state, and its corrections and fields follow
+  // from that state and the tick's truth alone.
+  Corrections correct_once(Tick tick, const ModalState& predicted);
+  // Where a delta from `baseline` to `tick` starts: the state a delta from the same baseline was
+  // last advanced to (advancing composes, so this is bit-exact), else the baseline itself.
+  ModalState advanced(StateId baseline, const ModalState& state, Tick tick);
   std::shared_ptr<const EncodedFrame> explicit_key(Tick tick);
   std::shared_ptr<EncodedFrame> finish_frame(Tick tick, ModalState predicted, const Corrections& corrections,
                                              const KeyCoding* key, StateId base);
@@ -115,6 +122,22 @@ class Encoder {
   std::map<Tick, std::shared_ptr<const EncodedFrame>> keys_;  // cached frames (frame_cache_ticks)
   std::map<Tick, StateId> key_ids_;                             // every key's state, for key_history_ticks
   std::map<std::pair<Tick, StateId>, std::shared_ptr<const EncodedFrame>> deltas_;
+  // Each baseline's state as last advanced for a delta, and the tick it reached: a session's next
+  // delta from the same baseline advances by the ticks since, not by its whole lag again.
+  struct Advanced {
+    Tick tick = 0;
+    ModalState state;
+  };
+  std::map<StateId, Advanced> advanced_;
+  // This tick's distinct predictions with what correct() made of them.
+  struct Prediction {
+    ModalState state;
+    Corrections corrections;
+    SampleFields fields;
+  };
+  static constexpr std::size_t kMaxPredictionsPerTick = 8;
+  Tick predictions_tick_ = 0;
+  std::vector<Prediction> predictions_;
   std::uint32_t next_serial_ = 1;
   Tick newest_ = 0;
   bool have_truth_ = false;
