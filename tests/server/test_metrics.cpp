@@ -4,8 +4,11 @@
 #include <catch2/catch.hpp>
 
 #include <ctime>
+#include <fstream>
 
+#include <cstring>
 #include <map>
+#include <set>
 #include <regex>
 #include <sstream>
 
@@ -208,4 +211,29 @@ TEST_CASE("server metrics register the documented families", "[metrics]") {
   CHECK(build->labels.at("protocol") == "2");
   CHECK(build->labels.at("codec") == "2");
   CHECK(!build->labels.at("version").empty());
+}
+
+TEST_CASE("README-server's metrics table names every family the server registers", "[metrics]") {
+  MetricsRegistry registry;
+  ServerMetrics metrics(registry);
+  metrics.encode_seconds("mobile").observe(0.001);
+  metrics.update_process();
+  std::vector<std::string> bad;
+  std::ifstream in(OCEAN_README_SERVER);
+  REQUIRE(in);
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::set<std::string> families;
+  for (const Sample& sample : parse_all(registry.render(), bad)) {
+    std::string name = sample.name;
+    for (const char* suffix : {"_sum", "_count"})
+      if (name.size() > std::strlen(suffix) && name.compare(name.size() - std::strlen(suffix), std::string::npos, suffix) == 0 &&
+          readme.find("`" + name + "`") == std::string::npos)
+        name.resize(name.size() - std::strlen(suffix));  // a summary's series
+    families.insert(name);
+  }
+  CHECK(families.size() > 30);
+  for (const std::string& family : families) {
+    INFO(family);
+    CHECK(readme.find("`" + family + "`") != std::string::npos);
+  }
 }
