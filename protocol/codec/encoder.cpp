@@ -76,6 +76,7 @@ void Encoder::add_truth(Tick tick, const TruthView& truth) {
           throw std::invalid_argument("Encoder::add_truth: slope " + std::to_string(v) +
                                       " is not finite or beyond 2^20 slope steps");
   }
+  if (tick == predictions_tick_) predictions_.clear();  // corrected against the truth it replaces
   TruthFrame& f = truth_[tick];
   f.height.assign(truth.height.begin(), truth.height.end());
   if (config_.normals) {
