@@ -37,6 +37,15 @@ inline constexpr int kTcpClients = 3;
 inline constexpr std::uint8_t kMobile = 1;
 inline constexpr std::uint8_t kDesktop = 2;
 inline constexpr double kOnTimeShare = 0.99;  // what the well-behaved clients must keep
+
+// Under a sanitizer (OCEAN_SANITIZE) the attacked server runs 2-15x slower than the unattacked one
+// beside it has to, so on-time shares and deadlines measure the instrumentation, not the server:
+// they are printed, and asserted only in an uninstrumented build (CI's Release run).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+inline constexpr bool kTimingMeasurable = false;
+#else
+inline constexpr bool kTimingMeasurable = true;
+#endif
 inline constexpr int kControlClients = 3;
 
 struct FaultMeasure {
@@ -131,6 +140,12 @@ inline void start_population(FaultScenario& s) {
 // True when the machine kept the unattacked server's clients on time over the fault's ticks, so
 // late frames of the attacked server's clients are the fault's doing; else printed as inconclusive.
 inline bool machine_kept_up(const FaultMeasure& m) {
+  if (!kTimingMeasurable) {
+    std::printf("[faults] NOT ASSERTED under a sanitizer: on-time share %.2f%% (unattacked server: %.2f%%)\n",
+                100.0 * m.window.on_time_share(), 100.0 * m.control.on_time_share());
+    std::fflush(stdout);
+    return false;
+  }
   if (m.control.on_time_share() >= kOnTimeShare) return true;
   std::printf("[faults] INCONCLUSIVE on-time share %.2f%%: the unattacked server's clients kept only %.2f%% (busy machine)\n",
               100.0 * m.window.on_time_share(), 100.0 * m.control.on_time_share());

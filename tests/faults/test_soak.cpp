@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "client_population.hpp"
+#include "fault_scenario.hpp"
 #include "http_probe.hpp"
 #include "json_value.hpp"
 #include "message_builders.hpp"
@@ -37,13 +38,7 @@ constexpr std::int64_t kEpochUnixMs = 1767225600000;  // 2026-01-01T00:00:00Z, t
 constexpr int kTickRateHz = 30;
 constexpr int kLoadClients = 200;
 constexpr int kVictimsUdp = 5, kVictimsTcp = 1;
-constexpr std::uint8_t kMobile = 1;
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr bool kTimingMeasurable = false;  // 2-15x slower: figures are printed, not asserted
-#else
-constexpr bool kTimingMeasurable = true;
-#endif
 
 // Two minutes; 30 s under a sanitizer, where only correctness is asserted.
 double soak_seconds() {
