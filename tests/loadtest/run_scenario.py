@@ -67,12 +67,19 @@ def weather_checks(s):
 SCENARIO_CHECKS = {"edge-2g": first_frame_checks, "gprs": first_frame_checks, "weather-front": weather_checks}
 
 
-def check(scenario, summary):
+def check(scenario, summary, sanitized=False):
     failures = []
     if summary["frames_bad"] != 0:
         failures.append(f"frames_bad = {summary['frames_bad']} (must be 0; max_err_m = {summary['max_err_m']})")
     if summary["frames_expected"] <= 0:
         failures.append("no frames were expected: the clients never got a Welcome")
+    if sanitized:
+        # A sanitizer build runs server and clients several times slower (desktop-lan: both at
+        # 80-90 % of a core, 27-71 % on time): timing floors measure the instrumentation there, so
+        # only correctness is asserted; CI's Release run asserts the floors.
+        print(f"NOT ASSERTED under a sanitizer: frames_ok_pct = {summary['frames_ok_pct']:.2f} "
+              f"(floor {OK_PCT_FLOOR[scenario]})", file=sys.stderr)
+        return failures
     floor = OK_PCT_FLOOR[scenario]
     if summary["frames_ok_pct"] < floor:
         failures.append(f"frames_ok_pct = {summary['frames_ok_pct']:.2f} < {floor}")
@@ -86,6 +93,7 @@ def main():
     ap.add_argument("--scenario", required=True)
     ap.add_argument("--clients", default="4")
     ap.add_argument("--duration", default="3")
+    ap.add_argument("--sanitized", action="store_true", help="binaries built with a sanitizer: assert no timing")
     args = ap.parse_args()
 
     entry = local_server.scenario(args.loadtest_bin, args.scenario)
@@ -117,7 +125,7 @@ def main():
                 return 1
             summary = json.loads(run.stdout.strip().splitlines()[-1])
             print(json.dumps(summary))
-            failures = check(args.scenario, summary)
+            failures = check(args.scenario, summary, args.sanitized)
             for f in failures:
                 print("FAIL:", f, file=sys.stderr)
             return 1 if failures else 0
