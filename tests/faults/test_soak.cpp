@@ -10,11 +10,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <random>
 #include <string>
 #include <thread>
-#include <unistd.h>
 #include <vector>
 
 #include "client_population.hpp"
@@ -24,10 +22,12 @@
 #include "message_builders.hpp"
 #include "raw_peers.hpp"
 #include "server_process.hpp"
+#include "temp_file.hpp"
 
 using namespace ocean::faults;
 using ocean::test_support::ServerOptions;
 using ocean::test_support::ServerProcess;
+using ocean::test_support::TempFile;
 namespace proto = ocean::protocol;
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
@@ -53,19 +53,6 @@ std::int64_t tick_now() {
       std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
   return (now_ms - kEpochUnixMs) * kTickRateHz / 1000;
 }
-
-class TempFile {
- public:
-  TempFile(const std::string& name, const std::string& text)
-      : path_("/tmp/ocean-soak-" + std::to_string(::getpid()) + "-" + name) {
-    std::ofstream(path_) << text;
-  }
-  ~TempFile() { std::remove(path_.c_str()); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
 
 std::string config_text(const std::string& token_file, std::int64_t change_tick) {
   return "listen = \"127.0.0.1:0\"\nmetrics-listen = \"127.0.0.1:0\"\nsize = 64\npatch = 64.0\n"
@@ -107,10 +94,10 @@ std::uint64_t counter(const std::string& metrics, const std::string& series) {
 
 TEST_CASE("a two-minute soak of every attack leaves 200 viewers on time through a weather change", "[soak]") {
   const double soak_s = soak_seconds();
-  const TempFile token("token", "soak-admin-token-not-guessable\n");
+  const TempFile token("soak-admin-token-not-guessable\n");
   // The weather changes halfway through the attacks (the load test starts ~8 s before them).
   const std::int64_t change_tick = tick_now() + static_cast<std::int64_t>((8.0 + soak_s / 2) * kTickRateHz);
-  const TempFile config("config.toml", config_text(token.path(), change_tick));
+  const TempFile config(config_text(token.path(), change_tick));
   ServerOptions server_options;
   server_options.args = {"--config", config.path()};
   ServerProcess server(server_options);

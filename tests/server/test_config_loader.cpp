@@ -8,7 +8,7 @@
 #include <cmath>
 
 using namespace ocean::server;
-using ocean::server::test::TempFile;
+using ocean::test_support::TempFile;
 using Outcome = ConfigLoadResult::Outcome;
 
 namespace {

@@ -2,19 +2,17 @@
 #include <catch2/catch.hpp>
 
 #include <csignal>
-#include <cstdio>
-#include <fstream>
-#include <map>
-#include <unistd.h>
 #include <string>
 #include <vector>
 
 #include "server_process.hpp"
+#include "temp_file.hpp"
 
 namespace {
 
 using ocean::test_support::ServerOptions;
 using ocean::test_support::ServerProcess;
+using ocean::test_support::TempFile;
 
 // The constructor does not wait for "listening": these servers are expected to exit, and the
 // SIGTERM test checks the line itself.
@@ -44,33 +42,21 @@ TEST_CASE("ocean-server refuses a bad value with status 2 and a message naming i
   CHECK(child.log().find("[0, 100]") != std::string::npos);
 }
 
-// A config file holding `text`, one per distinct text, removed when the test process ends.
-std::string config_file(const std::string& text) {
-  static std::map<std::string, std::string> files;
-  static struct Cleanup {
-    ~Cleanup() {
-      for (const auto& [text, path] : files) std::remove(path.c_str());
-    }
-  } cleanup;
-  auto [it, fresh] = files.try_emplace(text, "/tmp/ocean-process-test-" + std::to_string(::getpid()) + "-" +
-                                                 std::to_string(files.size()) + ".toml");
-  if (fresh) std::ofstream(it->second) << text;
-  return it->second;
-}
-
 TEST_CASE("ocean-server exits 2 on stderr for every configuration error of issue 18's list", "[process]") {
   // The systemd unit does not restart on 2: these must not exit 1 and be restarted forever.
   const std::vector<std::string> local = {"--listen", "127.0.0.1:0", "--metrics-listen", "off"};
+  const TempFile out_of_range("wind-speed = 150.0\n"), bad_rate("seed = 1\ntick-rate = 7\n"), empty(""),
+      negative_tick("[[schedule]]\ntick = -5\nwind-speed = 3.0\n");
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--size", "64", "--profiles", "lite", "--epoch", "0"}, "ocean-server: --epoch 0: the current time is"},
       {{"--size", "256", "--profiles", "desktop-choppy"}, "ocean-server: --profiles: no offered profile can be streamed"},
       {{"--size", "16"}, "ocean-server: --profiles: profile 'mobile' streams a 64x64 grid, larger than the simulation (--size 16)"},
-      {{"--config", config_file("wind-speed = 150.0\n")}, "ocean-server: " + config_file("wind-speed = 150.0\n") + ":1: --wind-speed"},
-      {{"--config", config_file("seed = 1\ntick-rate = 7\n")}, "ocean-server: " + config_file("seed = 1\ntick-rate = 7\n") + ":2: --tick-rate 7"},
-      {{"--config", config_file("")}, "ocean-server: --config: file '" + config_file("") + "' is empty"},
+      {{"--config", out_of_range.path()}, "ocean-server: " + out_of_range.path() + ":1: --wind-speed"},
+      {{"--config", bad_rate.path()}, "ocean-server: " + bad_rate.path() + ":2: --tick-rate 7"},
+      {{"--config", empty.path()}, "ocean-server: --config: file '" + empty.path() + "' is empty"},
       {{"--config", "/tmp"}, "ocean-server: --config: '/tmp' is not a regular file"},
-      {{"--config", config_file("[[schedule]]\ntick = -5\nwind-speed = 3.0\n")},
-       "ocean-server: " + config_file("[[schedule]]\ntick = -5\nwind-speed = 3.0\n") + ":1: schedule entry 1: tick = -5 is negative"},
+      {{"--config", negative_tick.path()},
+       "ocean-server: " + negative_tick.path() + ":1: schedule entry 1: tick = -5 is negative"},
   };
   for (const auto& [args, message] : cases) {
     std::vector<std::string> all = local;

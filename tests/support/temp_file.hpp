@@ -7,7 +7,7 @@
 #include <string>
 #include <unistd.h>
 
-namespace ocean::server::test {
+namespace ocean::test_support {
 
 class TempFile {
  public:
@@ -27,4 +27,4 @@ class TempFile {
   std::filesystem::path path_;
 };
 
-}  // namespace ocean::server::test
+}  // namespace ocean::test_support
