@@ -11,6 +11,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstring>
 
 namespace ocean::server {
@@ -31,7 +32,7 @@ void SessionCore::on_datagram(std::span<const std::uint8_t> bytes, const asio::i
   const wire::Message* message = verified.message;
   const std::uint64_t session_id = verified ? core::named_session(*message) : 0;
   const auto found = sessions_.find(session_id);
-  const bool proven = found != sessions_.end() && found->second->udp && found->second->udp->endpoint() == sender;
+  bool proven = found != sessions_.end() && found->second->udp && found->second->udp->endpoint() == sender;
   if (!proven) {
     unproven_bytes_in_ += bytes.size();
     host_.metrics.udp_unproven_bytes_in.inc(static_cast<double>(bytes.size()));
@@ -39,6 +40,7 @@ void SessionCore::on_datagram(std::span<const std::uint8_t> bytes, const asio::i
   if (!verified) return drop_datagram(verified.reason, sender);
   if (found == sessions_.end()) return drop_datagram(protocol::Reason::bad_session, sender);
   Session& session = *found->second;
+  if (!proven) proven = reclaim_udp(session, *message, sender);
   if (message->body_type() == wire::Body::UdpHello)
     return on_udp_hello(session, *message, bytes.size(), proven, sender, now);
   if (!proven) return drop_datagram(protocol::Reason::bad_session, sender);  // address not proven
@@ -62,7 +64,7 @@ void SessionCore::on_udp_hello(Session& session, const wire::Message& message, s
   // traffic can replay it from another port of the client's IP (the cookie cannot bind the port,
   // which a NAT may change). A real rebinding leaves the old address silent; a replay does not.
   const bool moving = !proven && session.udp.has_value();
-  if (moving && now.monotonic_s - session.udp_heard_s < options_.udp_rebind_quiet_s) {
+  if (moving && now.monotonic_s - session.udp_heard_s < rebind_quiet_s(session)) {
     host_.metrics.udp_rebinds_refused.inc();
     log_limited(spdlog::level::info, "udp_rebind_refused", endpoint_text(sender),
                 "udp rebind refused session={} peer={} proven={}: the proven address is still live", session.id,
@@ -77,11 +79,37 @@ void SessionCore::on_udp_hello(Session& session, const wire::Message& message, s
   }
   if (ready.size() <= datagram_bytes) host_.datagrams.send_datagram(ready, sender);
   if (proven) return;
-  if (moving) host_.metrics.udp_rebinds.inc();
+  if (moving) {
+    host_.metrics.udp_rebinds.inc();
+    session.udp_moved_from = session.udp->endpoint();
+  }
   log_limited(spdlog::level::info, "udp_proven", endpoint_text(sender), "udp {} session={} peer={}",
               moving ? "moved" : "proven", session.id, endpoint_text(sender));
   session.udp.emplace(host_.datagrams, sender);
   update_client_gauges();
+}
+
+// A replay can still win while the client is silent a moment (a stalled phone, a burst of loss):
+// the address it took the stream from is the client's, so a valid datagram from there takes the
+// stream back at once, and the session's next move waits longer. A NAT that really rebound never
+// sends from the old port again.
+bool SessionCore::reclaim_udp(Session& session, const wire::Message& message, const asio::ip::udp::endpoint& sender) {
+  if (!session.udp || session.udp_moved_from != sender) return false;
+  if (protocol::check_udp_sender(message, session.id, session.cookie) != protocol::Reason::ok) return false;
+  host_.metrics.udp_rebinds_reclaimed.inc();
+  log_limited(spdlog::level::warn, "udp_rebind_reclaimed", endpoint_text(sender),
+              "udp rebind undone session={} peer={} from={}: the address it moved away from spoke again", session.id,
+              endpoint_text(sender), session.udp->peer());
+  session.udp.emplace(host_.datagrams, sender);
+  session.udp_moved_from.reset();
+  ++session.udp_reclaims;
+  return true;
+}
+
+double SessionCore::rebind_quiet_s(const Session& session) const {
+  double quiet = options_.udp_rebind_quiet_s;
+  for (int i = 0; i < session.udp_reclaims && quiet < options_.udp_rebind_quiet_max_s; ++i) quiet *= 4.0;
+  return std::min(quiet, options_.udp_rebind_quiet_max_s);
 }
 
 }  // namespace ocean::server

@@ -58,6 +58,8 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
                                    "Proven UDP addresses moved to a new port after the old one went quiet.")),
       udp_rebinds_refused(registry.counter("ocean_udp_rebinds_refused_total",
                                            "UdpHellos refused because they would move a live proven address.")),
+      udp_rebinds_reclaimed(registry.counter("ocean_udp_rebinds_reclaimed_total",
+                                             "UDP moves undone because the address moved away from spoke again.")),
       registry_(registry),
       resident_bytes_(registry.gauge("process_resident_memory_bytes", "Resident memory of the server process, bytes.")),
       cpu_seconds_(registry.gauge("process_cpu_seconds_total", "User and system CPU time of the server process, seconds.")),

@@ -41,6 +41,7 @@ class ServerMetrics {
   Counter& udp_unproven_bytes_out;  // UDP bytes answered to them
   Counter& udp_rebinds;             // proven UDP addresses moved to a new port (NAT rebinding)
   Counter& udp_rebinds_refused;     // UdpHellos that would move a live proven address (replays)
+  Counter& udp_rebinds_reclaimed;   // moves undone because the old address spoke again
 
   Counter& frames_computed(std::string_view profile);
   Summary& encode_seconds(std::string_view profile);  // encoder time of that profile in a tick that encoded

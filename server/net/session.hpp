@@ -33,6 +33,10 @@ struct Session {
   bool wants_udp = false;                   // Hello / SetTransport
   std::optional<UdpLink> udp;               // the address a UdpHello proved
   double udp_heard_s = 0.0;                 // the last valid datagram from that address
+  // The address the last rebinding moved the stream away from: if it speaks again the move was a
+  // replay (a NAT that rebinds leaves the old port silent), and the stream goes back to it.
+  std::optional<asio::ip::udp::endpoint> udp_moved_from;
+  int udp_reclaims = 0;                     // how often that happened: each makes the next move wait longer
   bool ending = false;                      // Bye or Error sent, closing after a flush
   bool admitted = false;                    // counted by Admission (its address's connections)
   int token_failures = 0;                   // ParamChanges with a wrong admin token

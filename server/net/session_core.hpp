@@ -51,7 +51,10 @@ struct SessionCoreOptions {
   std::size_t max_encodes_per_tick = 64;
   // A proven UDP address moves to another port only after this long without a valid datagram
   // from it (a replayed UdpHello cannot take a live stream; a NAT rebinding still moves it).
+  // Each time the old address speaks again and takes its stream back, the session's next move
+  // waits four times as long, up to udp_rebind_quiet_max_s.
   double udp_rebind_quiet_s = 0.5;
+  double udp_rebind_quiet_max_s = 60.0;
   // ParamChanges with a wrong admin token a connection may send before it is closed.
   int token_failures_per_connection = 3;
 };
@@ -125,6 +128,8 @@ class SessionCore {
   void on_session_message(Session& session, const wire::Message& message, Link& reply, const Instant& now);
   void on_udp_hello(Session& session, const wire::Message& message, std::size_t datagram_bytes, bool proven,
                     const asio::ip::udp::endpoint& sender, const Instant& now);
+  bool reclaim_udp(Session& session, const wire::Message& message, const asio::ip::udp::endpoint& sender);
+  double rebind_quiet_s(const Session& session) const;
 
   void serve(Session& session, Tick tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
   void send_key(Session& session, ProfileStream& stream, Tick tick, double now_s);

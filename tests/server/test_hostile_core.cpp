@@ -1,6 +1,7 @@
 // Peers without a token against the session core, in memory and with a fake clock (issue 16):
 // the log stays small under floods, a replayed UdpHello cannot move a live UDP stream while a
-// quiet one still moves (NAT rebinding), silent connections never take viewer slots, token
+// quiet one still moves (NAT rebinding) and a replay that won while the client was silent loses
+// the stream when it speaks again, silent connections never take viewer slots, token
 // guessing is capped per connection and per address, and each timeout is counted once.
 #include <catch2/catch.hpp>
 
@@ -175,6 +176,75 @@ TEST_CASE("a UdpHello replayed from another port cannot move a live UDP stream; 
   CHECK(udp_sent_to(victim) == 0);
   CHECK(m.udp_unproven_bytes_in.value() >= 1200.0 * 256);  // the replays were unproven traffic
   CHECK(m.udp_unproven_bytes_out.value() > 0.0);
+}
+
+TEST_CASE("a replay that moved a stream while its client was silent loses it when the client speaks again") {
+  Rig r;
+  auto link = r.connect(0.0);
+  const std::uint64_t id = r.hello(*link, 0.0);
+  REQUIRE(id != 0);
+  const asio::ip::udp::endpoint victim(kLocal, 40001), thief(kLocal, 40002);
+  const proto::Bytes hello = proto::encode(proto::UdpHello{id, r.cookie});
+  double now = 0.1;
+  r.rig.core().on_datagram(hello, victim, CoreRig::at(now));
+  auto ping_from = [&](const asio::ip::udp::endpoint& from) {
+    proto::Ping ping;
+    ping.session_id = id;
+    ping.cookie = r.cookie;
+    r.rig.core().on_datagram(proto::encode(ping), from, CoreRig::at(now));
+  };
+  auto udp_sent_to = [&](const asio::ip::udp::endpoint& to) {
+    int n = 0;
+    for (const auto& d : r.datagrams.take()) n += d.to == to;
+    return n;
+  };
+  // The victim stalls for 0.6 s (over udp_rebind_quiet_s) while the thief replays its hello
+  // every tick: the stream moves to the thief.
+  auto thief_replays_while_victim_stalls = [&](double stall_s) {
+    for (const double until = now + stall_s; now < until;) {
+      now += r.rig.tick_period_s();
+      r.rig.core().on_datagram(hello, thief, CoreRig::at(now));
+      r.rig.step(now);
+    }
+  };
+  ServerMetrics& m = r.rig.metrics();
+  for (int i = 0; i < 10; ++i) {
+    now += r.rig.tick_period_s();
+    ping_from(victim);
+    r.rig.step(now);
+  }
+  r.datagrams.take();
+  thief_replays_while_victim_stalls(0.6);
+  CHECK(m.udp_rebinds.value() == 1.0);
+  CHECK(udp_sent_to(thief) > 0);  // the replay won while the victim was silent
+
+  // The victim's next datagram (a Ping here; a UdpHello works the same) takes the stream back,
+  // while the thief goes on replaying.
+  ping_from(victim);
+  CHECK(m.udp_rebinds_reclaimed.value() == 1.0);
+  r.datagrams.take();
+  for (int i = 0; i < 30; ++i) {
+    now += r.rig.tick_period_s();
+    r.rig.core().on_datagram(hello, thief, CoreRig::at(now));
+    ping_from(victim);
+    r.rig.step(now);
+  }
+  CHECK(udp_sent_to(thief) == 0);  // main: the thief kept the stream for good
+  // The same stall again no longer moves it: a session that was reclaimed waits 2 s to move.
+  thief_replays_while_victim_stalls(0.6);
+  CHECK(udp_sent_to(thief) == 0);
+  CHECK(m.udp_rebinds.value() == 1.0);
+
+  // A reclaim is not a way in for the thief: its datagrams from the port the stream left are not
+  // the old address, and a Ping from it changes nothing.
+  ping_from(thief);
+  CHECK(m.udp_rebinds_reclaimed.value() == 1.0);
+
+  // A NAT that really rebinds (the old port silent for good) still moves the stream, later.
+  const asio::ip::udp::endpoint rebound(kLocal, 40003);
+  now += 2.1;
+  r.rig.core().on_datagram(hello, rebound, CoreRig::at(now));
+  CHECK(m.udp_rebinds.value() == 2.0);
 }
 
 TEST_CASE("silent connections wait in their own budget and never take a viewer's slot") {
