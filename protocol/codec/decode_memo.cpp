@@ -1,7 +1,5 @@
 #include "decode_memo.hpp"
 
-#include "state_hash.hpp"
-
 #include <algorithm>
 
 namespace ocean::codec {
@@ -16,6 +14,15 @@ std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
 std::uint64_t key_hash(Tick tick, const DecodeMemo::Payloads& chunks) {
   std::uint64_t h = fnv1a({}) ^ tick;
   for (const auto& c : chunks) h = (h * 1099511628211ull) ^ fnv1a(c);
+  return h;
+}
+
+// Interning only needs equal states to collide: a word at a time (hash_state, the documented
+// fingerprint, goes byte by byte and cost a load test 7 % of its time).
+std::uint64_t intern_hash(const ModalState& s) {
+  std::uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (const auto* v : {&s.prev.re, &s.prev.im, &s.cur.re, &s.cur.im})
+    for (const std::int64_t x : *v) h = (h ^ static_cast<std::uint64_t>(x)) * 0xBF58476D1CE4E5B9ull + (h >> 31);
   return h;
 }
 
@@ -42,6 +49,21 @@ void DecodeMemo::saw_tick(Tick tick) {
   while (!states_.empty() && states_.begin()->first < oldest) states_.erase(states_.begin());
   std::erase_if(deltas_, [oldest](const auto& item) { return item.first.tick < oldest; });
   std::erase_if(keys_, [oldest](const auto& item) { return item.second.tick < oldest; });
+  std::erase_if(advanced_, [oldest](const auto& item) { return item.second.from < oldest; });
+}
+
+void DecodeMemo::advance(const State& baseline, Tick from, Tick to, const SceneTimeline& scenes, ModalState& out) {
+  auto found = advanced_.find(baseline.get());
+  if (found == advanced_.end() || found->second.reached > to) {
+    out = *baseline;
+    scenes.advance(out, from, to);
+    if (found == advanced_.end()) advanced_.emplace(baseline.get(), Advanced{baseline, from, to, out});
+    return;
+  }
+  Advanced& a = found->second;
+  scenes.advance(a.state, a.reached, to);
+  a.reached = to;
+  out = a.state;
 }
 
 const DecodeMemo::Result* DecodeMemo::find_key(Tick tick, const Payloads& chunks) {
@@ -65,7 +87,7 @@ const DecodeMemo::Result& DecodeMemo::remember_key(Tick tick, const Payloads& ch
 DecodeMemo::State DecodeMemo::intern(Tick tick, ModalState&& state) {
   saw_tick(tick);
   auto& same_tick = states_[tick];
-  const std::uint64_t hash = hash_state(state);
+  const std::uint64_t hash = intern_hash(state);
   const auto [begin, end] = same_tick.equal_range(hash);
   for (auto it = begin; it != end; ++it) {
     if (*it->second == state) {

@@ -8,6 +8,7 @@
 
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
+#include "scene_timeline.hpp"
 #include "stream_config.hpp"
 #include "tick.hpp"
 
@@ -46,6 +47,11 @@ class DecodeMemo {
   const Result& remember(const State& baseline, Tick tick, std::span<const std::uint8_t> payload,
                          State state, ReconstructedFrame&& frame);
 
+  // `out` = `baseline` (the interned state of tick `from`) advanced to `to` through `scenes`.
+  // Deltas of successive ticks from one baseline ask for successive ticks, and advancing
+  // composes exactly, so each asks only for the steps past the newest one asked before.
+  void advance(const State& baseline, Tick from, Tick to, const SceneTimeline& scenes, ModalState& out);
+
   // Keys, by the payloads of all their chunks in index order.
   using Payloads = std::vector<std::vector<std::uint8_t>>;
   const Result* find_key(Tick tick, const Payloads& chunks);
@@ -67,6 +73,12 @@ class DecodeMemo {
     Result result;
   };
 
+  struct Advanced {
+    State baseline;  // held, as in Entry
+    Tick from, reached;
+    ModalState state;  // baseline advanced to `reached`
+  };
+
   struct KeyEntry {
     Tick tick;
     Payloads chunks;
@@ -82,6 +94,7 @@ class DecodeMemo {
   std::uint64_t frame_ids_ = 0;
   std::unordered_map<Key, std::vector<Entry>, KeyHash> deltas_;
   std::multimap<std::uint64_t, KeyEntry> keys_;  // by content hash
+  std::unordered_map<const ModalState*, Advanced> advanced_;  // by baseline object
   std::map<Tick, std::unordered_multimap<std::uint64_t, State>> states_;  // tick -> content hash -> state
   Counts counts_;
 };

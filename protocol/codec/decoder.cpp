@@ -101,8 +101,12 @@ ChunkError Decoder::accept(const ChunkView& c) {
       if (c.key) {
         scenes_.model_state(c.tick, p.predicted);
       } else {
-        p.predicted = *states_.at(c.baseline);
-        scenes_.advance(p.predicted, c.baseline, c.tick);
+        if (options_.memo) {
+          options_.memo->advance(states_.at(c.baseline), c.baseline, c.tick, scenes_, p.predicted);
+        } else {
+          p.predicted = *states_.at(c.baseline);
+          scenes_.advance(p.predicted, c.baseline, c.tick);
+        }
       }
       model_.synthesize(p.predicted.cur, p.fields);
     }

@@ -4,8 +4,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <map>
+
 using namespace ocean::codec;
 using namespace ocean::codec::test;
+using ocean::Tick;
 
 namespace {
 
@@ -76,6 +80,53 @@ TEST_CASE("decoders sharing a memo match a lone decoder bit for bit and share th
   // b found every single-chunk delta that a decoded first.
   CHECK(memo.counts().hits >= 59);
   CHECK(memo.counts().misses >= 59);
+}
+
+TEST_CASE("a memo advances a shared baseline step by step, out of order and across a scene change, bit for bit") {
+  // Sessions on an aligned baseline get deltas of many ticks from one state: the memo advances
+  // that state from the newest tick it reached. The results must equal a lone decoder's.
+  const StreamConfig config = test_config(32, 30);
+  const SyntheticOcean ocean(32, 128.0, 120, 5, 0.4);
+  const double dt = 1.0 / config.rate_hz;
+  constexpr Tick kSceneChange = 24;
+  SceneModelParams storm = test_scene(config);
+  storm.wind_speed_mps *= 1.5;
+  Encoder enc = test_encoder(config, wide_encoder());
+  enc.set_scene(kSceneChange, 1, storm);
+  DecodeMemo memo(config);
+  Decoder lone = test_decoder(config, wide_decoder(nullptr));
+  Decoder a = test_decoder(config, wide_decoder(&memo));
+  Decoder b = test_decoder(config, wide_decoder(&memo));
+  for (Decoder* d : {&lone, &a, &b}) d->add_scene(kSceneChange, 1, storm);
+  enc.add_truth(0, view_of(ocean.at(0.0)));
+  enc.add_truth(1, view_of(ocean.at(dt)));
+  const auto key = enc.encode_key(1);
+  for (Decoder* d : {&lone, &a, &b})
+    for (const Chunk& c : key->chunks) REQUIRE(d->accept(c) == ChunkError::ok);
+  // Every delta from the key's state; b sees the ticks in another order than a.
+  std::vector<Tick> order_a, order_b;
+  for (Tick t = 2; t <= 30; ++t) order_a.push_back(t);
+  order_b = order_a;
+  std::reverse(order_b.begin() + 5, order_b.begin() + 15);
+  std::map<Tick, std::shared_ptr<const EncodedFrame>> deltas;
+  for (Tick t : order_a) {
+    enc.add_truth(t, view_of(ocean.at(t * dt)));
+    deltas[t] = enc.encode_delta(t, key->id);
+    REQUIRE(deltas[t]->chunks.size() == 1);
+  }
+  for (std::size_t i = 0; i < order_a.size(); ++i) {
+    REQUIRE(lone.accept(deltas[order_a[i]]->chunks[0]) == ChunkError::ok);
+    REQUIRE(a.accept(deltas[order_a[i]]->chunks[0]) == ChunkError::ok);
+    REQUIRE(b.accept(deltas[order_b[i]]->chunks[0]) == ChunkError::ok);
+  }
+  for (Tick t : order_a) {
+    INFO("tick " << t);
+    REQUIRE(a.state(t) != nullptr);
+    REQUIRE(b.state(t) != nullptr);
+    CHECK(*lone.state(t) == *a.state(t));
+    CHECK(*lone.state(t) == *b.state(t));
+  }
+  CHECK(*enc.state(deltas[30]->id) == *a.state(30));
 }
 
 TEST_CASE("a key of several chunks is decoded once for every decoder of a memo") {
