@@ -17,6 +17,10 @@ std::uint64_t key_hash(Tick tick, const DecodeMemo::Payloads& chunks) {
   return h;
 }
 
+std::uint64_t key_hash(Tick tick, std::span<const std::uint8_t> single) {
+  return ((fnv1a({}) ^ tick) * 1099511628211ull) ^ fnv1a(single);
+}
+
 // Interning only needs equal states to collide: a word at a time (hash_state, the documented
 // fingerprint, goes byte by byte and cost a load test 7 % of its time).
 std::uint64_t intern_hash(const ModalState& s) {
@@ -74,6 +78,18 @@ const DecodeMemo::Result* DecodeMemo::find_key(Tick tick, const Payloads& chunks
       return &it->second.result;
     }
   ++counts_.misses;
+  return nullptr;
+}
+
+const DecodeMemo::Result* DecodeMemo::find_key(Tick tick, std::span<const std::uint8_t> payload) {
+  const auto [begin, end] = keys_.equal_range(key_hash(tick, payload));
+  for (auto it = begin; it != end; ++it) {
+    const KeyEntry& e = it->second;
+    if (e.tick == tick && e.chunks.size() == 1 && std::equal(e.chunks[0].begin(), e.chunks[0].end(), payload.begin(), payload.end())) {
+      ++counts_.hits;
+      return &e.result;
+    }
+  }
   return nullptr;
 }
 

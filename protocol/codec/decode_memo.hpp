@@ -8,6 +8,7 @@
 
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
+#include "model_cache.hpp"
 #include "scene_timeline.hpp"
 #include "stream_config.hpp"
 #include "tick.hpp"
@@ -37,6 +38,8 @@ class DecodeMemo {
   explicit DecodeMemo(const StreamConfig& config, std::uint32_t window_ticks = 64);
 
   const StreamConfig& config() const { return config_; }
+  // The scene models and recurrences every decoder of this memo shares.
+  ModelCache& models() { return models_; }
   const Counts& counts() const { return counts_; }
 
   // The one object holding a state equal to `state` at `tick`.
@@ -55,6 +58,8 @@ class DecodeMemo {
   // Keys, by the payloads of all their chunks in index order.
   using Payloads = std::vector<std::vector<std::uint8_t>>;
   const Result* find_key(Tick tick, const Payloads& chunks);
+  // A key of one chunk, before its decoder does any work (a miss is counted when it completes).
+  const Result* find_key(Tick tick, std::span<const std::uint8_t> payload);
   const Result& remember_key(Tick tick, const Payloads& chunks, State state, ReconstructedFrame&& frame);
 
  private:
@@ -89,6 +94,7 @@ class DecodeMemo {
   Result shared_result(State state, ReconstructedFrame&& frame);  // frame gets a fresh shared_id
 
   StreamConfig config_;
+  ModelCache models_;
   std::uint32_t window_;
   Tick newest_ = 0;
   std::uint64_t frame_ids_ = 0;

@@ -12,6 +12,7 @@ Decoder::Decoder(const StreamConfig& config, DecoderOptions options)
     throw std::invalid_argument("DecoderOptions: history_ticks, max_lag and max_pending must be >= 1");
   if (options.memo && !(options.memo->config() == config))
     throw std::invalid_argument("DecoderOptions: the memo belongs to another stream configuration");
+  if (options.memo) scenes_.share_models(&options.memo->models());
 }
 
 std::optional<Tick> Decoder::newest_complete() const {
@@ -141,11 +142,13 @@ void Decoder::show(Tick tick) {
   shown_shared_.reset();
 }
 
-// A single-chunk delta whose exact bytes the memo has seen on this very baseline state.
+// A single-chunk frame whose exact bytes the memo has seen: a key of this tick, or a delta on this
+// very baseline state. Before any work: a modeled key would otherwise build its model state first.
 bool Decoder::accept_remembered(const ChunkView& c) {
   DecodeMemo* memo = options_.memo;
-  if (!memo || c.key || c.count != 1) return false;
-  const DecodeMemo::Result* r = memo->find(states_.at(c.baseline), c.tick, c.payload);
+  if (!memo || c.count != 1) return false;
+  const DecodeMemo::Result* r =
+      c.key ? memo->find_key(c.tick, c.payload) : memo->find(states_.at(c.baseline), c.tick, c.payload);
   if (!r) return false;
   complete_shared(c.tick, *r);
   evict();

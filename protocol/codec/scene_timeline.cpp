@@ -10,8 +10,8 @@ namespace ocean::codec {
 // the recurrence (whose a(k) depends on the scene's depth) only once a state advances in it.
 struct SceneTimeline::Held {
   Entry entry;
-  mutable std::unique_ptr<ModalModel> recurrence;
-  mutable std::unique_ptr<SceneModel> model;
+  mutable std::shared_ptr<const ModalModel> recurrence;
+  mutable std::shared_ptr<const SceneModel> model;
 };
 
 SceneTimeline::SceneTimeline(const StreamConfig& config) : config_(config) {}
@@ -46,12 +46,16 @@ Tick SceneTimeline::start_of(Tick tick) const {
   return std::prev(it)->first;
 }
 
+StreamConfig SceneTimeline::with_depth(const Held& held) const {
+  StreamConfig c = config_;
+  c.depth_m = held.entry.scene.depth_m;
+  return c;
+}
+
 const SceneModel& SceneTimeline::model_of(const Held& held) const {
-  if (!held.model) {
-    StreamConfig with_depth = config_;
-    with_depth.depth_m = held.entry.scene.depth_m;
-    held.model = std::make_unique<SceneModel>(with_depth, held.entry.scene);
-  }
+  if (!held.model)
+    held.model = cache_ ? cache_->scene_model(with_depth(held), held.entry.scene)
+                        : std::make_shared<const SceneModel>(with_depth(held), held.entry.scene);
   return *held.model;
 }
 
@@ -77,11 +81,8 @@ void SceneTimeline::advance(ModalState& state, Tick from, Tick to) const {
     now = start;
   }
   const Held& held = held_at(now);
-  if (!held.recurrence) {
-    StreamConfig with_depth = config_;
-    with_depth.depth_m = held.entry.scene.depth_m;
-    held.recurrence = std::make_unique<ModalModel>(with_depth);
-  }
+  if (!held.recurrence)
+    held.recurrence = cache_ ? cache_->recurrence(with_depth(held)) : std::make_shared<const ModalModel>(with_depth(held));
   held.recurrence->advance(state, to - now);
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "modal_model.hpp"
+#include "model_cache.hpp"
 #include "scene_model.hpp"
 #include "stream_config.hpp"
 #include "tick.hpp"
@@ -45,6 +46,10 @@ class SceneTimeline {
   // cannot throw, so a decoder checks this before it changes anything.
   bool prepare(Tick from, Tick to, bool key) const;
 
+  // Models come from `cache` (not owned; it must outlive this timeline) instead of being built
+  // here: for decoders sharing a DecodeMemo.
+  void share_models(ModelCache* cache) { cache_ = cache; }
+
   // Forgets entries no longer in force at `tick` or later.
   void forget_before(Tick tick);
   std::size_t size() const { return entries_.size(); }
@@ -53,9 +58,11 @@ class SceneTimeline {
   struct Held;
   const Held& held_at(Tick tick) const;
   const SceneModel& model_of(const Held& held) const;
+  StreamConfig with_depth(const Held& held) const;
 
   StreamConfig config_;
   std::map<Tick, std::unique_ptr<Held>> entries_;
+  ModelCache* cache_ = nullptr;
 };
 
 }  // namespace ocean::codec

@@ -155,6 +155,38 @@ TEST_CASE("a key of several chunks is decoded once for every decoder of a memo")
   CHECK(a.latest()->shared_id == b.latest()->shared_id);
 }
 
+TEST_CASE("a key of one chunk is taken from the memo before a decoder does any work") {
+  const StreamConfig config = test_config(32, 30);
+  const SyntheticOcean ocean(32, 128.0, 120, 17, 0.4);
+  Encoder enc = test_encoder(config, wide_encoder());
+  enc.add_truth(0, view_of(ocean.at(0.0)));
+  enc.add_truth(1, view_of(ocean.at(1.0 / config.rate_hz)));
+  const auto key = enc.encode_key(1);
+  REQUIRE(key->chunks.size() == 1);
+  DecodeMemo memo(config);
+  Decoder lone = test_decoder(config, wide_decoder(nullptr));
+  std::vector<Decoder> shared;
+  for (int i = 0; i < 3; ++i) shared.push_back(test_decoder(config, wide_decoder(&memo)));
+  REQUIRE(lone.accept(key->chunks[0]) == ChunkError::ok);
+  for (Decoder& d : shared) REQUIRE(d.accept(key->chunks[0]) == ChunkError::ok);
+  CHECK(memo.counts().misses == 1);
+  CHECK(memo.counts().hits == 2);
+  CHECK(memo.counts().intern_hits == 0);
+  for (Decoder& d : shared) {
+    CHECK(d.state(1) == shared[0].state(1));
+    CHECK(*d.state(1) == *lone.state(1));
+    CHECK(same_frame(d.latest(), lone.latest()));
+  }
+  // Another tick's key with the same bytes is not the same key.
+  enc.add_truth(2, view_of(ocean.at(2.0 / config.rate_hz)));
+  const auto next = enc.encode_key(2);
+  REQUIRE(next->chunks.size() == 1);
+  for (Decoder& d : shared) REQUIRE(d.accept(next->chunks[0]) == ChunkError::ok);
+  REQUIRE(lone.accept(next->chunks[0]) == ChunkError::ok);
+  CHECK(*shared[2].state(2) == *lone.state(2));
+  CHECK(memo.counts().misses == 2);
+}
+
 TEST_CASE("a memo answers only for the exact baseline object and bytes") {
   const StreamConfig config = test_config(32, 30);
   const SyntheticOcean ocean(32, 128.0, 120, 9, 0.4);

@@ -1,0 +1,29 @@
+#include "model_cache.hpp"
+
+namespace ocean::codec {
+namespace {
+
+template <typename Entries, typename Same, typename Build>
+auto find_or_build(Entries& entries, std::size_t keep, Same same, Build build) {
+  for (const auto& e : entries)
+    if (same(e)) return e.model;
+  if (entries.size() >= keep) entries.erase(entries.begin());
+  entries.push_back(build());
+  return entries.back().model;
+}
+
+}  // namespace
+
+std::shared_ptr<const SceneModel> ModelCache::scene_model(const StreamConfig& stream, const SceneModelParams& scene) {
+  return find_or_build(
+      scenes_, kKeep, [&](const SceneEntry& e) { return e.stream == stream && e.scene == scene; },
+      [&] { return SceneEntry{stream, scene, std::make_shared<const SceneModel>(stream, scene)}; });
+}
+
+std::shared_ptr<const ModalModel> ModelCache::recurrence(const StreamConfig& stream) {
+  return find_or_build(
+      recurrences_, kKeep, [&](const RecurrenceEntry& e) { return e.stream == stream; },
+      [&] { return RecurrenceEntry{stream, std::make_shared<const ModalModel>(stream)}; });
+}
+
+}  // namespace ocean::codec
