@@ -195,14 +195,14 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
   } else {
     late_fields_ = std::move(p.fields);
   }
-  states_[tick] = state;
+  hold(tick, state);
 }
 
 // A complete frame whose state and shown frame the memo holds.
 void Decoder::complete_shared(Tick tick, const DecodeMemo::Result& r) {
   completed_tick_ = tick;
   late_converted_ = false;
-  states_[tick] = r.state;
+  hold(tick, r.state);
   if (!shown_tick_ || tick >= *shown_tick_) {
     show(tick);
     shown_shared_ = r.frame;
@@ -228,11 +228,28 @@ const ReconstructedFrame* Decoder::just_completed() {
   return &late_;
 }
 
+void Decoder::hold(Tick tick, DecodeMemo::State state) {
+  states_[tick] = std::move(state);
+  if (!window_) {
+    window_ = CompleteWindow{tick, 0};
+  } else if (tick > window_->newest) {
+    const Tick shift = tick - window_->newest;
+    window_->older = shift > 64 ? 0 : shift == 64 ? 1ull << 63 : (window_->older << shift) | (1ull << (shift - 1));
+    window_->newest = tick;
+  } else if (const Tick age = window_->newest - tick; age >= 1 && age <= 64) {
+    window_->older |= 1ull << (age - 1);
+  }
+}
+
 void Decoder::evict() {
   const auto newest = newest_complete();
   if (!newest || *newest < options_.history_ticks) return;
   const Tick oldest = *newest - options_.history_ticks;
-  while (!states_.empty() && states_.begin()->first < oldest) states_.erase(states_.begin());
+  while (!states_.empty() && states_.begin()->first < oldest) {
+    if (const Tick age = window_->newest - states_.begin()->first; age >= 1 && age <= 64)
+      window_->older &= ~(1ull << (age - 1));
+    states_.erase(states_.begin());
+  }
   while (!pending_.empty() && pending_.begin()->first < oldest) drop_pending(pending_.begin());
   scenes_.forget_before(states_.empty() ? oldest : std::min(oldest, states_.begin()->first));
 }

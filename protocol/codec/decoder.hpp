@@ -58,6 +58,14 @@ class Decoder {
   bool is_complete(Tick tick) const { return states_.count(tick) != 0; }
   std::optional<Tick> newest_complete() const;
   std::vector<Tick> complete_ticks() const;  // ascending; what the client may ack
+  // The newest complete tick and one bit per tick before it (bit i: tick newest - 1 - i is
+  // complete), kept as frames complete and age out: what an Ack needs, without walking the
+  // states (a load test's thousands of clients ack ten times a second).
+  struct CompleteWindow {
+    Tick newest = 0;
+    std::uint64_t older = 0;
+  };
+  std::optional<CompleteWindow> complete_window() const { return window_; }
   const ModalState* state(Tick tick) const;
 
  private:
@@ -83,6 +91,7 @@ class Decoder {
   bool accept_remembered(const ChunkView& c);
   void complete_shared(Tick tick, const DecodeMemo::Result& r);
   void show(Tick tick);
+  void hold(Tick tick, DecodeMemo::State state);
   void evict();
   void drop_pending(std::map<Tick, Pending>::iterator it);
 
@@ -91,6 +100,7 @@ class Decoder {
   ModalModel model_;
   SceneTimeline scenes_;
   std::map<Tick, DecodeMemo::State> states_;  // complete frames (interned when memo is set)
+  std::optional<CompleteWindow> window_;      // of states_' ticks
   std::map<Tick, Pending> pending_;
   std::optional<Tick> shown_tick_;              // newest tick with something to show
   SampleFields shown_fields_;                   // its fields once it left pending_
