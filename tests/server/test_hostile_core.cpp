@@ -68,6 +68,19 @@ struct Rig {
     }
     return 0;
   }
+  // A valid Ping of session `id` (the last Welcome's cookie) from `from`.
+  void ping(std::uint64_t id, const asio::ip::udp::endpoint& from, double at) {
+    proto::Ping ping;
+    ping.session_id = id;
+    ping.cookie = cookie;
+    rig.core().on_datagram(proto::encode(ping), from, CoreRig::at(at));
+  }
+  // Datagrams sent to `to` since the last take.
+  int udp_sent_to(const asio::ip::udp::endpoint& to) {
+    int n = 0;
+    for (const auto& d : datagrams.take()) n += d.to == to;
+    return n;
+  }
   MemoryDatagrams datagrams;
   CoreRig rig;
   proto::Bytes cookie;  // of the last Welcome
@@ -134,17 +147,8 @@ TEST_CASE("a UdpHello replayed from another port cannot move a live UDP stream; 
   const proto::Bytes hello = proto::encode(proto::UdpHello{id, r.cookie});
   r.rig.core().on_datagram(hello, victim, CoreRig::at(0.1));
   double now = 0.1;
-  auto acked_tick = [&](double at, const asio::ip::udp::endpoint& from) {
-    proto::Ping ping;
-    ping.session_id = id;
-    ping.cookie = r.cookie;
-    r.rig.core().on_datagram(proto::encode(ping), from, CoreRig::at(at));
-  };
-  auto udp_sent_to = [&](const asio::ip::udp::endpoint& to) {
-    int n = 0;
-    for (const auto& d : r.datagrams.take()) n += d.to == to;
-    return n;
-  };
+  auto acked_tick = [&](double at, const asio::ip::udp::endpoint& from) { r.ping(id, from, at); };
+  auto udp_sent_to = [&](const asio::ip::udp::endpoint& to) { return r.udp_sent_to(to); };
   for (int i = 0; i < 30; ++i) {  // the victim streams and pings every tick
     now += r.rig.tick_period_s();
     acked_tick(now, victim);
@@ -187,17 +191,8 @@ TEST_CASE("a replay that moved a stream while its client was silent loses it whe
   const proto::Bytes hello = proto::encode(proto::UdpHello{id, r.cookie});
   double now = 0.1;
   r.rig.core().on_datagram(hello, victim, CoreRig::at(now));
-  auto ping_from = [&](const asio::ip::udp::endpoint& from) {
-    proto::Ping ping;
-    ping.session_id = id;
-    ping.cookie = r.cookie;
-    r.rig.core().on_datagram(proto::encode(ping), from, CoreRig::at(now));
-  };
-  auto udp_sent_to = [&](const asio::ip::udp::endpoint& to) {
-    int n = 0;
-    for (const auto& d : r.datagrams.take()) n += d.to == to;
-    return n;
-  };
+  auto ping_from = [&](const asio::ip::udp::endpoint& from) { r.ping(id, from, now); };
+  auto udp_sent_to = [&](const asio::ip::udp::endpoint& to) { return r.udp_sent_to(to); };
   // The victim stalls for 0.6 s (over udp_rebind_quiet_s) while the thief replays its hello
   // every tick: the stream moves to the thief.
   auto thief_replays_while_victim_stalls = [&](double stall_s) {
