@@ -1,6 +1,6 @@
 // AckWindow: the reliable/yojimbo acknowledgement of complete frames - the latest tick plus a
-// bit for each of the 32 ticks before it - built from whatever set of ticks the client holds
-// (codec::Decoder::complete_ticks()) and read back by the server.
+// bit for each of the 32 ticks before it - kept by codec::Decoder as frames complete and age out,
+// or built from any set of ticks, and read back by the server.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +34,13 @@ struct AckWindow {
     const Tick age = latest_tick - tick;
     if (age == 0 || age > kAckWindowTicks) return *this;
     return AckWindow{latest_tick, bits | (1u << (age - 1))};
+  }
+
+  // The same window after tick is no longer held (the latest tick itself cannot be dropped).
+  AckWindow without(Tick tick) const {
+    const Tick age = tick < latest_tick ? latest_tick - tick : 0;
+    if (age == 0 || age > kAckWindowTicks) return *this;
+    return AckWindow{latest_tick, bits & ~(1u << (age - 1))};
   }
 
   bool operator==(const AckWindow&) const = default;

@@ -30,14 +30,14 @@ void ClientSession::send(const protocol::Bytes& bytes, wire::Transport transport
 }
 
 void ClientSession::send_ack(double now) {
-  const auto window = decoder_->complete_window();
+  const auto& window = decoder_->ack_window();
   next_ack_ = now + config_.ack_interval_s;
   if (!window) return;
   protocol::Ack ack;
   ack.session_id = welcome_->session_id;
   if (control_path() == wire::Transport::udp) ack.cookie = welcome_->udp_cookie;
-  ack.latest_tick = window->newest;
-  ack.ack_bits = static_cast<std::uint32_t>(window->older);  // the 32 ticks an Ack holds (PROTOCOL.md)
+  ack.latest_tick = window->latest_tick;
+  ack.ack_bits = window->bits;
   send(protocol::encode(ack), control_path());
   ++stats_.acks_sent;
   ack_pending_ = false;

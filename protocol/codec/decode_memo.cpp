@@ -57,17 +57,8 @@ void DecodeMemo::saw_tick(Tick tick) {
 }
 
 void DecodeMemo::advance(const State& baseline, Tick from, Tick to, const SceneTimeline& scenes, ModalState& out) {
-  auto found = advanced_.find(baseline.get());
-  if (found == advanced_.end() || found->second.reached > to) {
-    out = *baseline;
-    scenes.advance(out, from, to);
-    if (found == advanced_.end()) advanced_.emplace(baseline.get(), Advanced{baseline, from, to, out});
-    return;
-  }
-  Advanced& a = found->second;
-  scenes.advance(a.state, a.reached, to);
-  a.reached = to;
-  out = a.state;
+  Advanced& a = advanced_.try_emplace(baseline.get(), Advanced{baseline, from, {}}).first->second;
+  out = a.state.advance(*baseline, from, to, scenes);
 }
 
 const DecodeMemo::Result* DecodeMemo::find_key(Tick tick, const Payloads& chunks) {

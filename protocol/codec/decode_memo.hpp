@@ -6,6 +6,7 @@
 // of clients of one stream decode each distinct frame once. One memo per thread (not locked).
 #pragma once
 
+#include "advanced_state.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
 #include "model_cache.hpp"
@@ -50,9 +51,8 @@ class DecodeMemo {
   const Result& remember(const State& baseline, Tick tick, std::span<const std::uint8_t> payload,
                          State state, ReconstructedFrame&& frame);
 
-  // `out` = `baseline` (the interned state of tick `from`) advanced to `to` through `scenes`.
-  // Deltas of successive ticks from one baseline ask for successive ticks, and advancing
-  // composes exactly, so each asks only for the steps past the newest one asked before.
+  // `out` = `baseline` (the interned state of tick `from`) advanced to `to` through `scenes`,
+  // from where the memo's decoders last advanced the same baseline object.
   void advance(const State& baseline, Tick from, Tick to, const SceneTimeline& scenes, ModalState& out);
 
   // Keys, by the payloads of all their chunks in index order.
@@ -80,8 +80,8 @@ class DecodeMemo {
 
   struct Advanced {
     State baseline;  // held, as in Entry
-    Tick from, reached;
-    ModalState state;  // baseline advanced to `reached`
+    Tick from;
+    AdvancedState state;
   };
 
   struct KeyEntry {

@@ -230,15 +230,7 @@ const ReconstructedFrame* Decoder::just_completed() {
 
 void Decoder::hold(Tick tick, DecodeMemo::State state) {
   states_[tick] = std::move(state);
-  if (!window_) {
-    window_ = CompleteWindow{tick, 0};
-  } else if (tick > window_->newest) {
-    const Tick shift = tick - window_->newest;
-    window_->older = shift > 64 ? 0 : shift == 64 ? 1ull << 63 : (window_->older << shift) | (1ull << (shift - 1));
-    window_->newest = tick;
-  } else if (const Tick age = window_->newest - tick; age >= 1 && age <= 64) {
-    window_->older |= 1ull << (age - 1);
-  }
+  window_ = window_ ? window_->with(tick) : protocol::AckWindow{tick, 0};
 }
 
 void Decoder::evict() {
@@ -246,8 +238,7 @@ void Decoder::evict() {
   if (!newest || *newest < options_.history_ticks) return;
   const Tick oldest = *newest - options_.history_ticks;
   while (!states_.empty() && states_.begin()->first < oldest) {
-    if (const Tick age = window_->newest - states_.begin()->first; age >= 1 && age <= 64)
-      window_->older &= ~(1ull << (age - 1));
+    window_ = window_->without(states_.begin()->first);
     states_.erase(states_.begin());
   }
   while (!pending_.empty() && pending_.begin()->first < oldest) drop_pending(pending_.begin());

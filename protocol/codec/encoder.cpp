@@ -189,23 +189,11 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_delta(Tick tick, StateId bas
     throw std::invalid_argument("Encoder::encode_delta: no truth for tick " + std::to_string(tick));
   if (!scenes_.at(baseline.tick))
     throw std::invalid_argument("Encoder::encode_delta: no scene set for tick " + std::to_string(baseline.tick));
-  ModalState predicted = advanced(baseline, st->second, tick);
+  ModalState predicted = advanced_[baseline].advance(st->second, baseline.tick, tick, scenes_);
   const Corrections corrections = correct_once(tick, predicted);
   auto frame = finish_frame(tick, std::move(predicted), corrections, nullptr, baseline);
   deltas_[cache_key] = frame;
   return frame;
-}
-
-ModalState Encoder::advanced(StateId baseline, const ModalState& state, Tick tick) {
-  auto [it, fresh] = advanced_.try_emplace(baseline);
-  Advanced& a = it->second;
-  if (fresh || a.tick > tick) {
-    a.tick = baseline.tick;
-    a.state = state;
-  }
-  scenes_.advance(a.state, a.tick, tick);
-  a.tick = tick;
-  return a.state;
 }
 
 Corrections Encoder::correct_once(Tick tick, const ModalState& predicted) {

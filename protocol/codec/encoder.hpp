@@ -10,6 +10,7 @@
 #include "chunk_format.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
+#include "advanced_state.hpp"
 #include "scene_timeline.hpp"
 #include "state_hash.hpp"
 #include "stream_config.hpp"
@@ -103,9 +104,6 @@ class Encoder {
   // a modeled key) mostly predict the very same state, and its corrections and fields follow
   // from that state and the tick's truth alone.
   Corrections correct_once(Tick tick, const ModalState& predicted);
-  // Where a delta from `baseline` to `tick` starts: the state a delta from the same baseline was
-  // last advanced to (advancing composes, so this is bit-exact), else the baseline itself.
-  ModalState advanced(StateId baseline, const ModalState& state, Tick tick);
   std::shared_ptr<const EncodedFrame> explicit_key(Tick tick);
   std::shared_ptr<EncodedFrame> finish_frame(Tick tick, ModalState predicted, const Corrections& corrections,
                                              const KeyCoding* key, StateId base);
@@ -122,13 +120,7 @@ class Encoder {
   std::map<Tick, std::shared_ptr<const EncodedFrame>> keys_;  // cached frames (frame_cache_ticks)
   std::map<Tick, StateId> key_ids_;                             // every key's state, for key_history_ticks
   std::map<std::pair<Tick, StateId>, std::shared_ptr<const EncodedFrame>> deltas_;
-  // Each baseline's state as last advanced for a delta, and the tick it reached: a session's next
-  // delta from the same baseline advances by the ticks since, not by its whole lag again.
-  struct Advanced {
-    Tick tick = 0;
-    ModalState state;
-  };
-  std::map<StateId, Advanced> advanced_;
+  std::map<StateId, AdvancedState> advanced_;  // where each baseline's deltas start
   // This tick's distinct predictions with what correct() made of them.
   struct Prediction {
     ModalState state;

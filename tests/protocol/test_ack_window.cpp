@@ -82,3 +82,20 @@ TEST_CASE("ack_window of a tick set does not depend on order and matches contain
   }
   CHECK_FALSE(ack_window({}));
 }
+
+TEST_CASE("without(t) is the window of the set without t, except for the latest tick") {
+  const std::vector<Tick> ticks = {100, 101, 103, 110, 130, 131, 132};
+  const AckWindow window = *ack_window(ticks);
+  for (Tick t : ticks) {
+    if (t == 132) {
+      CHECK(window.without(t) == window);  // the latest stays: it is what the window is relative to
+      continue;
+    }
+    std::vector<Tick> rest;
+    for (Tick u : ticks)
+      if (u != t) rest.push_back(u);
+    CHECK(window.without(t) == *ack_window(rest));
+  }
+  CHECK(window.without(99) == window);   // beyond the window
+  CHECK(window.without(200) == window);  // newer than the latest
+}
