@@ -31,6 +31,7 @@ std::optional<codec::StateId> BaselineTracker::sent_at(Tick tick) const {
 
 void BaselineTracker::on_ack(const protocol::AckWindow& window) {
   bool newest_found = false;
+  std::size_t grid = 0;
   for (Tick age = 0; age <= protocol::kAckWindowTicks && age <= window.latest_tick; ++age) {
     const Tick tick = window.latest_tick - age;
     if (!window.contains(tick)) continue;
@@ -41,10 +42,19 @@ void BaselineTracker::on_ack(const protocol::AckWindow& window) {
     if (!newest_found) keep_newer(acked_, *state);
     newest_found = true;
     if (on_grid(tick)) {
-      keep_newer(acked_aligned_, *state);
-      return;  // older acked ticks are no better
+      if (grid == 0) keep_newer(acked_aligned_, *state);
+      acked_grid_[grid++] = state;
+      if (grid == kAckedGrid) return;  // older acked ticks are no better
     }
   }
+  for (std::size_t i = grid; i < kAckedGrid; ++i) acked_grid_[i].reset();
+}
+
+std::optional<codec::StateId> BaselineTracker::choose_encoded(
+    Tick tick, const std::function<bool(codec::StateId)>& encoded) const {
+  for (const auto& state : acked_grid_)
+    if (state && state->tick < tick && tick - state->tick <= protocol::kMaxBaselineGap && encoded(*state)) return state;
+  return std::nullopt;
 }
 
 std::optional<codec::StateId> BaselineTracker::choose(Tick tick, bool over_udp,
@@ -76,6 +86,7 @@ void BaselineTracker::reset() {
   reliable_.reset();
   reliable_aligned_.reset();
   root_.reset();
+  acked_grid_.fill(std::nullopt);
 }
 
 }  // namespace ocean::server

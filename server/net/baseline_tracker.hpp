@@ -30,6 +30,9 @@ class BaselineTracker {
   // the grid when one qualifies.
   std::optional<codec::StateId> choose(Tick tick, bool over_udp,
                                        const std::function<bool(codec::StateId)>& encoder_has) const;
+  // Under load, a baseline the stream already encoded this tick costs nothing more: the newest
+  // state the client acked on the grid (among the last kAckedGrid) for which `encoded` holds.
+  std::optional<codec::StateId> choose_encoded(Tick tick, const std::function<bool(codec::StateId)>& encoded) const;
   void reset();  // a new scene: nothing sent before predicts anything after
   // True when the client acked `state`: a UDP datagram predicted from it can be decoded whatever
   // order datagrams arrive in. A baseline only queued on TCP cannot (the key may still be in
@@ -59,6 +62,9 @@ class BaselineTracker {
   std::optional<codec::StateId> acked_, acked_aligned_;
   std::optional<codec::StateId> reliable_, reliable_aligned_;
   std::optional<codec::StateId> root_;  // the last key
+  // The newest acked grid states of the latest ack, newest first.
+  static constexpr std::size_t kAckedGrid = 4;
+  std::array<std::optional<codec::StateId>, kAckedGrid> acked_grid_{};
 };
 
 }  // namespace ocean::server

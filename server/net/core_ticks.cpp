@@ -48,7 +48,7 @@ void SessionCore::on_frames(const std::shared_ptr<const TickFrames>& frames, con
   bundles_.clear();  // the bytes of last tick's bundles stay alive while queued
   std::vector<std::pair<const void*, codec::StateId>> bases;
   for (auto& stream : streams_)
-    if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_)) limit_roots(*stream, tick_);
+    if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_)) limit_roots(*stream, tick_, now.monotonic_s);
   // From a different session each tick: when a budget (keys, encodes) runs out, it is not always
   // the same sessions that wait. A copy, so a session closing meanwhile cannot upset the walk.
   rotate_from_ += 0x9E3779B97F4A7C15ull;
@@ -95,6 +95,13 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
   const bool udp = session.on_udp();
   const bool key_due = now_s - session.last_key_s >= options_.key_interval_s;
   std::optional<codec::StateId> base;
+  if (session.rekey) {  // merged this key tick, its key already paid for
+    session.rekey = false;
+    if (!session.need_key && is_key_tick(stream, tick) && stream.can_key(tick)) {
+      bases.emplace_back(&stream, codec::StateId{tick, 0});
+      return send_key(session, stream, tick, now_s);
+    }
+  }
   if (!session.need_key && !(session.key_requested && key_due))
     base = session.baselines.choose(tick, udp, [&](codec::StateId id) { return stream.has_state(id); });
   if (!base) {
@@ -103,7 +110,7 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
     if ((!session.need_key && !key_due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
     // Keys are paced server-wide: a burst of them (mass join, many acks late at once) waits for
     // the next key ticks instead of swamping the thread and the links in one.
-    if (!key_budget_.try_take(1, now_s)) {
+    if (!take_key_budget(stream, tick, now_s)) {
       host_.metrics.frames_skipped_load.inc();
       return;
     }
@@ -111,10 +118,15 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
     return send_key(session, stream, tick, now_s);
   }
   // Late acks scatter baselines; past the per-tick encode budget, a session whose baseline has no
-  // encode yet skips this frame (its next ack or a key brings it back) rather than delay everyone.
+  // encode yet takes an encode of an older state it acked, and only without one skips this frame
+  // (its next ack or a key brings it back) rather than delay everyone.
   if (!stream.has_encoded(tick, *base) && stream.encodes_this_tick() >= options_.max_encodes_per_tick) {
-    host_.metrics.frames_skipped_load.inc();
-    return;
+    base = session.baselines.choose_encoded(tick, [&](codec::StateId id) { return stream.has_encoded(tick, id); });
+    if (!base) {
+      host_.metrics.frames_skipped_load.inc();
+      return;
+    }
+    host_.metrics.frames_rebased_load.inc();
   }
   const SharedFrame& frame = stream.delta(tick, *base);
   bases.emplace_back(&stream, *base);
@@ -145,6 +157,14 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
   if (observer_) observer_(session.id, frame);
 }
 
+// The key budget is in bytes: a modeled mobile key (tens of bytes) costs the links and the
+// server next to nothing, a desktop key with coefficients thousands of times more.
+bool SessionCore::take_key_budget(ProfileStream& stream, Tick tick, double now_s) {
+  const std::size_t bytes = stream.key(tick).bytes;
+  const double burst = std::max(1.0, 0.5 * options_.key_bytes_per_s);
+  return key_budget_.try_take(std::min<std::size_t>(bytes, static_cast<std::size_t>(burst)), now_s);
+}
+
 void SessionCore::send_key(Session& session, ProfileStream& stream, Tick tick, double now_s) {
   const SharedFrame& frame = stream.key(tick);
   if (!session.link->has_room(frame.bytes)) {
@@ -153,7 +173,7 @@ void SessionCore::send_key(Session& session, ProfileStream& stream, Tick tick, d
     return;
   }
   send_tcp_frame(session, frame);
-  session.need_key = session.key_requested = false;
+  session.need_key = session.key_requested = session.rekey = false;
   session.last_key_s = now_s;
   session.baselines.record_sent(tick, frame.encoded->id, true, true);
   session.recent_udp.clear();  // nothing from before a key predicts anything after it
@@ -226,28 +246,42 @@ bool SessionCore::is_key_tick(const ProfileStream& stream, Tick tick) const {
 }
 
 // Sessions keyed at different ticks hold different states forever (a key is lossy), so every
-// root costs its own encodes each tick. Beyond max_roots, the two smallest roots old enough are
-// keyed again onto the one root this key tick starts: the count drops by one per key tick until
-// it is within the cap, and then nothing more is keyed. Two at a time keeps the keys' bytes and
-// the clients' key decodes from coming in one burst; a session pays at most one extra key per
-// root_merge_age_s.
-void SessionCore::limit_roots(ProfileStream& stream, Tick tick) {
+// root costs its own encodes each tick. Beyond max_roots, the smallest roots old enough are
+// keyed again onto the one root this key tick starts, as many as it takes to be within the cap
+// and as the key budget pays for now, after what the sessions waiting for a key need: merged
+// sessions must all take this tick's key, or they would only scatter into new roots. A session
+// pays at most one extra key per root_merge_age_s, and never a frame.
+void SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   std::map<Tick, std::vector<Session*>> roots;
-  for (auto& [id, session] : sessions_)
-    if (session->stream == &stream && !session->need_key)
-      if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
-  if (roots.size() <= options_.max_roots) return;
+  std::size_t waiting = 0;  // sessions that need a key to show anything
+  for (auto& [id, session] : sessions_) {
+    if (session->stream != &stream) continue;
+    if (session->need_key) ++waiting;
+    else if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
+  }
+  if (roots.size() <= options_.max_roots || !stream.can_key(tick)) return;
   const double min_age_ticks = options_.root_merge_age_s * host_.config.tick_rate_hz;
   std::vector<std::pair<std::size_t, Tick>> old;  // (sessions, root)
   for (const auto& [root, members] : roots)
     if (static_cast<double>(tick - root) >= min_age_ticks) old.emplace_back(members.size(), root);
-  if (old.size() < 2) return;  // merging one root into a new one would not lower the count
-  std::partial_sort(old.begin(), old.begin() + 2, old.end());
-  for (std::size_t i = 0; i < 2; ++i)
-    for (Session* session : roots[old[i].second]) session->need_key = true;
-  host_.metrics.root_merges.inc(2);
-  spdlog::debug("tick {} profile {}: {} key roots; roots {} and {} ({} and {} sessions) are keyed again", tick,
-                stream.profile().name, roots.size(), old[0].second, old[1].second, old[0].first, old[1].first);
+  // The merged roots become one (this tick's), so merging fewer than two lowers nothing.
+  if (old.size() < 2) return;
+  std::sort(old.begin(), old.end());
+  std::size_t merge = std::min(old.size(), std::max<std::size_t>(2, roots.size() - options_.max_roots + 1));
+  const double key_bytes = static_cast<double>(stream.key(tick).bytes);
+  for (; merge >= 2; --merge) {
+    std::size_t sessions = 0;
+    for (std::size_t i = 0; i < merge; ++i) sessions += old[i].first;
+    if (key_budget_.try_take_leaving(static_cast<double>(sessions) * key_bytes,
+                                     static_cast<double>(waiting) * key_bytes, now_s))
+      break;
+  }
+  if (merge < 2) return;
+  for (std::size_t i = 0; i < merge; ++i)
+    for (Session* session : roots[old[i].second]) session->rekey = true;
+  host_.metrics.root_merges.inc(static_cast<double>(merge));
+  spdlog::debug("tick {} profile {}: {} key roots; the {} smallest old enough are keyed again", tick,
+                stream.profile().name, roots.size(), merge);
 }
 
 void SessionCore::sweep_timeouts(double now_s) {

@@ -43,6 +43,9 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
                                       "Datagrams the kernel refused to send (full socket buffer, unreachable peer).")),
       frames_skipped_load(registry.counter("ocean_frames_skipped_load_total",
                                            "Frames or keys sessions waited for because a load budget (keys/s, encodes/tick) ran out.")),
+      frames_rebased_load(registry.counter("ocean_frames_rebased_load_total",
+                                           "Frames predicted from an older acked state that was already encoded, because the "
+                                           "encode budget per tick ran out.")),
       serve_seconds(registry.summary("ocean_serve_seconds", "Network-thread time to serve one tick (encodes and sends).")),
       loop_lag_seconds(registry.summary("ocean_loop_lag_seconds", "How long after its scheduled time each tick was served.")),
       network_busy_ratio(registry.gauge("ocean_network_busy_ratio", "Share of the last second the network thread was busy.")),

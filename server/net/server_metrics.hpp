@@ -33,6 +33,7 @@ class ServerMetrics {
   Counter& sessions_started; // Welcomes sent
   Counter& udp_send_drops;   // datagrams the kernel refused (full socket buffer, unreachable peer)
   Counter& frames_skipped_load;  // frames or keys a session waited for because a load budget ran out
+  Counter& frames_rebased_load;  // frames that took an existing encode instead when the budget ran out
   Summary& serve_seconds;    // network-thread time to serve one tick (encodes, sends)
   Summary& loop_lag_seconds; // how long after its scheduled time a tick was served
   Gauge& network_busy_ratio; // share of the last second the network thread was busy

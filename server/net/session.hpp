@@ -45,6 +45,7 @@ struct Session {
   std::uint64_t tcp_frames_mark = 0;        // link->enqueued_total() after the last frame queued on it
   bool need_key = true;                     // the next frame must be a key
   bool key_requested = false;               // a KeyframeRequest waits for its rate limit
+  bool rekey = false;                       // its key root is merged: this key tick's key, paid for
   double last_key_s = -std::numeric_limits<double>::infinity();
   TokenBucket udp_bucket{0.0, 0.0, 0.0};
   double bytes_per_s = 0.0;                 // the client's budget; 0 = unlimited

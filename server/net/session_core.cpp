@@ -1,5 +1,6 @@
 #include "session_core.hpp"
 
+
 #include "admin_token.hpp"
 #include "core_helpers.hpp"
 #include "message_builders.hpp"
@@ -26,7 +27,7 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
       admission_(AdmissionLimits{host_.config.max_handshakes, host_.config.max_handshakes_per_ip,
                                  host_.config.max_connections_per_ip}),
       tick_(start_tick),
-      key_budget_(options.keys_per_s, std::max(1.0, 0.5 * options.keys_per_s), 0.0) {
+      key_budget_(options.key_bytes_per_s, std::max(1.0, 0.5 * options.key_bytes_per_s), 0.0) {
   for (const std::string& name : host_.config.profiles) {
     const Profile* profile = find_profile(std::string_view(name));
     if (!profile) continue;

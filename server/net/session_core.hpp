@@ -37,17 +37,17 @@ struct SessionCoreOptions {
   int socket_send_buffer_bytes = 0;            // SO_SNDBUF of client sockets; 0 = the OS default
   // Sharing (README-server.md "Fan-out"): baselines on a grid of this many frames; keys only on
   // a grid of this period (a joiner waits at most this long); beyond max_roots key roots of a
-  // profile, one root older than root_merge_age_s is keyed again per key tick.
+  // profile, the smallest roots older than root_merge_age_s are keyed again onto the current one.
   std::uint32_t baseline_align_frames = 4;
   double key_period_s = 0.5;
-  std::size_t max_roots = 8;
-  double root_merge_age_s = 10.0;
+  std::size_t max_roots = 4;
+  double root_merge_age_s = 2.0;
   // A scene change reaches every client this long before it takes effect (a SceneUpdate on TCP
   // must arrive before the first frame of the new scene, even on a slow link).
   double scene_lead_s = 1.0;
-  // Load budgets (README-server.md "Overload"): keys per second over all sessions, and distinct
-  // delta encodes per profile and tick.
-  double keys_per_s = 300.0;
+  // Load budgets (README-server.md "Overload"): key bytes per second over all sessions (burst:
+  // half a second of it), and distinct delta encodes per profile and tick.
+  double key_bytes_per_s = 2'000'000.0;
   std::size_t max_encodes_per_tick = 64;
   // A proven UDP address moves to another port only after this long without a valid datagram
   // from it (a replayed UdpHello cannot take a live stream; a NAT rebinding still moves it).
@@ -132,11 +132,12 @@ class SessionCore {
   double rebind_quiet_s(const Session& session) const;
 
   void serve(Session& session, Tick tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
+  bool take_key_budget(ProfileStream& stream, Tick tick, double now_s);
   void send_key(Session& session, ProfileStream& stream, Tick tick, double now_s);
   bool send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s);
   void send_tcp_frame(Session& session, const SharedFrame& frame);
   SharedBytes bundle_of(const std::vector<const RecentFrame*>& copies, const SharedFrame& newest);
-  void limit_roots(ProfileStream& stream, Tick tick);
+  void limit_roots(ProfileStream& stream, Tick tick, double now_s);
   bool is_key_tick(const ProfileStream& stream, Tick tick) const;
   void sweep_timeouts(double now_s);
   void record_tick_stats(std::vector<std::pair<const void*, codec::StateId>>& bases);

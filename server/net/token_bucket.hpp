@@ -28,6 +28,15 @@ class TokenBucket {
     tokens_ -= static_cast<double>(bytes);
     return true;
   }
+  // Takes `amount` only if `reserve` tokens are left after it (work that can wait leaves room
+  // for work that cannot); else takes nothing.
+  bool try_take_leaving(double amount, double reserve, double now_s) {
+    if (unlimited()) return true;
+    refill(now_s);
+    if (tokens_ < amount + reserve) return false;
+    tokens_ -= amount;
+    return true;
+  }
   // Seconds until `bytes` tokens are there (0 when they are now); bytes above the burst wait for
   // the burst (a caller paces a large message as soon as the bucket is full).
   double wait_s(std::size_t bytes, double now_s) {

@@ -86,3 +86,22 @@ TEST_CASE("a key starts a new root: nothing from before it is chosen again") {
   CHECK(t.choose(17, true, held) == StateId{16, 3});  // the key, on TCP until acked
   CHECK(t.choose(17, false, held) == StateId{16, 3});
 }
+
+TEST_CASE("under load a session takes an older acked grid state that is already encoded") {
+  BaselineTracker t(4);
+  t.record_sent(8, StateId{8, 1}, true, true);
+  for (ocean::Tick tick = 9; tick <= 21; ++tick) t.record_sent(tick, StateId{tick, static_cast<std::uint32_t>(tick)}, false);
+  t.on_ack({21, 0b1111111111111});  // 8..21: grid states 20, 16, 12 and 8 (the key)
+  CHECK(t.choose(22, true, held) == StateId{20, 20});
+  // Only 12 and 8 have an encode this tick: the newest of them.
+  CHECK(t.choose_encoded(22, [](StateId s) { return s.tick == 12 || s.tick == 8; }) == StateId{12, 12});
+  CHECK(t.choose_encoded(22, [](StateId s) { return s.tick == 8; }) == StateId{8, 1});
+  CHECK(!t.choose_encoded(22, [](StateId s) { return s.tick == 21; }));  // not a grid state
+  CHECK(!t.choose_encoded(8 + ocean::protocol::kMaxBaselineGap + 1, [](StateId s) { return s.tick == 8; }));
+  // A later ack with fewer grid states in its window forgets the older ones.
+  t.on_ack({21, 0b1});  // 21 and 20
+  CHECK(!t.choose_encoded(22, [](StateId s) { return s.tick == 12; }));
+  CHECK(t.choose_encoded(22, [](StateId s) { return s.tick == 20; }) == StateId{20, 20});
+  t.reset();
+  CHECK(!t.choose_encoded(22, held));
+}
