@@ -305,13 +305,17 @@ void ClientConnection::teardown(const std::string& why) {
   if (was_connected) ++counters_.disconnects;
   if (was_connected && session_ && on_session_end_) on_session_end_(*session_, why);
   if (stopped_ || !config_.reconnect) return;
+  const bool full = session_ && session_->last_error().rfind("server_full", 0) == 0;
   // This server failed or dropped us: the next attempt goes to the next replica.
   if (servers_.size() > 1) {
     server_index_ = (server_index_ + 1) % servers_.size();
     ++counters_.failovers;
   }
   waiting_reconnect_ = true;
-  reconnect_at_ = now_s() + backoff_s_;
+  double wait_s = backoff_s_;
+  if (full && servers_.size() <= 1)
+    wait_s = std::max(wait_s, config_.server_full_retry_s * std::uniform_real_distribution<double>(0.75, 1.25)(jitter_));
+  reconnect_at_ = now_s() + wait_s;
   backoff_s_ = std::min(config_.reconnect_max_s, backoff_s_ * 2.0);
   arm_timer();
 }

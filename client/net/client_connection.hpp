@@ -14,6 +14,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,10 @@ struct ClientConnectionConfig {
   bool reconnect = true;
   double reconnect_min_s = 0.25;  // first retry delay; doubles per failure up to reconnect_max_s
   double reconnect_max_s = 5.0;
+  // A server that refused the Hello as server_full is at its capacity: with no other replica to
+  // try, the next attempt waits this long (0.75x to 1.25x, so refused clients do not return in
+  // step), as the refusal's text asks, instead of adding to the load with quick retries.
+  double server_full_retry_s = 10.0;
   std::size_t read_buffer_bytes = 16 * 1024;
 };
 
@@ -132,6 +137,7 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
   bool waiting_reconnect_ = false;
   double reconnect_at_ = 0.0;
   double backoff_s_ = 0.0;
+  std::minstd_rand jitter_{std::random_device{}()};
   bool timer_armed_ = false;
   double timer_due_ = 0.0;
 };

@@ -247,41 +247,51 @@ bool SessionCore::is_key_tick(const ProfileStream& stream, Tick tick) const {
 
 // Sessions keyed at different ticks hold different states forever (a key is lossy), so every
 // root costs its own encodes each tick. Beyond max_roots, the smallest roots old enough are
-// keyed again onto the one root this key tick starts, as many as it takes to be within the cap
-// and as the key budget pays for now, after what the sessions waiting for a key need: merged
-// sessions must all take this tick's key, or they would only scatter into new roots. A session
-// pays at most one extra key per root_merge_age_s, and never a frame.
+// keyed again onto the root this key tick starts (the joiners' root, which it starts anyway),
+// as many as it takes to be within the cap and as the key budget pays for now, after the keys
+// of the sessions waiting for one: merged sessions must all take this tick's key, or they would
+// only scatter into new roots. The largest root is never merged (re-keying most clients to
+// absorb a few would be a key storm), a session pays at most one extra key per
+// root_merge_age_s, and never a frame.
 void SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   std::map<Tick, std::vector<Session*>> roots;
-  std::size_t waiting = 0;  // sessions that need a key to show anything
+  std::size_t waiting = 0;  // sessions that need a key to show anything: they start a root now
   for (auto& [id, session] : sessions_) {
     if (session->stream != &stream) continue;
     if (session->need_key) ++waiting;
     else if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
   }
-  if (roots.size() <= options_.max_roots || !stream.can_key(tick)) return;
+  if (roots.size() + (waiting > 0 ? 1 : 0) <= options_.max_roots || !stream.can_key(tick)) return;
+  Tick largest = 0;
+  std::size_t largest_size = 0;
+  for (const auto& [root, members] : roots)
+    if (members.size() > largest_size) {
+      largest = root;
+      largest_size = members.size();
+    }
   const double min_age_ticks = options_.root_merge_age_s * host_.config.tick_rate_hz;
   std::vector<std::pair<std::size_t, Tick>> old;  // (sessions, root)
   for (const auto& [root, members] : roots)
-    if (static_cast<double>(tick - root) >= min_age_ticks) old.emplace_back(members.size(), root);
-  // The merged roots become one (this tick's), so merging fewer than two lowers nothing.
-  if (old.size() < 2) return;
+    if (root != largest && static_cast<double>(tick - root) >= min_age_ticks) old.emplace_back(members.size(), root);
+  // After merging m roots there are roots - m + 1. Without joiners, merging one lowers nothing.
+  const std::size_t least = waiting > 0 ? 1 : 2;
+  std::size_t merge = std::min(old.size(), roots.size() + 1 - options_.max_roots);
+  if (merge < least) return;
   std::sort(old.begin(), old.end());
-  std::size_t merge = std::min(old.size(), std::max<std::size_t>(2, roots.size() - options_.max_roots + 1));
   const double key_bytes = static_cast<double>(stream.key(tick).bytes);
-  for (; merge >= 2; --merge) {
+  for (; merge >= least; --merge) {
     std::size_t sessions = 0;
     for (std::size_t i = 0; i < merge; ++i) sessions += old[i].first;
     if (key_budget_.try_take_leaving(static_cast<double>(sessions) * key_bytes,
                                      static_cast<double>(waiting) * key_bytes, now_s))
       break;
   }
-  if (merge < 2) return;
+  if (merge < least) return;
   for (std::size_t i = 0; i < merge; ++i)
     for (Session* session : roots[old[i].second]) session->rekey = true;
   host_.metrics.root_merges.inc(static_cast<double>(merge));
-  spdlog::debug("tick {} profile {}: {} key roots; the {} smallest old enough are keyed again", tick,
-                stream.profile().name, roots.size(), merge);
+  spdlog::debug("tick {} profile {}: {} key roots and {} joining; the {} smallest old enough are keyed again", tick,
+                stream.profile().name, roots.size(), waiting, merge);
 }
 
 void SessionCore::sweep_timeouts(double now_s) {

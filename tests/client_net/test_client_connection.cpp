@@ -152,3 +152,31 @@ TEST_CASE("connection: the UDP socket from the Welcome proves itself and carries
   connection->stop();
   io.run_for(std::chrono::milliseconds(20));
 }
+
+TEST_CASE("connection: a client refused as server_full waits the retry time instead of hammering", "[connection]") {
+  asio::io_context io;
+  server::ServerConfig server_config = ocean::test::core_test_config();
+  server_config.max_clients = 1;
+  LoopbackCore server(io, 0, 10, server_config);
+  auto make = [&](double full_retry_s) {
+    ClientConnectionConfig config;
+    config.port = std::to_string(server.port());
+    config.reconnect_min_s = 0.05;
+    config.server_full_retry_s = full_retry_s;
+    config.session.transport = wire::Transport::tcp;
+    return ClientConnection::create(io, config, [](const codec::ReconstructedFrame&, std::uint32_t, double) {});
+  };
+  auto first = make(0.6);
+  first->start();
+  REQUIRE(run_until(io, [&] { return first->connected() && first->session() && first->session()->welcome().has_value(); }));
+  auto refused = make(0.6);
+  refused->start();
+  REQUIRE(run_until(io, [&] { return refused->counters().connect_attempts >= 1 && !refused->connected(); }));
+  io.run_for(std::chrono::milliseconds(400));  // under 0.75 x 0.6 s: no second attempt yet
+  CHECK(refused->counters().connect_attempts == 1);
+  CHECK(refused->counters().last_close_reason.find("server_full") != std::string::npos);
+  REQUIRE(run_until(io, [&] { return refused->counters().connect_attempts >= 2; }, 3.0));  // then it retries
+  refused->stop();
+  first->stop();
+  io.run_for(std::chrono::milliseconds(100));
+}
