@@ -117,14 +117,31 @@ Gauge& ServerMetrics::clients(std::string_view profile, std::string_view transpo
                          {{"profile", std::string(profile)}, {"transport", std::string(transport)}});
 }
 
+namespace {
+
+template <typename Make>
+Counter& remembered(std::vector<std::pair<std::string, Counter*>>& seen, std::string_view label, Make make) {
+  for (const auto& [name, counter] : seen)
+    if (name == label) return *counter;
+  Counter& counter = make();
+  seen.emplace_back(std::string(label), &counter);
+  return counter;
+}
+
+}  // namespace
+
 Counter& ServerMetrics::frames_sent(std::string_view transport) {
-  return registry_.counter("ocean_frames_sent_total", "Frames sent to clients, by transport.",
-                           {{"transport", std::string(transport)}});
+  return remembered(frames_sent_, transport, [&]() -> Counter& {
+    return registry_.counter("ocean_frames_sent_total", "Frames sent to clients, by transport.",
+                             {{"transport", std::string(transport)}});
+  });
 }
 
 Counter& ServerMetrics::bytes_sent(std::string_view transport) {
-  return registry_.counter("ocean_bytes_sent_total", "Payload bytes sent to clients, by transport.",
-                           {{"transport", std::string(transport)}});
+  return remembered(bytes_sent_, transport, [&]() -> Counter& {
+    return registry_.counter("ocean_bytes_sent_total", "Payload bytes sent to clients, by transport.",
+                             {{"transport", std::string(transport)}});
+  });
 }
 
 Counter& ServerMetrics::rejects(std::string_view reason) {
