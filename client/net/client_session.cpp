@@ -136,7 +136,7 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
     }
     case wire::Body::Pong:
       if (state_ != State::streaming) return count_rejection(protocol::Reason::unexpected_message);
-      return handle_pong(protocol::read(*message.body_as_Pong()), now);
+      return handle_pong(protocol::read(*message.body_as_Pong()), transport, now);
     case wire::Body::Error: {
       ++stats_.errors_received;
       const protocol::Error error = protocol::read(*message.body_as_Error());
@@ -190,7 +190,7 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   } else {
     path_ = Path::tcp;
   }
-  send_ping(now);
+  send_ping(now, control_path());
 }
 
 void ClientSession::add_scene(Tick from, std::uint32_t serial, const protocol::SceneParams& scene) {
@@ -266,8 +266,9 @@ bool ClientSession::handle_record(const protocol::FrameRecord& record, double no
   return true;
 }
 
-void ClientSession::handle_pong(const protocol::Pong& pong, double now) {
+void ClientSession::handle_pong(const protocol::Pong& pong, wire::Transport transport, double now) {
   ++stats_.pongs_received;
+  if (transport == wire::Transport::tcp && tcp_probe_.seq != 0 && pong.seq == tcp_probe_.seq) tcp_probe_.answered = true;
   stats_.last_pong_server_tick = pong.server_tick;
   const double rtt = now - static_cast<double>(pong.client_time_us) * 1e-6;
   if (!(rtt >= 0.0 && rtt < 60.0)) return;  // not a Ping of ours

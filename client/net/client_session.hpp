@@ -75,13 +75,16 @@ class ClientSession {
   // Returns true when the record completed a frame.
   bool handle_record(const protocol::FrameRecord& record, double now);
   void add_scene(Tick from, std::uint32_t serial, const protocol::SceneParams& scene);
-  void handle_pong(const protocol::Pong& pong, double now);
+  void handle_pong(const protocol::Pong& pong, wire::Transport transport, double now);
   void reject(const protocol::Verified& result, wire::Transport transport, double now);
   void count_rejection(protocol::Reason reason);
   void send(const protocol::Bytes& bytes, wire::Transport transport);
   void send_ack(double now);
   void send_udp_hello(double now);
-  void send_ping(double now);
+  void send_ping(double now, wire::Transport transport);
+  // UDP has been silent past its limit: true once a Ping sent on TCP since then was answered
+  // (TCP works, so UDP is what fails); sends that Ping when due.
+  bool tcp_answers(double now);
   void request_keyframe(wire::KeyframeReason reason, double now);
   void fall_back_to_tcp(double now);
   void close(const std::string& why);
@@ -115,6 +118,12 @@ class ClientSession {
   bool ack_pending_ = false;          // a frame completed since the last Ack
   std::uint64_t keys_acked_ = 0;      // keyframes_complete when the last key was acked at once
   std::uint32_t ping_seq_ = 0;
+  // The TCP Ping that tells a dead UDP path from a stalled server (both silent then).
+  struct TcpProbe {
+    std::uint32_t seq = 0;  // 0: none out
+    double sent_s = 0.0;
+    bool answered = false;
+  } tcp_probe_;
   codec::ChunkError last_chunk_error_ = codec::ChunkError::ok;
 };
 

@@ -22,8 +22,10 @@ struct ClientSessionConfig {
   // Timers, seconds (PROTOCOL.md 5 and 7).
   double ack_interval_s = 0.1;          // at least one Ack this often while frames complete
   double udp_hello_interval_s = 0.25;   // UdpHello retry
-  double udp_proof_timeout_s = 2.0;     // no UdpReady by then: SetTransport{tcp}
-  double udp_silence_timeout_s = 2.0;   // no datagram for this long on UDP: SetTransport{tcp}
+  // No UdpReady by then, or no datagram for this long on UDP: SetTransport{tcp}, once a Ping on
+  // TCP is answered (a stalled server silences both paths: then nothing changes).
+  double udp_proof_timeout_s = 2.0;
+  double udp_silence_timeout_s = 2.0;
   // No datagram for this long on UDP: UdpHello again (every udp_hello_interval_s) until one comes
   // or the silence timeout. A NAT that moved our port is repaired this way: the server moves the
   // stream once the old address has been quiet a while (PROTOCOL.md 5, step 4).

@@ -52,15 +52,24 @@ void ClientSession::send_udp_hello(double now) {
   next_udp_hello_ = now + config_.udp_hello_interval_s;
 }
 
-void ClientSession::send_ping(double now) {
+void ClientSession::send_ping(double now, wire::Transport transport) {
   protocol::Ping ping;
   ping.session_id = welcome_->session_id;
-  if (control_path() == wire::Transport::udp) ping.cookie = welcome_->udp_cookie;
+  if (transport == wire::Transport::udp) ping.cookie = welcome_->udp_cookie;
   ping.seq = ++ping_seq_;
   ping.client_time_us = static_cast<std::uint64_t>(std::max(0.0, now) * 1e6);
-  send(protocol::encode(ping), control_path());
+  send(protocol::encode(ping), transport);
   ++stats_.pings_sent;
   next_ping_ = now + config_.ping_interval_s;
+}
+
+bool ClientSession::tcp_answers(double now) {
+  if (tcp_probe_.answered) return true;
+  if (tcp_probe_.seq == 0 || now - tcp_probe_.sent_s >= config_.ping_interval_s) {
+    send_ping(now, wire::Transport::tcp);
+    tcp_probe_ = TcpProbe{ping_seq_, now, false};
+  }
+  return false;
 }
 
 void ClientSession::request_keyframe(wire::KeyframeReason reason, double now) {
@@ -86,15 +95,17 @@ void ClientSession::update(double now) {
   if (state_ != State::streaming) return;
   if (now - last_rx_ >= config_.idle_timeout_s) return close("the server was silent for idle_timeout_s");
 
-  if (path_ == Path::udp_proving) {
-    if (now - udp_proof_started_ >= config_.udp_proof_timeout_s)
+  if (path_ == Path::udp_proving || path_ == Path::udp) {
+    // No UdpReady in time, or a silent UDP path: TCP only if TCP answers meanwhile. A server
+    // that stalls (overload, a pause) silences both paths, and a fallback would only add a
+    // keyframe to its load; the client keeps proving UDP all the while.
+    const bool proving = path_ == Path::udp_proving;
+    const double waited = now - (proving ? udp_proof_started_ : last_udp_rx_);
+    const double limit = proving ? config_.udp_proof_timeout_s : config_.udp_silence_timeout_s;
+    if (waited < limit) tcp_probe_ = TcpProbe{};
+    if (waited >= limit && tcp_answers(now))
       fall_back_to_tcp(now);
-    else if (now >= next_udp_hello_)
-      send_udp_hello(now);
-  } else if (path_ == Path::udp) {
-    if (now - last_udp_rx_ >= config_.udp_silence_timeout_s)
-      fall_back_to_tcp(now);
-    else if (now - last_udp_rx_ >= config_.udp_reprove_after_s && now >= next_udp_hello_)
+    else if ((proving || waited >= config_.udp_reprove_after_s) && now >= next_udp_hello_)
       send_udp_hello(now);
   }
 
@@ -105,7 +116,7 @@ void ClientSession::update(double now) {
     else
       next_ack_ = now + config_.ack_interval_s;
   }
-  if (now >= next_ping_) send_ping(now);
+  if (now >= next_ping_) send_ping(now, control_path());
 
   if (!decoder_->newest_complete()) {
     if (now - welcome_at_ >= config_.startup_keyframe_after_s) request_keyframe(wire::KeyframeReason::startup, now);

@@ -49,6 +49,16 @@ class BasicSessionHarness {
     }
   }
 
+  // The server stalls (a pause, an overloaded thread): `seconds` pass with nothing processed or
+  // sent; what the client sends meanwhile waits for the next run_ticks.
+  void stall(double seconds) {
+    const double step = server.tick_period_s();
+    for (const double until = now + seconds; now < until;) {
+      now += step;
+      session.update(now);
+    }
+  }
+
   Server server;
   double now = 1000.0;
   std::vector<protocol::Bytes> client_tcp, client_udp;

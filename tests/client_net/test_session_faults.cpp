@@ -197,3 +197,32 @@ TEST_CASE("session: an Error before the Welcome, a Bye, or an undecodable stream
     CHECK(h.session.close_reason().find("choppy") != std::string::npos);
   }
 }
+
+TEST_CASE("session: a server that stalls silences both paths and does not push a UDP client to TCP",
+          "[session][faults]") {
+  CoreSessionHarness h;
+  h.start();
+  h.run_ticks(60);
+  REQUIRE(h.session.path() == ClientSession::Path::udp);
+  const std::uint64_t pings_before = h.session.stats().pings_sent;
+  h.stall(3.0);  // past the 2 s UDP silence limit, with TCP as silent
+  CHECK(h.session.path() == ClientSession::Path::udp);
+  CHECK(h.session.stats().transport_fallbacks == 0);
+  CHECK(h.session.stats().pings_sent > pings_before);  // it asked TCP whether the server is there
+  h.run_ticks(60);  // the server catches up: the TCP Pong and the datagrams come back together
+  const ClientStats& s = h.session.stats();
+  CHECK(s.transport_fallbacks == 0);
+  CHECK(h.server.set_transport_tcp == 0);
+  CHECK(h.session.path() == ClientSession::Path::udp);
+  CHECK(*s.latest_tick == h.server.tick());
+  CHECK(h.frame_mismatches == 0);
+
+  // Once TCP answers and UDP stays dark, it does fall back.
+  h.drop_down = [](const protocol::Bytes&) { return true; };
+  h.run_ticks(90);
+  CHECK(h.session.stats().transport_fallbacks == 1);
+  CHECK(h.session.path() == ClientSession::Path::tcp);
+  h.drop_down = nullptr;
+  h.run_ticks(30);
+  CHECK(*h.session.stats().latest_tick == h.server.tick());
+}
