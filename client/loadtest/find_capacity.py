@@ -135,7 +135,8 @@ def parse_args():
     ap.add_argument("--target", type=float, default=99.0, help="frames_ok_pct a try must reach")
     ap.add_argument("--duration", type=float, default=20.0, help="measured seconds after the ramp")
     ap.add_argument("--join-rate", type=float, default=100.0, help="clients started per second")
-    ap.add_argument("--resolution", type=float, default=0.1, help="stop bisecting when hi/lo - 1 is below this")
+    ap.add_argument("--resolution", type=float, default=0.1,
+                    help="stop bisecting when hi/lo - 1 is below this: a fraction in (0, 1), e.g. 0.1 for 10 %%")
     ap.add_argument("--server-cpus", default="0", help="taskset -c list for the server ('' = not pinned)")
     ap.add_argument("--loadtest-cpus", default="1", help="taskset -c list for the load test ('' = not pinned)")
     ap.add_argument("--threads", type=int, default=0, help="ocean-loadtest --threads (default: one per load-test CPU)")
@@ -143,6 +144,8 @@ def parse_args():
     ap.add_argument("--no-double", action="store_true", help="skip the try at twice the largest passing N")
     ap.add_argument("--server-arg", action="append", default=[], help="extra ocean-server argument (repeatable)")
     args = ap.parse_args()
+    if not 0.0 < args.resolution < 1.0:
+        ap.error(f"--resolution {args.resolution:g}: must be a fraction in (0, 1) (hi/lo - 1), not a client count")
     if (args.server_cpus or args.loadtest_cpus) and not shutil.which("taskset"):
         ap.error("taskset (util-linux) is needed to pin the server and the load test; or pass --server-cpus '' --loadtest-cpus ''")
     if args.threads <= 0:
