@@ -305,7 +305,7 @@ void ClientConnection::teardown(const std::string& why) {
   if (was_connected) ++counters_.disconnects;
   if (was_connected && session_ && on_session_end_) on_session_end_(*session_, why);
   if (stopped_ || !config_.reconnect) return;
-  const bool full = session_ && session_->last_error().rfind("server_full", 0) == 0;
+  const bool full = session_ && session_->refusal() == protocol::Reason::server_full;
   // This server failed or dropped us: the next attempt goes to the next replica.
   if (servers_.size() > 1) {
     server_index_ = (server_index_ + 1) % servers_.size();

@@ -143,7 +143,10 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
       const std::string what = std::string(protocol::to_string(error.code)) + ": " + error.text;
       last_error_ = what;
       // Before the Welcome an Error is a refusal and the server closes; after it, a refused request.
-      if (state_ == State::awaiting_welcome) close("server refused the Hello: " + what);
+      if (state_ == State::awaiting_welcome) {
+        refusal_ = error.code;
+        close("server refused the Hello: " + what);
+      }
       return;
     }
     case wire::Body::Bye: {

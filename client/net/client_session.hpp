@@ -60,6 +60,8 @@ class ClientSession {
   const ClientStats& stats() const { return stats_; }
   const std::string& close_reason() const { return close_reason_; }
   const std::string& last_error() const { return last_error_; }  // the last Error the server sent
+  // The reason the server gave for refusing the Hello, if it did.
+  const std::optional<protocol::Reason>& refusal() const { return refusal_; }
   // Valid once streaming: the Welcome, the newest scene announced (a SceneUpdate's scene takes
   // effect at its effective tick, which may still be ahead; the decoder knows them all).
   const std::optional<protocol::Welcome>& welcome() const { return welcome_; }
@@ -98,6 +100,7 @@ class ClientSession {
   ClientStats stats_;
   std::string close_reason_;
   std::string last_error_;
+  std::optional<protocol::Reason> refusal_;
   std::optional<protocol::Welcome> welcome_;
   protocol::SceneParams scene_;
   std::unique_ptr<codec::Decoder> decoder_;

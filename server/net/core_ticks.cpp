@@ -160,9 +160,9 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
 // The key budget is in bytes: a modeled mobile key (tens of bytes) costs the links and the
 // server next to nothing, a desktop key with coefficients thousands of times more.
 bool SessionCore::take_key_budget(ProfileStream& stream, Tick tick, double now_s) {
-  const std::size_t bytes = stream.key(tick).bytes;
-  const double burst = std::max(1.0, 0.5 * options_.key_bytes_per_s);
-  return key_budget_.try_take(std::min<std::size_t>(bytes, static_cast<std::size_t>(burst)), now_s);
+  // A key larger than the burst waits for a full bucket rather than forever.
+  const double bytes = std::min(static_cast<double>(stream.key(tick).bytes), key_budget_.burst());
+  return key_budget_.try_take_leaving(bytes, 0.0, now_s);
 }
 
 void SessionCore::send_key(Session& session, ProfileStream& stream, Tick tick, double now_s) {

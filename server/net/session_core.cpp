@@ -1,6 +1,5 @@
 #include "session_core.hpp"
 
-
 #include "admin_token.hpp"
 #include "core_helpers.hpp"
 #include "message_builders.hpp"

@@ -20,14 +20,10 @@ class TokenBucket {
     if (now_s > last_s_) tokens_ = std::min(burst_, tokens_ + (now_s - last_s_) * rate_);
     last_s_ = std::max(last_s_, now_s);
   }
+  double burst() const { return burst_; }
+
   // Takes `bytes` if that many tokens are there; else takes nothing.
-  bool try_take(std::size_t bytes, double now_s) {
-    if (unlimited()) return true;
-    refill(now_s);
-    if (tokens_ < static_cast<double>(bytes)) return false;
-    tokens_ -= static_cast<double>(bytes);
-    return true;
-  }
+  bool try_take(std::size_t bytes, double now_s) { return try_take_leaving(static_cast<double>(bytes), 0.0, now_s); }
   // Takes `amount` only if `reserve` tokens are left after it (work that can wait leaves room
   // for work that cannot); else takes nothing.
   bool try_take_leaving(double amount, double reserve, double now_s) {

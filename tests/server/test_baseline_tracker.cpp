@@ -46,7 +46,7 @@ TEST_CASE("baselines prefer the grid, so sessions acking different ticks share o
   BaselineTracker a(4), b(4);
   for (BaselineTracker* t : {&a, &b}) {
     t->record_sent(8, StateId{8, 1}, true, true);
-    for (ocean::Tick tick = 9; tick <= 14; ++tick) t->record_sent(tick, StateId{tick, tick}, false);
+    for (ocean::Tick tick = 9; tick <= 14; ++tick) t->record_sent(tick, StateId{tick, static_cast<std::uint32_t>(tick)}, false);
   }
   a.on_ack({13, 0b11111});  // 8..13
   b.on_ack({14, 0b110111});  // 14, 13, 12, 10, 9, 8 (11 lost)
