@@ -111,6 +111,17 @@ void Encoder::evict() {
   scenes_.forget_before(states_.empty() ? oldest : std::min(oldest, states_.begin()->first.tick));
 }
 
+bool Encoder::forget_states() {
+  if (states_.empty() && keys_.empty() && deltas_.empty()) return false;
+  states_.clear();
+  advanced_.clear();
+  keys_.clear();
+  key_ids_.clear();
+  deltas_.clear();
+  predictions_.clear();
+  return true;
+}
+
 const ModalState* Encoder::state(StateId id) const {
   auto it = states_.find(id);
   return it == states_.end() ? nullptr : &it->second;

@@ -89,6 +89,10 @@ class Encoder {
 
   bool has_state(StateId id) const { return states_.count(id) != 0; }
   const ModalState* state(StateId id) const;
+  // Drops every state and cached frame (truth and scenes stay): for a stream nobody receives, whose
+  // key states would otherwise stay key_history_ticks. Later deltas need a new key first.
+  // Returns false when there was nothing to drop.
+  bool forget_states();
 
  private:
   struct TruthFrame {

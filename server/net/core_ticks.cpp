@@ -47,8 +47,11 @@ void SessionCore::on_frames(const std::shared_ptr<const TickFrames>& frames, con
 
   bundles_.clear();  // the bytes of last tick's bundles stay alive while queued
   std::vector<std::pair<const void*, codec::StateId>> bases;
+  roots_full_.clear();
+  if (tick_ % static_cast<Tick>(host_.config.tick_rate_hz) == 0) forget_unwatched_streams();
   for (auto& stream : streams_)
-    if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_)) limit_roots(*stream, tick_, now.monotonic_s);
+    if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_) && !limit_roots(*stream, tick_, now.monotonic_s))
+      roots_full_.push_back(stream.get());
   // From a different session each tick: when a budget (keys, encodes) runs out, it is not always
   // the same sessions that wait. A copy, so a session closing meanwhile cannot upset the walk.
   rotate_from_ += 0x9E3779B97F4A7C15ull;
@@ -108,6 +111,10 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
     // A key on the stream link, on a key tick (everyone keyed in one tick shares the key and every
     // delta after it): when required, else (acks missing) at most once per key interval.
     if ((!session.need_key && !key_due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
+    if (std::find(roots_full_.begin(), roots_full_.end(), &stream) != roots_full_.end()) {
+      host_.metrics.keys_deferred_roots.inc();
+      return;
+    }
     // Keys are paced server-wide: a burst of them (mass join, many acks late at once) waits for
     // the next key ticks instead of swamping the thread and the links in one.
     if (!take_key_budget(stream, tick, now_s)) {
@@ -245,23 +252,43 @@ bool SessionCore::is_key_tick(const ProfileStream& stream, Tick tick) const {
   return tick % (static_cast<Tick>(stream.tick_step()) * static_cast<Tick>(frames)) == 0;
 }
 
+void SessionCore::forget_unwatched_streams() {
+  for (auto& stream : streams_) {
+    const bool watched = std::any_of(sessions_.begin(), sessions_.end(),
+                                     [&](const auto& item) { return item.second->stream == stream.get(); });
+    if (!watched && stream->forget_states()) ++streams_released_;
+  }
+}
+
+// A root's deltas cost a synthesis of the profile's grid each frame: a profile's roots together
+// may cost root_samples_per_tick grid samples a tick, within [2, max_roots] roots.
+std::size_t SessionCore::root_cap(const ProfileStream& stream) const {
+  const double grid = stream.profile().grid;
+  const double per_tick = grid * grid / static_cast<double>(stream.tick_step());
+  const double fits = std::floor(options_.root_samples_per_tick / per_tick);
+  return std::max<std::size_t>(2, std::min(options_.max_roots, static_cast<std::size_t>(std::max(0.0, fits))));
+}
+
 // Sessions keyed at different ticks hold different states forever (a key is lossy), so every
-// root costs its own encodes each tick. Beyond max_roots, the smallest roots old enough are
+// root costs its own encodes each tick. Beyond the cap, the smallest roots old enough are
 // keyed again onto the root this key tick starts (the joiners' root, which it starts anyway),
 // as many as it takes to be within the cap and as the key budget pays for now, after the keys
 // of the sessions waiting for one: merged sessions must all take this tick's key, or they would
 // only scatter into new roots. The largest root is never merged (re-keying most clients to
 // absorb a few would be a key storm), a session pays at most one extra key per
-// root_merge_age_s, and never a frame.
-void SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
+// root_merge_age_s, and never a frame. When the roots still fill the cap, the joiners wait for
+// a key tick where they do (a joiner waits; the sessions served keep their tick time).
+bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   std::map<Tick, std::vector<Session*>> roots;
   std::size_t waiting = 0;  // sessions that need a key to show anything: they start a root now
   for (auto& [id, session] : sessions_) {
     if (session->stream != &stream) continue;
-    if (session->need_key) ++waiting;
+    if (session->need_key || (session->key_requested && now_s - session->last_key_s >= options_.key_interval_s))
+      ++waiting;
     else if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
   }
-  if (roots.size() + (waiting > 0 ? 1 : 0) <= options_.max_roots || !stream.can_key(tick)) return;
+  const std::size_t cap = root_cap(stream);
+  if (roots.size() + (waiting > 0 ? 1 : 0) <= cap || !stream.can_key(tick)) return true;
   Tick largest = 0;
   std::size_t largest_size = 0;
   for (const auto& [root, members] : roots)
@@ -275,8 +302,8 @@ void SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
     if (root != largest && static_cast<double>(tick - root) >= min_age_ticks) old.emplace_back(members.size(), root);
   // After merging m roots there are roots - m + 1. Without joiners, merging one lowers nothing.
   const std::size_t least = waiting > 0 ? 1 : 2;
-  std::size_t merge = std::min(old.size(), roots.size() + 1 - options_.max_roots);
-  if (merge < least) return;
+  std::size_t merge = std::min(old.size(), roots.size() + 1 - cap);
+  if (merge < least) return waiting == 0;
   std::sort(old.begin(), old.end());
   const double key_bytes = static_cast<double>(stream.key(tick).bytes);
   for (; merge >= least; --merge) {
@@ -286,12 +313,13 @@ void SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
                                      static_cast<double>(waiting) * key_bytes, now_s))
       break;
   }
-  if (merge < least) return;
+  if (merge < least) return waiting == 0;
   for (std::size_t i = 0; i < merge; ++i)
     for (Session* session : roots[old[i].second]) session->rekey = true;
   host_.metrics.root_merges.inc(static_cast<double>(merge));
   spdlog::debug("tick {} profile {}: {} key roots and {} joining; the {} smallest old enough are keyed again", tick,
                 stream.profile().name, roots.size(), waiting, merge);
+  return waiting == 0 || roots.size() + 1 - merge <= cap;
 }
 
 void SessionCore::sweep_timeouts(double now_s) {

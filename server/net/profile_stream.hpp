@@ -56,6 +56,8 @@ class ProfileStream {
   bool has_state(codec::StateId id) const { return encoder_->has_state(id); }
   bool has_encoded(Tick tick, codec::StateId baseline) const { return encoded_.count({tick, baseline}) != 0; }
   const codec::ModalState* state(codec::StateId id) const { return encoder_->state(id); }  // tests compare clients with it
+  // Nobody receives the stream: its states (about 1 MB each for desktop) go now, not when they age out.
+  bool forget_states() { return encoder_->forget_states(); }
 
   // Encodes run for the current tick (each a distinct (tick, baseline)), and their total time.
   std::size_t encodes_this_tick() const { return encoded_.size(); }

@@ -37,7 +37,10 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       bundled_copies(registry.counter("ocean_udp_bundled_copies_total",
                                       "Earlier unacknowledged frames copied into UDP datagrams (FrameBundle).")),
       root_merges(registry.counter("ocean_key_root_merges_total",
-                                   "Key roots whose sessions were keyed again to keep at most max_roots per profile.")),
+                                   "Key roots whose sessions were keyed again to keep a profile within its root cap.")),
+      keys_deferred_roots(registry.counter("ocean_keys_deferred_roots_total",
+                                           "Key ticks a session needing a key waited because its profile's key roots "
+                                           "filled the cap (until one is old enough to merge).")),
       sessions_started(registry.counter("ocean_sessions_started_total", "Client sessions welcomed.")),
       udp_send_drops(registry.counter("ocean_udp_send_drops_total",
                                       "Datagrams the kernel refused to send (full socket buffer, unreachable peer).")),

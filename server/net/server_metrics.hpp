@@ -31,7 +31,8 @@ class ServerMetrics {
   Counter& param_changes;    // admin ParamChanges accepted
   Gauge& send_queue_max_bytes;   // max over sessions of queued TCP bytes, per tick
   Counter& bundled_copies;   // earlier frames re-sent inside FrameBundles
-  Counter& root_merges;      // key roots merged into a newer key (SessionCoreOptions::max_roots)
+  Counter& root_merges;      // key roots merged into a newer key (beyond the profile's root cap)
+  Counter& keys_deferred_roots;  // key ticks a joiner waited because its profile's roots filled the cap
   Counter& sessions_started; // Welcomes sent
   Counter& udp_send_drops;   // datagrams the kernel refused (full socket buffer, unreachable peer)
   Counter& frames_skipped_load;  // frames or keys a session waited for because a load budget ran out

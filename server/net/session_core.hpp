@@ -36,12 +36,16 @@ struct SessionCoreOptions {
   std::int64_t cookie_lifetime_ms = 3'600'000; // a UdpHello may (re)prove the address this long
   int socket_send_buffer_bytes = 0;            // SO_SNDBUF of client sockets; 0 = the OS default
   // Sharing (README-server.md "Fan-out"): baselines on a grid of this many frames; keys only on
-  // a grid of this period (a joiner waits at most this long); beyond max_roots key roots of a
-  // profile, the smallest roots older than root_merge_age_s are keyed again onto the current one.
+  // a grid of this period; beyond its root cap (root_cap()), the smallest roots of a profile older
+  // than root_merge_age_s are keyed again onto the current one, and while the cap still holds no
+  // new root a joiner waits (at most about root_merge_age_s). The cap is max_roots, or fewer for a
+  // profile whose roots together would synthesize more than root_samples_per_tick grid samples a
+  // tick (a desktop root, 256 x 256, costs about 6 ms a tick), but never fewer than 2.
   std::uint32_t baseline_align_frames = 4;
   double key_period_s = 0.5;
   std::size_t max_roots = 4;
   double root_merge_age_s = 2.0;
+  double root_samples_per_tick = 131072.0;
   // A scene change reaches every client this long before it takes effect (a SceneUpdate on TCP
   // must arrive before the first frame of the new scene, even on a slow link).
   double scene_lead_s = 1.0;
@@ -109,6 +113,9 @@ class SessionCore {
   const SessionCoreOptions& options() const { return options_; }
   const CoreTickStats& last_tick() const { return last_tick_; }
   std::size_t session_count() const { return sessions_.size(); }
+  // Times a stream nobody receives dropped its encoder states (then the server may hand the
+  // memory back to the system).
+  std::uint64_t streams_released() const { return streams_released_; }
   const Admission& admission() const { return admission_; }
   std::size_t max_queued_bytes() const;  // over all sessions, now
   std::size_t peak_queued_bytes() const; // over all sessions, ever (closed ones included)
@@ -137,7 +144,10 @@ class SessionCore {
   bool send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s);
   void send_tcp_frame(Session& session, const SharedFrame& frame);
   SharedBytes bundle_of(const std::vector<const RecentFrame*>& copies, const SharedFrame& newest);
-  void limit_roots(ProfileStream& stream, Tick tick, double now_s);
+  // Merges key roots beyond the cap; false when a new root would still exceed it (joiners wait).
+  bool limit_roots(ProfileStream& stream, Tick tick, double now_s);
+  std::size_t root_cap(const ProfileStream& stream) const;
+  void forget_unwatched_streams();  // once a second
   bool is_key_tick(const ProfileStream& stream, Tick tick) const;
   void sweep_timeouts(double now_s);
   void record_tick_stats(std::vector<std::pair<const void*, codec::StateId>>& bases);
@@ -177,6 +187,8 @@ class SessionCore {
   std::size_t session_limit_ = std::numeric_limits<std::size_t>::max();
   std::uint64_t rotate_from_ = 0;  // where this tick's walk over the sessions starts
   TokenBucket key_budget_;
+  std::vector<const ProfileStream*> roots_full_;
+  std::uint64_t streams_released_ = 0;  // this key tick: no new root, joiners wait
 };
 
 }  // namespace ocean::server

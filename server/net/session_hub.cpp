@@ -5,6 +5,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <malloc.h>
+
 namespace ocean::server {
 
 namespace {
@@ -55,6 +57,16 @@ void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
   server_.metrics().loop_lag_seconds.observe(std::max(0.0, static_cast<double>(now.unix_ms) / 1000.0 - scheduled_s));
   core_.on_frames(frames, now);
   server_.flush();
+  // A desktop stream's states are about 1 MB each, hundreds while its viewers watched. Once the
+  // stream is released they are free, and so, over the next seconds, are the queues and buffers
+  // of its closing sessions; glibc keeps freed memory inside its heaps unless asked to hand it
+  // back, so it is asked once a second for ten seconds after a release.
+  const auto tick_rate = static_cast<std::int64_t>(config.tick_rate_hz);
+  if (core_.streams_released() != streams_released_) {
+    streams_released_ = core_.streams_released();
+    trim_until_tick_ = frames->tick + 10 * tick_rate;
+  }
+  if (frames->tick <= trim_until_tick_ && frames->tick % tick_rate == 0) malloc_trim(0);
   const double served_s = now_instant().monotonic_s - now.monotonic_s;
   server_.metrics().serve_seconds.observe(served_s);
   window_session_ticks_ += static_cast<double>(core_.session_count());

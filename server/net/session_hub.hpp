@@ -32,6 +32,8 @@ class SessionHub {
   double window_busy_s_ = 0.0;
   double window_session_ticks_ = 0.0;  // sessions summed over the window's ticks
   int window_ticks_ = 0;
+  std::uint64_t streams_released_ = 0;  // core_.streams_released() last seen
+  std::int64_t trim_until_tick_ = -1;    // memory is handed back to the system until this tick
   double last_warning_s_ = -1e9;
 };
 
