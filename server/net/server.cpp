@@ -9,6 +9,7 @@
 #include <cmath>
 #include <csignal>
 #include <sys/resource.h>
+#include <sys/socket.h>
 
 namespace ocean::server {
 namespace {
@@ -74,7 +75,6 @@ Server::Server(ServerConfig config)
       metrics_(registry_),
       cookie_key_(cookie_key_from(config_)),
       acceptor_(open_tcp_acceptor(context_, config_.listen, "clients")),
-      udp_socket_(open_udp_socket(context_, udp_address(config_, acceptor_.local_endpoint().port()))),
       schedule_(checked_schedule(config_)),
       producer_(schedule_, offered_profiles(config_)),
       tick_loop_(TickClock(config_.tick_rate_hz, config_.epoch_unix_ms),
@@ -89,8 +89,15 @@ Server::Server(ServerConfig config)
   // Builds the per-profile band evaluators before the first deadline (and surfaces any ParamError).
   (void)producer_.produce(clock.tick_at(system_unix_ns()), now_s);
   tcp_port_ = acceptor_.local_endpoint().port();
-  udp_port_ = udp_socket_.local_endpoint().port();
-  udp_socket_.non_blocking(true);  // a full socket buffer drops a datagram rather than stall the network thread
+  {
+    asio::ip::udp::socket socket = open_udp_socket(context_, udp_address(config_, tcp_port_));
+    udp_port_ = socket.local_endpoint().port();
+    socket.non_blocking(true);  // a full socket buffer drops a datagram rather than stall the network thread
+    udp_ = std::make_unique<DatagramPort>(context_, std::move(socket),
+                                          [this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& from) {
+                                            on_datagram(bytes, from);
+                                          });
+  }
   if (config_.metrics_listen) {
     metrics_http_ = std::make_unique<MetricsHttpServer>(http_context_, *config_.metrics_listen,
                                                         [this](const HttpRequest& r) { return handle_http(r); });
@@ -130,7 +137,7 @@ void Server::run() {
     http_thread_ = std::thread([this] { http_context_.run(); });
   }
   do_accept();
-  do_receive();
+  udp_->start();
   context_.run();
   stop_http();
   {
@@ -161,7 +168,7 @@ void Server::do_stop() {
   std::error_code ignored;
   signals_.cancel(ignored);
   acceptor_.close(ignored);
-  udp_socket_.close(ignored);
+  udp_->close();
   if (metrics_http_) asio::post(http_context_, [this] { metrics_http_->stop(); });
   accept_backoff_.cancel();
   tick_loop_.stop();  // joins the simulation thread; frames it already queued are drained below
@@ -222,29 +229,13 @@ void Server::back_off_accept() {
   });
 }
 
-void Server::on_datagram(std::size_t n) {
+void Server::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& from) {
   if (datagram_handler_) {
-    datagram_handler_(std::span<const std::uint8_t>(datagram_.data(), n), datagram_sender_);
+    datagram_handler_(bytes, from);
   } else {
-    log_reject("udp", peer_text(datagram_sender_), "udp_no_session", true);
+    log_reject("udp", peer_text(from), "udp_no_session", true);
     metrics_.rejects("udp_no_session").inc();
   }
-}
-
-void Server::do_receive() {
-  udp_socket_.async_receive_from(asio::buffer(datagram_), datagram_sender_, [this](std::error_code error, std::size_t n) {
-    if (!udp_socket_.is_open()) return;
-    if (!error) on_datagram(n);
-    // Drain what else is queued without a reactor round trip per datagram (the socket is
-    // non-blocking), but bounded so TCP clients and ticks are not starved by a flood.
-    for (int i = 0; i < 256 && udp_socket_.is_open(); ++i) {
-      std::error_code more;
-      const std::size_t got = udp_socket_.receive_from(asio::buffer(datagram_), datagram_sender_, 0, more);
-      if (more) break;
-      on_datagram(got);
-    }
-    do_receive();
-  });
 }
 
 void Server::request_scene(const sim::SceneParams& scene, std::int64_t from) {
@@ -253,20 +244,18 @@ void Server::request_scene(const sim::SceneParams& scene, std::int64_t from) {
 }
 
 bool Server::send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to) {
-  if (!udp_socket_.is_open()) return false;
-  std::error_code error;
-  udp_socket_.send_to(asio::buffer(bytes.data(), bytes.size()), to, 0, error);
-  return !error;
+  if (!udp_->is_open()) return false;
+  return ::sendto(udp_->fd(), bytes.data(), bytes.size(), MSG_DONTWAIT, to.data(), to.size()) >= 0;
 }
 
 void Server::send_shared(const SharedBytes& bytes, const asio::ip::udp::endpoint& to) {
-  if (udp_socket_.is_open()) batch_.add(bytes, to, udp_socket_.native_handle());
+  if (udp_->is_open()) batch_.add(bytes, to, udp_->fd());
 }
 
 void Server::flush() {
-  if (!udp_socket_.is_open()) return;
+  if (!udp_->is_open()) return;
   const std::uint64_t dropped = batch_.dropped();
-  batch_.flush(udp_socket_.native_handle());
+  batch_.flush(udp_->fd());
   if (batch_.dropped() > dropped) metrics_.udp_send_drops.inc(static_cast<double>(batch_.dropped() - dropped));
 }
 

@@ -6,6 +6,7 @@
 
 #include "bounded_queue.hpp"
 #include "datagram_batch.hpp"
+#include "datagram_port.hpp"
 #include "frame_producer.hpp"
 #include "link.hpp"
 #include "metrics.hpp"
@@ -93,8 +94,7 @@ class Server : public DatagramSocket {
   void do_accept();
   bool descriptors_low(asio::ip::tcp::socket& socket);
   void back_off_accept();
-  void do_receive();
-  void on_datagram(std::size_t n);
+  void on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& from);
   void do_stop();
   void on_tick(const TickDecision& decision);  // simulation thread
   void drain_frames();                          // network thread
@@ -113,7 +113,7 @@ class Server : public DatagramSocket {
   ServerMetrics metrics_;
   CookieKey cookie_key_;
   asio::ip::tcp::acceptor acceptor_;
-  asio::ip::udp::socket udp_socket_;
+  std::unique_ptr<DatagramPort> udp_;  // the bound UDP socket, read outside asio's reactor
   std::unique_ptr<MetricsHttpServer> metrics_http_;
   std::uint16_t tcp_port_ = 0;
   std::uint16_t udp_port_ = 0;
@@ -133,9 +133,7 @@ class Server : public DatagramSocket {
   std::mutex scene_request_mutex_;
   std::vector<std::pair<sim::SceneParams, std::int64_t>> scene_requests_;  // guarded by scene_request_mutex_
 
-  std::array<std::uint8_t, 1500> datagram_{};
   DatagramBatch batch_;
-  asio::ip::udp::endpoint datagram_sender_;
 
   SceneSchedule schedule_;
   FrameProducer producer_;  // used only on the simulation thread
