@@ -68,7 +68,7 @@ TEST_CASE("session: UDP loss and reordering never corrupt a frame, acks name exa
   }
 }
 
-TEST_CASE("session: a lost chunk leaves its frame incomplete and unacked; the next frame recovers", "[session]") {
+TEST_CASE("session: a lost chunk leaves its frame incomplete and unacked, the next frame recovers", "[session]") {
   FakeServerOptions options;
   options.noise_m = 0.05;  // corrections everywhere: deltas of several chunks
   SessionHarness h(options);

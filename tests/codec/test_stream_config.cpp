@@ -55,7 +55,7 @@ TEST_CASE("encoder options are checked") {
   CHECK_THROWS_WITH(Encoder(StreamConfig{}, o), Catch::Contains("max_payload"));
 }
 
-TEST_CASE("tick_rate_hz sets the step a delta advances by; 0 means rate_hz") {
+TEST_CASE("tick_rate_hz sets the step a delta advances by, 0 means rate_hz") {
   StreamConfig c;
   c.rate_hz = 15;
   CHECK(c.dt_s() == 1.0 / 15);

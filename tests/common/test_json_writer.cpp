@@ -20,7 +20,7 @@ TEST_CASE("fields come out in call order, spaced or compact") {
   CHECK(JsonWriter().str() == "{}");
 }
 
-TEST_CASE("numbers: printf's fixed and significant-digit forms; integers of any width; null for non-finite") {
+TEST_CASE("numbers: printf's fixed and significant-digit forms, integers of any width, null for non-finite") {
   JsonWriter json;
   json.fixed("a", 1.0 / 3.0, 4).number("b", 1234567.0, 3).number("c", 0.5);
   json.integer("big", std::numeric_limits<std::uint64_t>::max()).integer("neg", std::int64_t{-7});

@@ -52,7 +52,7 @@ TEST_CASE("options: bad values name their flag") {
   CHECK(ok.options.port == "7100");
 }
 
-TEST_CASE("options: --server takes a comma list and repeats, in order; a bad entry is named") {
+TEST_CASE("options: --server takes a comma list and repeats, in order, a bad entry is named") {
   using ocean::client::ServerEndpoint;
   const OptionsResult list = parse_options({"--server", "10.0.0.1:7100,[::1]:7200", "--server", "b.example:7300"});
   REQUIRE(list.error.empty());

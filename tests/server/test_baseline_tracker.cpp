@@ -12,7 +12,7 @@ namespace {
 const auto held = [](StateId) { return true; };
 }
 
-TEST_CASE("UDP baselines are the newest acked state; TCP ones the last queued") {
+TEST_CASE("UDP baselines are the newest acked state, TCP ones the last queued") {
   BaselineTracker tracker;
   tracker.record_sent(10, StateId{10, 1}, true);  // the key, on TCP
   tracker.record_sent(11, StateId{11, 2}, false);

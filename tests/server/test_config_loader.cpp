@@ -323,7 +323,7 @@ TEST_CASE("a long schedule loads in linear time, and one over the limit is refus
   CHECK(apply_config_toml(over, schedule_text(kMaxScheduleEntries + 1), "over.toml").find("at most") != std::string::npos);
 }
 
-TEST_CASE("any 64-bit seed can be given, in TOML as a string; a bad one says what is allowed", "[config]") {
+TEST_CASE("any 64-bit seed can be given, in TOML as a string, a bad one says what is allowed", "[config]") {
   CHECK(load({"--seed", "18446744073709551615"}).config.scene.seed == 18446744073709551615ull);
   CHECK(load({"--seed", "0xfedcba9876543210"}).config.scene.seed == 0xfedcba9876543210ull);
   TempFile file("seed = \"0xffffffffffffffff\"\n");

@@ -138,7 +138,7 @@ TEST_CASE("a wrong-token ParamChange flood closes the guessers and writes a boun
   CHECK(m.log_suppressed("token_guessing").value() + m.log_suppressed("connect").value() >= 0.0);
 }
 
-TEST_CASE("a UdpHello replayed from another port cannot move a live UDP stream; a quiet one moves") {
+TEST_CASE("a UdpHello replayed from another port cannot move a live UDP stream, a quiet one moves") {
   Rig r;
   auto link = r.connect(0.0);
   const std::uint64_t id = r.hello(*link, 0.0);

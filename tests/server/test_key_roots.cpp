@@ -131,7 +131,7 @@ TEST_CASE("key roots stay within the cap: old roots merge onto a newer key, join
   CHECK(keys > ids.size());  // merged sessions were keyed again
 }
 
-TEST_CASE("keys go out within the key byte budget; viewers beyond it wait for the next key ticks") {
+TEST_CASE("keys go out within the key byte budget, viewers beyond it wait for the next key ticks") {
   SessionCoreOptions options = fan_out_options();
   const std::size_t key_bytes = mobile_key_bytes();
   options.key_bytes_per_s = 2.5 * static_cast<double>(key_bytes);  // 2.5 keys a second, burst 1.25

@@ -13,7 +13,7 @@ proto::Hello tcp_hello(std::uint8_t profile = 1) { return proto::Hello{profile, 
 
 }  // namespace
 
-TEST_CASE("an admin's ParamChange reaches every client at one tick; a viewer's is refused") {
+TEST_CASE("an admin's ParamChange reaches every client at one tick, a viewer's is refused") {
   ServerConfig config = session_test_config();
   config.admin_token = "s3cret-token";
   SessionHarness harness(config);

@@ -209,7 +209,7 @@ TEST_CASE("spectral slopes match central differences to O(dx^2)", "[sim][fields]
   CHECK(e64 / e128 == Approx(4.0).epsilon(0.2));
 }
 
-TEST_CASE("choppiness 0 gives no displacement and J = 1; any choppiness keeps mean J = 1", "[sim][choppy]") {
+TEST_CASE("choppiness 0 gives no displacement and J = 1, any choppiness keeps mean J = 1", "[sim][choppy]") {
   SceneParams p;
   p.size_x = p.size_z = 128;
   p.patch_x_m = p.patch_z_m = 128.0;
