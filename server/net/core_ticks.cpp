@@ -287,7 +287,9 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
       ++waiting;
     else if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
   }
-  const std::size_t cap = root_cap(stream);
+  // Between joins the roots are consolidated to two (the largest and the one merged onto this
+  // key), so a quiet server pays two encodes a tick, not the cap's.
+  const std::size_t cap = waiting > 0 ? root_cap(stream) : std::min<std::size_t>(2, root_cap(stream));
   if (roots.size() + (waiting > 0 ? 1 : 0) <= cap || !stream.can_key(tick)) return true;
   Tick largest = 0;
   std::size_t largest_size = 0;
@@ -305,14 +307,18 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   std::size_t merge = std::min(old.size(), roots.size() + 1 - cap);
   if (merge < least) return waiting == 0;
   std::sort(old.begin(), old.end());
+  // Joiners wait for this merge, so it goes first; the budget must leave one joiner's key.
   const double key_bytes = static_cast<double>(stream.key(tick).bytes);
+  const double reserve = waiting > 0 ? key_bytes : 0.0;
   for (; merge >= least; --merge) {
     std::size_t sessions = 0;
     for (std::size_t i = 0; i < merge; ++i) sessions += old[i].first;
-    if (key_budget_.try_take_leaving(static_cast<double>(sessions) * key_bytes,
-                                     static_cast<double>(waiting) * key_bytes, now_s))
-      break;
+    if (key_budget_.try_take_leaving(static_cast<double>(sessions) * key_bytes, reserve, now_s)) break;
   }
+  // A root whose keys the budget's burst can never hold (large explicit keys, a small budget)
+  // cannot be merged: then the joiners start a root beyond the cap rather than wait for good.
+  if (merge < least && waiting > 0)
+    return static_cast<double>(old.front().first) * key_bytes + reserve > key_budget_.burst();
   if (merge < least) return waiting == 0;
   for (std::size_t i = 0; i < merge; ++i)
     for (Session* session : roots[old[i].second]) session->rekey = true;
