@@ -13,7 +13,8 @@ a try needs frames_ok_pct >= target and frames_bad == 0 (ground truth, every fra
 --repeat R, the median of R runs must reach the target and none may have a bad frame. Per try:
 server_us_per_datagram is the server's CPU time over the datagrams the clients received (on
 loopback with no --link, what it sent); at twice capacity, admitted_ok_pct is the on-time share
-of the clients that got a Welcome, refusals the reasons the others were given.
+of the clients that got a Welcome, refusals the reasons the others were given, and not_welcomed
+how every client without a Welcome ended (a refusal's reason, still connecting, or a timeout).
 
 --scenario NAME runs an ocean-loadtest scenario instead of --profile/--transport/--link, with the
 server started as the scenario needs (tick rate, epoch, weather schedule: local_server.py)."""
@@ -85,7 +86,7 @@ def row_of(s, clients, target):
     return {"clients": clients, "pass": ok, "frames_ok_pct": s["frames_ok_pct"],
             "admitted_ok_pct": s["frames_ok_pct_welcomed"], "frames_bad": s["frames_bad"],
             "clients_welcomed": s["clients_welcomed"], "clients_connected": s["clients_connected"],
-            "refusals": s["refusals"], "transport_fallbacks": s["transport_fallbacks"], "keyframes": s["keyframes"],
+            "refusals": s["refusals"], "not_welcomed": s["not_welcomed"], "transport_fallbacks": s["transport_fallbacks"], "keyframes": s["keyframes"],
             "server_cpu_pct": s.get("server_cpu_pct"), "loadtest_cpu_pct": s["loadtest_cpu_pct"],
             "server_us_per_datagram": round(server_cpu_s / datagrams * 1e6, 2) if datagrams else None,
             "datagrams_per_s": round(datagrams / s["duration_s"]) if s["duration_s"] else 0,

@@ -126,6 +126,7 @@ void print_table(std::ostream& out, const LoadSummary& s) {
     row(label.c_str(), std::to_string(n));
   }
   for (const auto& [reason, n] : s.refusals) row(("refused: " + reason).c_str(), std::to_string(n));
+  for (const auto& [why, n] : s.not_welcomed) row(("never welcomed: " + why).c_str(), std::to_string(n));
   row("messages rejected", std::to_string(s.messages_rejected));
   row("fallbacks to tcp", std::to_string(s.transport_fallbacks));
   row("frames recovered", std::to_string(s.frames_recovered));

@@ -33,6 +33,11 @@ struct LoadSummary : ConnectionFigures {
   // Clients not connected at the end whose last attempt the server refused (an Error before the
   // Welcome), by the Error's reason: what admission control said to the clients beyond capacity.
   std::map<std::string, std::uint64_t> refusals;
+  // Clients that never got a Welcome, by how their last attempt ended: "refused: <reason>" (the
+  // server said why), "connecting" (still trying), or the client's own close reason (no Welcome
+  // in time, connection refused...). Beyond capacity it shows whether every client turned away
+  // was told why.
+  std::map<std::string, std::uint64_t> not_welcomed;
   // Frames owed to the clients that got a Welcome: beyond capacity, the refused clients' frames
   // are all lost, and the admitted clients' service is judged over these alone.
   std::uint64_t frames_expected_welcomed = 0;

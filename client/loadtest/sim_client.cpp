@@ -1,5 +1,6 @@
 #include "sim_client.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace ocean::loadtest {
@@ -18,12 +19,17 @@ void SimClient::add_counters_to(LoadSummary& s) const {
       s.codec_rejections[std::string(codec::to_string(static_cast<codec::ChunkError>(r)))] += counts.codec_by_reason[r];
   if (connection && connection->counters().connects > 1) s.reconnects += connection->counters().connects - 1;
   if (welcome_tick) ++s.clients_welcomed;
-  if (connection && !connection->connected()) {
-    // "server refused the Hello: <reason>: <text>" (ClientSession): counted by reason, as the
-    // text may carry numbers (a retry hint) that would make every client its own row.
-    static constexpr std::string_view kRefused = "server refused the Hello: ";
-    const std::string& why = connection->counters().last_close_reason;
-    if (why.starts_with(kRefused)) ++s.refusals[why.substr(kRefused.size(), why.find(':', kRefused.size()) - kRefused.size())];
+  // "server refused the Hello: <reason>: <text>" (ClientSession): counted by reason, as the text
+  // may carry numbers (a retry hint) that would make every client its own row.
+  static constexpr std::string_view kRefused = "server refused the Hello: ";
+  const std::string why = connection ? connection->counters().last_close_reason : std::string();
+  const bool refused = why.starts_with(kRefused);
+  const std::string reason = refused ? why.substr(kRefused.size(), why.find(':', kRefused.size()) - kRefused.size()) : "";
+  if (connection && !connection->connected() && refused) ++s.refusals[reason];
+  if (!welcome_tick) {
+    if (refused) ++s.not_welcomed["refused: " + reason];
+    else if (why.empty()) ++s.not_welcomed[connection ? "connecting" : "never started"];
+    else ++s.not_welcomed[why.substr(0, std::min<std::size_t>(why.find(':'), 48))];
   }
 }
 

@@ -63,6 +63,7 @@ inline constexpr SummaryField<double> kSameDoubles[] = {
 inline constexpr SummaryField<std::map<std::string, std::uint64_t>> kSummedMaps[] = {
     {"codec_rejections", &LoadSummary::codec_rejections},
     {"refusals", &LoadSummary::refusals},
+    {"not_welcomed", &LoadSummary::not_welcomed},
 };
 inline constexpr SummaryField<std::string> kSameTexts[] = {
     {"profile", &LoadSummary::profile},

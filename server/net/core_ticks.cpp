@@ -261,12 +261,17 @@ void SessionCore::forget_unwatched_streams() {
 }
 
 // A root's deltas cost a synthesis of the profile's grid each frame: a profile's roots together
-// may cost root_samples_per_tick grid samples a tick, within [2, max_roots] roots.
-std::size_t SessionCore::root_cap(const ProfileStream& stream) const {
+// may cost root_samples_per_tick grid samples a tick (at least 2 roots). The cap the merges keep
+// is that, at most max_roots.
+std::size_t SessionCore::root_budget(const ProfileStream& stream) const {
   const double grid = stream.profile().grid;
   const double per_tick = grid * grid / static_cast<double>(stream.tick_step());
   const double fits = std::floor(options_.root_samples_per_tick / per_tick);
-  return std::max<std::size_t>(2, std::min(options_.max_roots, static_cast<std::size_t>(std::max(0.0, fits))));
+  return std::max<std::size_t>(2, static_cast<std::size_t>(std::clamp(fits, 0.0, 1e6)));
+}
+
+std::size_t SessionCore::root_cap(const ProfileStream& stream) const {
+  return std::min(options_.max_roots, root_budget(stream));
 }
 
 // Sessions keyed at different ticks hold different states forever (a key is lossy), so every
@@ -276,8 +281,9 @@ std::size_t SessionCore::root_cap(const ProfileStream& stream) const {
 // of the sessions waiting for one: merged sessions must all take this tick's key, or they would
 // only scatter into new roots. The largest root is never merged (re-keying most clients to
 // absorb a few would be a key storm), a session pays at most one extra key per
-// root_merge_age_s, and never a frame. When the roots still fill the cap, the joiners wait for
-// a key tick where they do (a joiner waits; the sessions served keep their tick time).
+// root_merge_age_s, and never a frame. Where one more root would exceed the profile's root
+// budget (desktop), the joiners wait for a key tick with room (a joiner waits; the sessions
+// served keep their tick time); cheap roots (mobile) let them in and the merges catch up.
 bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   std::map<Tick, std::vector<Session*>> roots;
   std::size_t waiting = 0;  // sessions that need a key to show anything: they start a root now
@@ -290,6 +296,10 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   // Between joins the roots are consolidated to two (the largest and the one merged onto this
   // key), so a quiet server pays two encodes a tick, not the cap's.
   const std::size_t cap = waiting > 0 ? root_cap(stream) : std::min<std::size_t>(2, root_cap(stream));
+  // Joiners wait only where one more root would cost more than the budget (desktop beyond 2);
+  // cheap roots (mobile: 32 fit) let them in at once, and the merges catch up.
+  const std::size_t budget = root_budget(stream);
+  const auto room = [&](std::size_t roots_after) { return waiting == 0 || roots_after <= budget; };
   if (roots.size() + (waiting > 0 ? 1 : 0) <= cap || !stream.can_key(tick)) return true;
   Tick largest = 0;
   std::size_t largest_size = 0;
@@ -305,11 +315,12 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   // After merging m roots there are roots - m + 1. Without joiners, merging one lowers nothing.
   const std::size_t least = waiting > 0 ? 1 : 2;
   std::size_t merge = std::min(old.size(), roots.size() + 1 - cap);
-  if (merge < least) return waiting == 0;
+  if (merge < least) return room(roots.size() + 1);
   std::sort(old.begin(), old.end());
-  // Joiners wait for this merge, so it goes first; the budget must leave one joiner's key.
+  // The budget pays the waiting joiners' keys first, unless they wait for this merge: then it
+  // goes first and must leave one joiner's key.
   const double key_bytes = static_cast<double>(stream.key(tick).bytes);
-  const double reserve = waiting > 0 ? key_bytes : 0.0;
+  const double reserve = room(roots.size() + 1) ? static_cast<double>(waiting) * key_bytes : waiting > 0 ? key_bytes : 0.0;
   for (; merge >= least; --merge) {
     std::size_t sessions = 0;
     for (std::size_t i = 0; i < merge; ++i) sessions += old[i].first;
@@ -317,15 +328,14 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   }
   // A root whose keys the budget's burst can never hold (large explicit keys, a small budget)
   // cannot be merged: then the joiners start a root beyond the cap rather than wait for good.
-  if (merge < least && waiting > 0)
-    return static_cast<double>(old.front().first) * key_bytes + reserve > key_budget_.burst();
-  if (merge < least) return waiting == 0;
+  if (merge < least)
+    return room(roots.size() + 1) || static_cast<double>(old.front().first) * key_bytes + reserve > key_budget_.burst();
   for (std::size_t i = 0; i < merge; ++i)
     for (Session* session : roots[old[i].second]) session->rekey = true;
   host_.metrics.root_merges.inc(static_cast<double>(merge));
   spdlog::debug("tick {} profile {}: {} key roots and {} joining; the {} smallest old enough are keyed again", tick,
                 stream.profile().name, roots.size(), waiting, merge);
-  return waiting == 0 || roots.size() + 1 - merge <= cap;
+  return room(roots.size() + 1 - merge);
 }
 
 void SessionCore::sweep_timeouts(double now_s) {

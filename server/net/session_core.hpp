@@ -37,10 +37,10 @@ struct SessionCoreOptions {
   int socket_send_buffer_bytes = 0;            // SO_SNDBUF of client sockets; 0 = the OS default
   // Sharing (README-server.md "Fan-out"): baselines on a grid of this many frames; keys only on
   // a grid of this period; beyond its root cap (root_cap()), the smallest roots of a profile older
-  // than root_merge_age_s are keyed again onto the current one, and while the cap still holds no
-  // new root a joiner waits (at most about root_merge_age_s). The cap is max_roots, or fewer for a
-  // profile whose roots together would synthesize more than root_samples_per_tick grid samples a
-  // tick (a desktop root, 256 x 256, costs about 6 ms a tick), but never fewer than 2.
+  // than root_merge_age_s are keyed again onto the current one. The cap is max_roots, or fewer for
+  // a profile whose roots together would synthesize more than root_samples_per_tick grid samples
+  // a tick (a desktop root, 256 x 256, costs about 6 ms a tick), but never fewer than 2; and while
+  // one more root would exceed that budget, a joiner waits (at most about root_merge_age_s).
   std::uint32_t baseline_align_frames = 4;
   double key_period_s = 0.5;
   std::size_t max_roots = 4;
@@ -147,6 +147,7 @@ class SessionCore {
   // Merges key roots beyond the cap; false when a new root would still exceed it (joiners wait).
   bool limit_roots(ProfileStream& stream, Tick tick, double now_s);
   std::size_t root_cap(const ProfileStream& stream) const;
+  std::size_t root_budget(const ProfileStream& stream) const;
   void forget_unwatched_streams();  // once a second
   bool is_key_tick(const ProfileStream& stream, Tick tick) const;
   void sweep_timeouts(double now_s);

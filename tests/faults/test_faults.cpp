@@ -300,6 +300,7 @@ TEST_CASE("UDP garbage and forged datagrams are dropped unanswered while the vic
   REQUIRE(victim);
   REQUIRE(victim->udp_port == s.port());
   REQUIRE(s.population().on_udp(0));
+  settle_key_roots();
   const std::uint64_t victim_keys_before = s.population().keyframes(0);
   const std::string before = s.metrics();
   std::atomic<std::uint64_t> datagrams{0};

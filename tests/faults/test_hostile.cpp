@@ -217,6 +217,7 @@ TEST_CASE("a viewer's UdpHello replayed from another port of its address does no
   const auto victim = s.population().welcome(0);
   REQUIRE(victim);
   REQUIRE(s.population().on_udp(0));
+  settle_key_roots();
   const std::uint64_t victim_keys_before = s.population().keyframes(0);
   std::uint64_t stolen_bytes = 0;
   const FaultMeasure m = s.measure("UdpHello replayed, new port", [&] {

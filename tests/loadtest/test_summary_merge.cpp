@@ -29,6 +29,8 @@ LoadSummary part(int clients, double latency_scale_s, std::uint64_t seed) {
   s.frames_bad = seed;  // distinct per part, so a sum is visible
   s.codec_rejections["unknown_baseline"] = seed;
   s.refusals["over_capacity"] = seed;
+  s.not_welcomed["refused: over_capacity"] = seed;
+  s.not_welcomed["connecting"] = 2 * seed;
   s.error_bound_m = 0.005;
   s.interpolation_delay_ms = 100;
   s.max_err_m = 0.001 * static_cast<double>(seed);
@@ -88,6 +90,8 @@ TEST_CASE("merge: counts summed, extremes kept, percentiles from the merged hist
   CHECK(total.frames_bad == 3);
   CHECK(total.codec_rejections.at("unknown_baseline") == 3);
   CHECK(total.refusals.at("over_capacity") == 3);
+  CHECK(total.not_welcomed.at("refused: over_capacity") == 3);
+  CHECK(total.not_welcomed.at("connecting") == 6);
   CHECK(total.max_err_m == b.max_err_m);
   CHECK(total.loadtest_cpu_pct == 40);  // two processes' CPU together
   CHECK(total.frames_ok_pct == Approx(100.0 * (a.frames_ok + b.frames_ok) / (a.frames_expected + b.frames_expected)));

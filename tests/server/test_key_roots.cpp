@@ -68,6 +68,7 @@ SessionCoreOptions fan_out_options() {
   options.baseline_align_frames = 4;
   options.max_roots = 2;
   options.root_merge_age_s = 1.0;
+  options.root_samples_per_tick = 2.0 * 64 * 64;  // roots as costly as desktop ones: a budget of 2
   return options;
 }
 
@@ -154,4 +155,28 @@ TEST_CASE("keys go out within the key byte budget, viewers beyond it wait for th
   }
   CHECK(key_ticks.back() > key_ticks.front());  // the budget made some wait
   CHECK(r.rig.metrics().frames_skipped_load.value() > 0.0);
+}
+
+TEST_CASE("cheap roots let joiners in at once, and the merges bring them back to the cap") {
+  SessionCoreOptions options = fan_out_options();
+  options.root_samples_per_tick = 32.0 * 64 * 64;  // mobile roots: 32 fit the budget, the cap stays 2
+  RootsRig r(options);
+  std::map<std::uint64_t, Tick> joined;
+  for (int i = 0; i < 6; ++i) {
+    const std::uint64_t id = r.join(41000 + i);
+    REQUIRE(id != 0);
+    joined[id] = r.rig.tick();
+    for (int k = 0; k < 15; ++k) r.step();
+  }
+  for (int k = 0; k < 120; ++k) r.step();
+  CHECK(r.rig.metrics().keys_deferred_roots.value() == 0.0);
+  for (const auto& [id, tick] : joined) {
+    REQUIRE(!r.sent[id].empty());
+    CHECK(r.sent[id].front().tick - tick <= 15);  // the next key tick
+  }
+  std::size_t most = 0;
+  for (const auto& [tick, n] : r.encodes) most = std::max(most, n);
+  CHECK(most >= 3);  // beyond the cap for a while
+  const Tick last = r.rig.tick();
+  for (Tick t = last - 14; t <= last; ++t) CHECK(r.encodes[t] <= 2);
 }
