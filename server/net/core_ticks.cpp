@@ -96,7 +96,7 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
   ProfileStream& stream = *session.stream;
   if (!session.link->open() || !stream.is_frame_tick(tick)) return;
   const bool udp = session.on_udp();
-  const bool key_due = now_s - session.last_key_s >= options_.key_interval_s;
+  const bool due = key_due(session, now_s);
   std::optional<codec::StateId> base;
   if (session.rekey) {  // merged this key tick, its key already paid for
     session.rekey = false;
@@ -105,12 +105,12 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
       return send_key(session, stream, tick, now_s);
     }
   }
-  if (!session.need_key && !(session.key_requested && key_due))
+  if (!session.need_key && !(session.key_requested && due))
     base = session.baselines.choose(tick, udp, [&](codec::StateId id) { return stream.has_state(id); });
   if (!base) {
     // A key on the stream link, on a key tick (everyone keyed in one tick shares the key and every
     // delta after it): when required, else (acks missing) at most once per key interval.
-    if ((!session.need_key && !key_due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
+    if ((!session.need_key && !due) || !is_key_tick(stream, tick) || !stream.can_key(tick)) return;
     if (std::find(roots_full_.begin(), roots_full_.end(), &stream) != roots_full_.end()) {
       host_.metrics.keys_deferred_roots.inc();
       return;
@@ -289,8 +289,7 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   std::size_t waiting = 0;  // sessions that need a key to show anything: they start a root now
   for (auto& [id, session] : sessions_) {
     if (session->stream != &stream) continue;
-    if (session->need_key || (session->key_requested && now_s - session->last_key_s >= options_.key_interval_s))
-      ++waiting;
+    if (session->need_key || (session->key_requested && key_due(*session, now_s))) ++waiting;
     else if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
   }
   // Between joins the roots are consolidated to two (the largest and the one merged onto this

@@ -198,7 +198,7 @@ void SessionCore::on_message(const std::shared_ptr<Session>& session, std::span<
       // PROTOCOL.md 5.6: a key, then TCP only; at most one key per key interval, so switching
       // back and forth cannot ask for keys faster than KeyframeRequests can.
       if (!session->wants_udp) {
-        if (now.monotonic_s - session->last_key_s >= options_.key_interval_s) session->need_key = true;
+        if (key_due(*session, now.monotonic_s)) session->need_key = true;
         else session->key_requested = true;
       }
       return update_client_gauges();

@@ -150,6 +150,8 @@ class SessionCore {
   std::size_t root_budget(const ProfileStream& stream) const;
   void forget_unwatched_streams();  // once a second
   bool is_key_tick(const ProfileStream& stream, Tick tick) const;
+  // A key interval has passed since the session's last key: a requested key may go out.
+  bool key_due(const Session& session, double now_s) const { return now_s - session.last_key_s >= options_.key_interval_s; }
   void sweep_timeouts(double now_s);
   void record_tick_stats(std::vector<std::pair<const void*, codec::StateId>>& bases);
   // Tells every stream and every session of scenes that take effect within the lead.
