@@ -5,18 +5,21 @@
 
 namespace ocean::server {
 
-void AdmissionBudget::observe(double busy_s, double wall_s, double sessions) {
-  if (wall_s <= 0.0) return;
-  const double share = std::clamp(busy_s / wall_s, 0.0, 1.0);
-  // Smoothed over a few seconds: one slow second (a key tick, a burst of joins) does not close
-  // the door, a lasting load does.
-  busy_share_ = 0.6 * busy_share_ + 0.4 * share;
-  if (busy_share_ > target_busy_) {
-    const auto now_served = static_cast<std::size_t>(std::floor(sessions));
-    capacity_ = std::min(capacity_, std::max<std::size_t>(now_served, 1));
-  } else if (busy_share_ < 0.8 * target_busy_) {
+void AdmissionBudget::observe(const LoadPeriod& period) {
+  if (period.wall_s <= 0.0) return;
+  const double waited = std::clamp(period.waited_s / period.wall_s, 0.0, 1.0);
+  const double busy = std::clamp((period.ran_s + period.waited_s) / period.wall_s, waited, 1.0);
+  // Smoothed over a few seconds: one slow second (a key tick, a burst of joins) moves the
+  // capacity a little, a lasting load moves it all the way.
+  busy_share_ = 0.6 * busy_share_ + 0.4 * busy;
+  wait_share_ = 0.6 * wait_share_ + 0.4 * waited;
+  sessions_ = 0.6 * sessions_ + 0.4 * std::max(0.0, period.sessions);
+  if (load() < 0.5 * target_load_) {
     capacity_ = kUnlimited;
+    return;
   }
+  const double projected = std::floor(sessions_ * target_load_ / load());
+  capacity_ = std::max(floor_, static_cast<std::size_t>(projected));
 }
 
 }  // namespace ocean::server

@@ -185,6 +185,7 @@ void SessionCore::send_key(Session& session, ProfileStream& stream, Tick tick, d
   session.baselines.record_sent(tick, frame.encoded->id, true, true);
   session.recent_udp.clear();  // nothing from before a key predicts anything after it
   host_.metrics.keyframes_sent.inc();
+  host_.metrics.key_bytes_sent.inc(static_cast<double>(frame.bytes));
   if (observer_) observer_(session.id, frame);
 }
 

@@ -24,6 +24,8 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       current_tick(registry.gauge("ocean_tick", "Index of the last tick run, counted from the epoch.")),
       scene_changes(registry.counter("ocean_scene_changes_total", "Scene changes applied (schedule or admin ParamChange).")),
       keyframes_sent(registry.counter("ocean_keyframes_sent_total", "Keyframes queued to clients.")),
+      key_bytes_sent(registry.counter("ocean_key_bytes_sent_total",
+                                      "Bytes of the keyframes queued to clients, which the server-wide key budget paces.")),
       encodes(registry.counter("ocean_encodes_total", "Encoder runs (one per profile, tick and baseline).")),
       encodes_last_tick(registry.gauge("ocean_encodes_last_tick",
                                        "Encoder runs for the last tick over all profiles; clients sharing a baseline share one.")),
@@ -51,9 +53,15 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
                                            "encode budget per tick ran out.")),
       serve_seconds(registry.summary("ocean_serve_seconds", "Network-thread time to serve one tick (encodes and sends).")),
       loop_lag_seconds(registry.summary("ocean_loop_lag_seconds", "How long after its scheduled time each tick was served.")),
-      network_busy_ratio(registry.gauge("ocean_network_busy_ratio", "Share of the last second the network thread was busy.")),
+      network_busy_ratio(registry.gauge("ocean_network_busy_ratio",
+                                        "Share of the last second the network thread was busy: running, or ready to run "
+                                        "and waiting for a CPU.")),
+      network_cpu_wait_ratio(registry.gauge("ocean_network_cpu_wait_ratio",
+                                            "Share of the last second the network thread was ready to run but waited for a "
+                                            "CPU (something else busy on its core).")),
       admission_capacity(registry.gauge("ocean_admission_capacity",
-                                        "Sessions admitted while the network thread is over its busy target (0 = open).")),
+                                        "Sessions the network thread is projected to serve at its target load; a Hello "
+                                        "beyond it is refused as server_full (0 = no limit).")),
       udp_unproven_bytes_in(registry.counter("ocean_udp_unproven_bytes_total",
                                              "UDP bytes from and to addresses not proven by a UdpHello.",
                                              {{"direction", "in"}})),

@@ -24,6 +24,7 @@ class ServerMetrics {
   Gauge& current_tick;       // the last tick index run
   Counter& scene_changes;    // scheduled scene changes applied
   Counter& keyframes_sent;   // keyframes queued to clients
+  Counter& key_bytes_sent;   // their bytes: what the key budget (key_bytes_per_s) paces
   Counter& encodes;          // encoder runs (each a distinct profile, tick and baseline)
   Gauge& encodes_last_tick;  // encoder runs for the last tick, all profiles: the sharing proof
   Counter& send_queue_drops; // frames not queued because a client's send queue was full
@@ -39,8 +40,9 @@ class ServerMetrics {
   Counter& frames_rebased_load;  // frames that took an existing encode instead when the budget ran out
   Summary& serve_seconds;    // network-thread time to serve one tick (encodes, sends)
   Summary& loop_lag_seconds; // how long after its scheduled time a tick was served
-  Gauge& network_busy_ratio; // share of the last second the network thread was busy
-  Gauge& admission_capacity; // sessions admitted while over the busy target (0 = the door is open)
+  Gauge& network_busy_ratio; // share of the last second the network thread was busy (running or waiting for a CPU)
+  Gauge& network_cpu_wait_ratio;  // share of the last second it waited for a CPU (another busy thread or process on its core)
+  Gauge& admission_capacity; // the sessions the network thread is projected to serve at its target load (0 = no limit)
   Counter& udp_unproven_bytes_in;   // UDP bytes from addresses not (yet) proven (anti-amplification)
   Counter& udp_unproven_bytes_out;  // UDP bytes answered to them
   Counter& udp_rebinds;             // proven UDP addresses moved to a new port (NAT rebinding)

@@ -8,6 +8,9 @@
 #include "admission_budget.hpp"
 #include "server.hpp"
 #include "session_core.hpp"
+#include "thread_schedule.hpp"
+
+#include <optional>
 
 namespace ocean::server {
 
@@ -22,7 +25,9 @@ class SessionHub {
  private:
   void on_connection(asio::ip::tcp::socket socket);
   void on_frames(const std::shared_ptr<const TickFrames>& frames);
-  // Adds `busy_s` of network-thread work; once a second, updates the admission limit.
+  // Adds `busy_s` of network-thread work; once a second, updates the admission limit from the
+  // thread's time running and waiting for a CPU (the kernel's figures; the timed work where the
+  // kernel keeps none).
   void account(double busy_s, double now_s);
 
   Server& server_;
@@ -30,6 +35,7 @@ class SessionHub {
   AdmissionBudget budget_;
   double window_start_s_ = 0.0;
   double window_busy_s_ = 0.0;
+  std::optional<ThreadSchedule> window_schedule_;  // the network thread's at the window's start
   double window_session_ticks_ = 0.0;  // sessions summed over the window's ticks
   int window_ticks_ = 0;
   std::uint64_t streams_released_ = 0;  // core_.streams_released() last seen
