@@ -15,16 +15,30 @@ server_us_per_datagram is the server's CPU time over the datagrams the clients r
 loopback with no --link, what it sent); at twice capacity, admitted_ok_pct is the on-time share
 of the clients that got a Welcome, refusals the reasons the others were given, and not_welcomed
 how every client without a Welcome ended (a refusal's reason, still connecting, or a timeout).
+Every try also reads the server's /metrics and log at its end ("server" in its row): server_full
+refusals, the admission capacity, the network thread's busy and CPU-wait shares, loop lag, and key
+bytes per second against the key budget. The try at twice capacity is "graceful" when the admitted
+clients stay at the target with no bad frame, every client without a Welcome was refused with a
+reason, no session fell back to TCP, keys kept within their budget, and a refusal shows in
+/metrics and in a warn line.
+
+--server-hog runs a busy loop on the server's CPUs during each try: the server gets about half of
+its core, as beside a noisy neighbour or under a CPU limit, and twice its capacity comes within
+reach of one load-test core (on one core alone the server holds more than one core of load test
+can offer twice over).
 
 --scenario NAME runs an ocean-loadtest scenario instead of --profile/--transport/--link, with the
 server started as the scenario needs (tick rate, epoch, weather schedule: local_server.py)."""
 import argparse
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
+import time
+import urllib.request
 
 import local_server
 
@@ -33,9 +47,40 @@ def pinned(cpus, argv):
     return ["taskset", "-c", cpus] + argv if cpus else argv
 
 
+# SessionCoreOptions::key_bytes_per_s, and its burst of half a second.
+KEY_BYTES_PER_S = 2_000_000.0
+
+
 def run_once(args, clients):
     with tempfile.TemporaryDirectory() as workdir:
-        return run_in(args, clients, workdir)
+        hog = None
+        if args.server_hog:
+            hog = subprocess.Popen(pinned(args.server_cpus, ["sh", "-c", "while :; do :; done"]))
+        try:
+            return run_in(args, clients, workdir)
+        finally:
+            if hog:
+                hog.kill()
+                hog.wait()
+
+
+def metric(text, name, labels=""):
+    """The value of one series in Prometheus text, or 0 if absent."""
+    m = re.search(r"^" + re.escape(name + labels) + r" (\S+)$", text, re.M)
+    return float(m.group(1)) if m else 0.0
+
+
+def server_view(metrics, log, elapsed_s):
+    """What the operator sees at the end of a try."""
+    return {"server_full_refusals": metric(metrics, "ocean_rejects_total", '{reason="server_full"}'),
+            "admission_capacity": metric(metrics, "ocean_admission_capacity"),
+            "busy_ratio": round(metric(metrics, "ocean_network_busy_ratio"), 3),
+            "cpu_wait_ratio": round(metric(metrics, "ocean_network_cpu_wait_ratio"), 3),
+            "loop_lag_p99_s": metric(metrics, "ocean_loop_lag_seconds", '{quantile="0.99"}'),
+            "keys_per_s": round(metric(metrics, "ocean_keyframes_sent_total") / elapsed_s, 1),
+            "key_bytes_per_s": round(metric(metrics, "ocean_key_bytes_sent_total") / elapsed_s),
+            "key_budget_bytes_per_s": KEY_BYTES_PER_S, "elapsed_s": round(elapsed_s, 1),
+            "overload_warnings": sum(1 for line in log.splitlines() if "overload:" in line)}
 
 
 def stream_args(args, ramp, workdir):
@@ -55,14 +100,17 @@ def run_in(args, clients, workdir):
     loadtest = os.path.join(args.build, "client/loadtest/ocean-loadtest")
     ramp = max(0.5, clients / args.join_rate)
     port = local_server.free_port()
+    metrics_port = local_server.free_port()
     server_args, loadtest_args = stream_args(args, ramp, workdir)
     # --max-clients above N: the limit under test is what the server can serve, not a setting
     # (admission control, where the server has it, decides by itself).
     # taskset execs the server, so the pid the load test reads /proc for is the server's.
     argv = pinned(args.server_cpus, [os.path.join(args.build, "server/ocean-server"), "--listen", f"127.0.0.1:{port}",
-                                     "--metrics-listen", "off", "--max-clients", str(clients + 16), "--log-level",
+                                     "--metrics-listen", f"127.0.0.1:{metrics_port}", "--max-clients", str(clients + 16), "--log-level",
                                      "warn"] + server_args + args.server_arg)
     server = local_server.start(argv[0], argv[1:], port)
+    started = time.monotonic()
+    metrics = ""
     try:
         cmd = pinned(args.loadtest_cpus, [loadtest, "--server", f"127.0.0.1:{port}", "--clients", str(clients),
                                           "--ramp", f"{ramp:g}", "--duration", str(args.duration), "--threads",
@@ -74,9 +122,14 @@ def run_in(args, clients, workdir):
             raise RuntimeError(f"ocean-loadtest exited {run.returncode}: {run.stderr[-2000:]}")
         summary = json.loads(run.stdout.strip().splitlines()[-1])
         summary["alive"] = server.poll() is None
-        return summary
+        if summary["alive"]:
+            with urllib.request.urlopen(f"http://127.0.0.1:{metrics_port}/metrics", timeout=10) as r:
+                metrics = r.read().decode()
+        elapsed_s = time.monotonic() - started
     finally:
         local_server.stop(server)
+    summary["server"] = server_view(metrics, server.stdout.read(), elapsed_s)
+    return summary
 
 
 def row_of(s, clients, target):
@@ -90,7 +143,21 @@ def row_of(s, clients, target):
             "server_cpu_pct": s.get("server_cpu_pct"), "loadtest_cpu_pct": s["loadtest_cpu_pct"],
             "server_us_per_datagram": round(server_cpu_s / datagrams * 1e6, 2) if datagrams else None,
             "datagrams_per_s": round(datagrams / s["duration_s"]) if s["duration_s"] else 0,
-            "latency_p99_ms": s["latency_p99_ms"], "kbps_mean": s["kbps_mean"], "server_alive": s["alive"]}
+            "latency_p99_ms": s["latency_p99_ms"], "kbps_mean": s["kbps_mean"], "server_alive": s["alive"],
+            "server": s["server"]}
+
+
+def graceful(row, target):
+    """Beyond capacity: the admitted keep their service, the rest are told why, and it shows."""
+    server = row["server"]
+    # The key bucket's burst (half a second of its rate) is the most it can run ahead of it.
+    key_allowance = server["key_budget_bytes_per_s"] * (1.0 + 0.5 / server["elapsed_s"])
+    return {"admitted_ok": row["admitted_ok_pct"] >= target and row["frames_bad"] == 0,
+            "every_other_refused_with_reason": all(k.startswith("refused: ") for k in row["not_welcomed"]),
+            "no_tcp_fallbacks": row["transport_fallbacks"] == 0,
+            "keys_within_budget": server["key_bytes_per_s"] <= key_allowance,
+            "overload_shown": (server["server_full_refusals"] > 0 and server["overload_warnings"] > 0)
+                              or not row["not_welcomed"]}
 
 
 def median_row(rows, target):
@@ -143,6 +210,8 @@ def parse_args():
     ap.add_argument("--threads", type=int, default=0, help="ocean-loadtest --threads (default: one per load-test CPU)")
     ap.add_argument("--repeat", type=int, default=1, help="runs per N; the median run decides (a noisy machine)")
     ap.add_argument("--no-double", action="store_true", help="skip the try at twice the largest passing N")
+    ap.add_argument("--server-hog", action="store_true",
+                    help="a busy loop on the server's CPUs during each try (about half a core left to the server)")
     ap.add_argument("--server-arg", action="append", default=[], help="extra ocean-server argument (repeatable)")
     args = ap.parse_args()
     if not 0.0 < args.resolution < 1.0:
@@ -182,10 +251,12 @@ def main():
     lo, hi = search(args, attempt)
     best = next((t for t in tries if t["clients"] == lo), None)
     double = attempt(2 * lo) if lo > 0 and not args.no_double else None
+    if double:
+        double["graceful"] = graceful(double, args.target)
     print(json.dumps({"largest_passing_clients": lo, "first_failing_clients": hi, "target_pct": args.target,
                       "scenario": args.scenario, "profile": args.profile, "transport": args.transport, "link": args.link,
                       "duration_s": args.duration, "server_cpus": args.server_cpus, "loadtest_cpus": args.loadtest_cpus,
-                      "loadtest_threads": args.threads,
+                      "loadtest_threads": args.threads, "server_hog": args.server_hog,
                       "server_cpu_pct_at_largest": best and best["server_cpu_pct"],
                       "server_us_per_datagram_at_largest": best and best["server_us_per_datagram"],
                       "at_double": double, "tries": len(tries)}))

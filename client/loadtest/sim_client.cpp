@@ -22,12 +22,17 @@ void SimClient::add_counters_to(LoadSummary& s) const {
   // "server refused the Hello: <reason>: <text>" (ClientSession): counted by reason, as the text
   // may carry numbers (a retry hint) that would make every client its own row.
   static constexpr std::string_view kRefused = "server refused the Hello: ";
+  const auto reason_in = [](const std::string& text) {
+    return text.substr(kRefused.size(), text.find(':', kRefused.size()) - kRefused.size());
+  };
   const std::string why = connection ? connection->counters().last_close_reason : std::string();
   const bool refused = why.starts_with(kRefused);
-  const std::string reason = refused ? why.substr(kRefused.size(), why.find(':', kRefused.size()) - kRefused.size()) : "";
-  if (connection && !connection->connected() && refused) ++s.refusals[reason];
+  if (connection && !connection->connected() && refused) ++s.refusals[reason_in(why)];
+  // A client refused earlier that was back in a handshake, as the refusal's hint asked, at the end.
+  const std::string earlier = connection ? connection->counters().last_refusal : std::string();
   if (!welcome_tick) {
-    if (refused) ++s.not_welcomed["refused: " + reason];
+    if (refused) ++s.not_welcomed["refused: " + reason_in(why)];
+    else if (earlier.starts_with(kRefused)) ++s.not_welcomed["refused: " + reason_in(earlier) + ", then retrying"];
     else if (why.empty()) ++s.not_welcomed[connection ? "connecting" : "never started"];
     else ++s.not_welcomed[why.substr(0, std::min<std::size_t>(why.find(':'), 48))];
   }

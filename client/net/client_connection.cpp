@@ -302,6 +302,7 @@ void ClientConnection::teardown(const std::string& why) {
   writing_ = false;
   framer_.reset();
   counters_.last_close_reason = why;
+  if (session_ && session_->refusal()) counters_.last_refusal = why;
   if (was_connected) ++counters_.disconnects;
   if (was_connected && session_ && on_session_end_) on_session_end_(*session_, why);
   if (stopped_ || !config_.reconnect) return;

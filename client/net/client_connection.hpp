@@ -52,6 +52,7 @@ struct ConnectionCounters {
   std::uint64_t udp_receive_errors = 0;
   std::uint64_t failovers = 0;    // times a failure or drop moved the next attempt to another server
   std::string last_close_reason;
+  std::string last_refusal;       // the close reason of the last refused Hello, kept across retries
 };
 
 class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
