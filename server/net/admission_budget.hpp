@@ -7,8 +7,8 @@
 // turns into collapse long before the thread itself is busy: with a busy loop beside the server,
 // 2200 viewers held at 33 % running and 28 % waiting in two runs of three and collapsed in the
 // third, while alone it runs 75 % and keeps every tick. Counted twice, the waiting still let the
-// door open that far; thrice, it closes near 1600 there, and alone, where the wait is 1-2 %, it
-// changes nothing.
+// door open that far; thrice, it closes at 1700-1900 there, and alone, where the wait is 1-2 %,
+// it changes almost nothing.
 //
 // Once the smoothed load passes half the target, the capacity is the sessions that would load the
 // thread to its target at what each costs now (a fixed cost makes that an underestimate far from

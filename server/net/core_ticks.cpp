@@ -315,12 +315,13 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   // After merging m roots there are roots - m + 1. Without joiners, merging one lowers nothing.
   const std::size_t least = waiting > 0 ? 1 : 2;
   std::size_t merge = std::min(old.size(), roots.size() + 1 - cap);
-  if (merge < least) return room(roots.size() + 1);
+  const bool enter_anyway = room(roots.size() + 1);  // the joiners start their root, merge or not
+  if (merge < least) return enter_anyway;
   std::sort(old.begin(), old.end());
   // The budget pays the waiting joiners' keys first, unless they wait for this merge: then it
   // goes first and must leave one joiner's key.
   const double key_bytes = static_cast<double>(stream.key(tick).bytes);
-  const double reserve = room(roots.size() + 1) ? static_cast<double>(waiting) * key_bytes : waiting > 0 ? key_bytes : 0.0;
+  const double reserve = static_cast<double>(enter_anyway ? waiting : 1) * key_bytes;
   for (; merge >= least; --merge) {
     std::size_t sessions = 0;
     for (std::size_t i = 0; i < merge; ++i) sessions += old[i].first;
@@ -329,7 +330,7 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
   // A root whose keys the budget's burst can never hold (large explicit keys, a small budget)
   // cannot be merged: then the joiners start a root beyond the cap rather than wait for good.
   if (merge < least)
-    return room(roots.size() + 1) || static_cast<double>(old.front().first) * key_bytes + reserve > key_budget_.burst();
+    return enter_anyway || static_cast<double>(old.front().first) * key_bytes + reserve > key_budget_.burst();
   for (std::size_t i = 0; i < merge; ++i)
     for (Session* session : roots[old[i].second]) session->rekey = true;
   host_.metrics.root_merges.inc(static_cast<double>(merge));
