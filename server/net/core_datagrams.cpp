@@ -31,15 +31,15 @@ void SessionCore::on_datagram(std::span<const std::uint8_t> bytes, const asio::i
   const protocol::Verified verified = protocol::verify_message(aligned, {protocol::Sender::client, wire::Transport::udp});
   const wire::Message* message = verified.message;
   const std::uint64_t session_id = verified ? core::named_session(*message) : 0;
-  const auto found = sessions_.find(session_id);
-  bool proven = found != sessions_.end() && found->second->udp && found->second->udp->endpoint() == sender;
+  Session* found = sessions_.find(session_id);
+  bool proven = found && found->udp && found->udp->endpoint() == sender;
   if (!proven) {
     unproven_bytes_in_ += bytes.size();
     host_.metrics.udp_unproven_bytes_in.inc(static_cast<double>(bytes.size()));
   }
   if (!verified) return drop_datagram(verified.reason, sender);
-  if (found == sessions_.end()) return drop_datagram(protocol::Reason::bad_session, sender);
-  Session& session = *found->second;
+  if (!found) return drop_datagram(protocol::Reason::bad_session, sender);
+  Session& session = *found;
   if (!proven) proven = reclaim_udp(session, *message, sender);
   if (message->body_type() == wire::Body::UdpHello)
     return on_udp_hello(session, *message, bytes.size(), proven, sender, now);

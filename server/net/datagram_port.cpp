@@ -1,5 +1,6 @@
 #include "datagram_port.hpp"
 
+#include <netinet/in.h>
 #include <sys/epoll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -9,6 +10,17 @@
 namespace ocean::server {
 
 namespace {
+
+// Don't fragment, and don't learn path MTUs either (what QUIC stacks do): every datagram is at
+// most protocol::kMaxDatagram, below any path's MTU, and with the DF bit set the kernel gives it
+// IP id 0 instead of drawing one from its shared, hashed id generator for each send (1.7 % of the
+// server's time at 1000 viewers). A socket of the other family refuses the option it lacks.
+void set_no_fragments(int fd) {
+  const int probe = IP_PMTUDISC_PROBE;
+  ::setsockopt(fd, IPPROTO_IP, IP_MTU_DISCOVER, &probe, sizeof probe);
+  const int probe6 = IPV6_PMTUDISC_PROBE;
+  ::setsockopt(fd, IPPROTO_IPV6, IPV6_MTU_DISCOVER, &probe6, sizeof probe6);
+}
 
 int new_epoll() {
   const int fd = ::epoll_create1(EPOLL_CLOEXEC);
@@ -21,6 +33,7 @@ int new_epoll() {
 DatagramPort::DatagramPort(asio::io_context& context, asio::ip::udp::socket socket, Handler handler)
     : ready_(context, new_epoll()), pause_(context), handler_(std::move(handler)), buffers_(kBatch) {
   fd_ = socket.release();
+  set_no_fragments(fd_);
   epoll_event event{};
   event.events = EPOLLIN | EPOLLONESHOT;
   event.data.fd = fd_;

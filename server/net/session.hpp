@@ -43,6 +43,8 @@ struct Session {
   BaselineTracker baselines;
   std::deque<RecentFrame> recent_udp;       // the last kMaxUdpRedundancy single-chunk UDP frames
   std::uint64_t tcp_frames_mark = 0;        // link->enqueued_total() after the last frame queued on it
+  bool tcp_frames_pending = false;          // ... and the link has not written them through yet
+  bool closed = false;                      // its link closed (the core erased it; a walk may still hold it)
   bool need_key = true;                     // the next frame must be a key
   bool key_requested = false;               // a KeyframeRequest waits for its rate limit
   bool rekey = false;                       // its key root is merged: this key tick's key, paid for

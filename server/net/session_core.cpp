@@ -59,19 +59,19 @@ codec::StreamConfig SessionCore::stream_config(const Profile& profile, const sim
 
 std::uint64_t SessionCore::new_session_id() const {
   std::uint64_t id = 0;
-  while (id == 0 || sessions_.count(id)) randombytes_buf(&id, sizeof id);
+  while (id == 0 || sessions_.contains(id)) randombytes_buf(&id, sizeof id);
   return id;
 }
 
 std::size_t SessionCore::max_queued_bytes() const {
   std::size_t most = 0;
-  for (const auto& [id, session] : sessions_) most = std::max(most, session->link->queued_bytes());
+  for (const auto& session : sessions_) most = std::max(most, session->link->queued_bytes());
   return most;
 }
 
 std::size_t SessionCore::peak_queued_bytes() const {
   std::size_t most = peak_closed_queued_bytes_;
-  for (const auto& [id, session] : sessions_) most = std::max(most, session->link->peak_queued_bytes());
+  for (const auto& session : sessions_) most = std::max(most, session->link->peak_queued_bytes());
   return most;
 }
 
@@ -125,6 +125,7 @@ void SessionCore::evict_oldest_handshake(const Session& newcomer, const std::str
 }
 
 void SessionCore::on_closed(const std::shared_ptr<Session>& session, const std::string& reason) {
+  session->closed = true;
   peak_closed_queued_bytes_ = std::max(peak_closed_queued_bytes_, session->link->peak_queued_bytes());
   if (session->welcomed) {
     log_disconnect(session->id, session->transport(), session->peer(), reason);
@@ -286,7 +287,7 @@ void SessionCore::on_hello(const std::shared_ptr<Session>& session, const wire::
                                 options_.cookie_lifetime_ms);
   send_control(*session, protocol::encode(welcome(*session)));
   for (const AnnouncedScene& later : scenes_.after(tick_)) send_control(*session, protocol::encode(scene_update(later, 0)));
-  sessions_.emplace(session->id, session);
+  sessions_.insert(session);
   host_.metrics.sessions_started.inc();
   log_connect(session->id, session->wants_udp ? "udp" : session->link->transport(), session->peer(), stream->profile().name);
   update_client_gauges();
@@ -362,7 +363,7 @@ void SessionCore::on_param_change(const std::shared_ptr<Session>& session, const
 void SessionCore::update_client_gauges() {
   for (const auto& stream : streams_) {
     std::map<std::string_view, double> by_transport{{"tcp", 0.0}, {"udp", 0.0}};
-    for (const auto& [id, session] : sessions_)
+    for (const auto& session : sessions_)
       if (session->stream == stream.get()) by_transport[session->transport()] += 1.0;
     for (const auto& [transport, count] : by_transport) host_.metrics.clients(stream->profile().name, transport).set(count);
   }
@@ -370,7 +371,7 @@ void SessionCore::update_client_gauges() {
 
 void SessionCore::stop() {
   stopping_ = true;
-  for (const auto& [id, session] : sessions_) end(*session, wire::ByeReason::server_shutdown, "server shutting down");
+  for (const auto& session : sessions_.snapshot()) end(*session, wire::ByeReason::server_shutdown, "server shutting down");
   const std::vector<std::shared_ptr<Session>> handshaking = handshaking_;  // close() erases from it
   for (const auto& session : handshaking) session->link->close("server_shutdown");
 }
@@ -378,7 +379,7 @@ void SessionCore::stop() {
 void SessionCore::abort(const std::string& reason) {
   stopping_ = true;
   std::vector<std::shared_ptr<Session>> all = handshaking_;  // close() erases from both
-  for (const auto& [id, session] : sessions_) all.push_back(session);
+  for (const auto& session : sessions_) all.push_back(session);
   for (const auto& session : all) session->link->close(reason);
 }
 

@@ -9,12 +9,14 @@
 
 #include "tick_frames.hpp"
 #include "admission.hpp"
+#include "bundle_key.hpp"
 #include "link.hpp"
 #include "profile_stream.hpp"
 #include "scene_announcements.hpp"
 #include "server_config.hpp"
 #include "server_metrics.hpp"
 #include "session.hpp"
+#include "session_table.hpp"
 #include "udp_cookie.hpp"
 #include "wire_limits.hpp"
 
@@ -26,6 +28,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 namespace ocean::server {
@@ -143,7 +146,9 @@ class SessionCore {
   void send_key(Session& session, ProfileStream& stream, Tick tick, double now_s);
   bool send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s);
   void send_tcp_frame(Session& session, const SharedFrame& frame);
-  SharedBytes bundle_of(const std::vector<const RecentFrame*>& copies, const SharedFrame& newest);
+  bool tcp_frames_written(Session& session) const;
+  const SharedBytes& bundle_of(const BundleKey& key);
+  void publish_udp_tally();
   // Merges key roots beyond the cap; false when a new root would still exceed it (joiners wait).
   bool limit_roots(ProfileStream& stream, Tick tick, double now_s);
   std::size_t root_cap(const ProfileStream& stream) const;
@@ -172,7 +177,7 @@ class SessionCore {
   SessionCoreHost host_;
   SessionCoreOptions options_;
   std::vector<std::unique_ptr<ProfileStream>> streams_;
-  std::map<std::uint64_t, std::shared_ptr<Session>> sessions_;  // welcomed, by id
+  SessionTable sessions_;  // welcomed
   std::vector<std::shared_ptr<Session>> handshaking_;
   SceneAnnouncements scenes_;
   Admission admission_;
@@ -183,7 +188,10 @@ class SessionCore {
   TickObserver tick_observer_;
   std::array<Counter*, 29> datagram_rejects_{};  // by protocol::Reason, made up front: no allocation per datagram
   alignas(8) std::array<std::uint8_t, protocol::kMaxDatagram> datagram_{};
-  std::map<std::vector<const codec::Chunk*>, SharedBytes> bundles_;  // this tick's, by their chunks
+  std::unordered_map<BundleKey, SharedBytes, BundleKeyHash> bundles_;  // this tick's, by their chunks
+  struct UdpTally {
+    std::uint64_t frames = 0, bytes = 0, copies = 0;
+  } udp_tally_;  // this tick's UDP frames, counted into the metrics once at its end
   std::uint64_t unproven_bytes_in_ = 0;
   std::uint64_t unproven_bytes_out_ = 0;
   std::size_t peak_closed_queued_bytes_ = 0;
