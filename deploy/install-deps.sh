@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config git ca-certificates
-  libfftw3-dev libasio-dev libflatbuffers-dev flatbuffers-compiler
+  libfftw3-dev libasio-dev libwebsocketpp-dev libflatbuffers-dev flatbuffers-compiler
   libzstd-dev libsodium-dev libspdlog-dev libfmt-dev libcli11-dev libtomlplusplus-dev
   libstb-dev catch2
   libglfw3-dev libglm-dev libgles-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri

@@ -105,6 +105,18 @@ std::string join(const std::vector<std::string>& items) {
   return out;
 }
 
+// "a, b,,c" -> {"a", "b", "c"}: items trimmed, empty ones left out.
+std::vector<std::string> split_list(std::string_view v) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= v.size()) {
+    const std::size_t comma = std::min(v.find(',', start), v.size());
+    if (std::string item = trim(std::string(v.substr(start, comma - start))); !item.empty()) items.push_back(item);
+    start = comma + 1;
+  }
+  return items;
+}
+
 std::string hex_digit_error(std::string_view path) {
   return "file '" + std::string(path) + "' must hold exactly 64 hex digits (a 32-byte key)";
 }
@@ -130,6 +142,24 @@ const ConfigOption kOptions[] = {
      ValueKind::text, false,
      [](ServerConfig& c, std::string_view v) { return apply_address(c.metrics_listen, v, true); },
      [](const ServerConfig& c) { return show_optional_address(c.metrics_listen, "off"); }},
+    {"ws-listen", "ADDR:PORT|off", "WebSocket address for browser clients (binary messages, no UDP); 'off' (default) disables it",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) { return apply_address(c.ws_listen, v, true); },
+     [](const ServerConfig& c) { return show_optional_address(c.ws_listen, "off"); }},
+    {"ws-origins", "LIST",
+     "comma-separated page origins (scheme://host[:port]) whose WebSocket handshakes are accepted, or '*' for any; "
+     "clients that send no Origin are always accepted",
+     ValueKind::text_list, false,
+     [](ServerConfig& c, std::string_view v) {
+       c.ws_origins = split_list(v);
+       for (const std::string& origin : c.ws_origins) {
+         const bool web = origin.rfind("http://", 0) == 0 || origin.rfind("https://", 0) == 0;
+         if (origin != "*" && (!web || origin.find_first_of(" /", origin.find("://") + 3) != std::string::npos))
+           return "origin '" + origin + "' must be scheme://host[:port] (http or https, no path) or '*'";
+       }
+       return std::string();
+     },
+     [](const ServerConfig& c) { return c.ws_origins.empty() ? std::string("none") : join(c.ws_origins); }},
     {"size", "N", "simulation grid N x N samples: a power of two in 16..2048", ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) {
        int n = 0;
@@ -204,14 +234,7 @@ const ConfigOption kOptions[] = {
     {"profiles", "LIST", "comma-separated stream profiles to offer (mobile, desktop, lite; desktop-choppy is not streamed yet: the codec has no choppy channels); each grid <= --size",
      ValueKind::text_list, false,
      [](ServerConfig& c, std::string_view v) {
-       c.profiles.clear();
-       std::size_t start = 0;
-       while (start <= v.size()) {
-         const std::size_t comma = std::min(v.find(',', start), v.size());
-         if (std::string name = trim(std::string(v.substr(start, comma - start))); !name.empty())
-           c.profiles.push_back(name);
-         start = comma + 1;
-       }
+       c.profiles = split_list(v);
        return std::string();
      },
      [](const ServerConfig& c) { return join(c.profiles); }},

@@ -74,7 +74,7 @@ Server::Server(ServerConfig config)
       signals_(context_, SIGINT, SIGTERM),
       metrics_(registry_),
       cookie_key_(cookie_key_from(config_)),
-      acceptor_(open_tcp_acceptor(context_, config_.listen, "clients")),
+      tcp_(context_, open_tcp_acceptor(context_, config_.listen, "clients"), StreamKind::tcp),
       schedule_(checked_schedule(config_)),
       producer_(schedule_, offered_profiles(config_)),
       tick_loop_(TickClock(config_.tick_rate_hz, config_.epoch_unix_ms),
@@ -88,7 +88,12 @@ Server::Server(ServerConfig config)
                                 std::to_string(kMaxSimTimeS) + " s, so choose an epoch within ~31 years of now");
   // Builds the per-profile band evaluators before the first deadline (and surfaces any ParamError).
   (void)producer_.produce(clock.tick_at(system_unix_ns()), now_s);
-  tcp_port_ = acceptor_.local_endpoint().port();
+  tcp_port_ = tcp_.acceptor.local_endpoint().port();
+  if (config_.ws_listen) {
+    ws_ = std::make_unique<Listener>(context_, open_tcp_acceptor(context_, *config_.ws_listen, "WebSocket clients"),
+                                     StreamKind::websocket);
+    ws_port_ = ws_->acceptor.local_endpoint().port();
+  }
   {
     asio::ip::udp::socket socket = open_udp_socket(context_, udp_address(config_, tcp_port_));
     udp_port_ = socket.local_endpoint().port();
@@ -110,6 +115,7 @@ Server::Server(ServerConfig config)
   for (const Profile* profile : offered_profiles(config_)) {
     metrics_.frames_computed(profile->name);
     for (const char* transport : {"tcp", "udp"}) metrics_.clients(profile->name, transport);
+    if (ws_) metrics_.clients(profile->name, "ws");
   }
   set_log_suppressed_hook([this](std::string_view reason) { metrics_.log_suppressed(reason).inc(); });
   do_await_stop();
@@ -128,15 +134,17 @@ Server::~Server() {
 }
 
 void Server::run() {
-  spdlog::info("listening tcp={} udp={} metrics={}", config_.listen.host + ":" + std::to_string(tcp_port_),
+  spdlog::info("listening tcp={} udp={} ws={} metrics={}", config_.listen.host + ":" + std::to_string(tcp_port_),
                udp_address(config_, tcp_port_).host + ":" + std::to_string(udp_port_),
+               ws_ ? config_.ws_listen->host + ":" + std::to_string(ws_port_) : "off",
                metrics_port_ ? config_.metrics_listen->host + ":" + std::to_string(*metrics_port_) : "off");
   tick_loop_.start();
   if (metrics_http_) {
     metrics_http_->start();
     http_thread_ = std::thread([this] { http_context_.run(); });
   }
-  do_accept();
+  do_accept(tcp_);
+  if (ws_) do_accept(*ws_);
   udp_->start();
   context_.run();
   stop_http();
@@ -167,10 +175,14 @@ void Server::do_stop() {
   stopping_ = true;
   std::error_code ignored;
   signals_.cancel(ignored);
-  acceptor_.close(ignored);
+  tcp_.acceptor.close(ignored);
+  tcp_.backoff.cancel();
+  if (ws_) {
+    ws_->acceptor.close(ignored);
+    ws_->backoff.cancel();
+  }
   udp_->close();
   if (metrics_http_) asio::post(http_context_, [this] { metrics_http_->stop(); });
-  accept_backoff_.cancel();
   tick_loop_.stop();  // joins the simulation thread; frames it already queued are drained below
   if (stop_handler_) stop_handler_();  // sessions say Bye while the context still runs
   // A client that reads slowly (or a network thread far behind) must not hold the exit.
@@ -182,25 +194,25 @@ void Server::do_stop() {
   });
 }
 
-void Server::do_accept() {
-  acceptor_.async_accept([this](std::error_code error, asio::ip::tcp::socket socket) {
-    if (!acceptor_.is_open()) return;
+void Server::do_accept(Listener& listener) {
+  listener.acceptor.async_accept([this, &listener](std::error_code error, asio::ip::tcp::socket socket) {
+    if (!listener.acceptor.is_open()) return;
     if (error == asio::error::no_descriptors || error.value() == ENFILE || error == asio::error::no_buffer_space ||
         error == asio::error::no_memory)
-      return back_off_accept();  // accepting again at once would spin on the same error
+      return back_off_accept(listener);  // accepting again at once would spin on the same error
     if (!error && descriptors_low(socket)) {
       std::error_code ignored;
       socket.close(ignored);
     } else if (!error && connection_handler_) {
-      connection_handler_(std::move(socket));
+      connection_handler_(std::move(socket), listener.kind);
     } else if (!error) {
       std::error_code ignored;
       const auto peer = socket.remote_endpoint(ignored);
-      log_reject("tcp", peer_text(peer), "sessions_unavailable");
+      log_reject(listener.kind == StreamKind::tcp ? "tcp" : "ws", peer_text(peer), "sessions_unavailable");
       metrics_.rejects("sessions_unavailable").inc();
       socket.close(ignored);
     }
-    do_accept();
+    do_accept(listener);
   });
 }
 
@@ -219,13 +231,13 @@ bool Server::descriptors_low(asio::ip::tcp::socket& socket) {
   return true;
 }
 
-void Server::back_off_accept() {
+void Server::back_off_accept(Listener& listener) {
   metrics_.rejects("descriptors_exhausted").inc();
   log_limited(spdlog::level::warn, "descriptors_exhausted", "",
               "accept failed: no descriptors or buffers left; pausing accepts for 100 ms (raise ulimit -n)");
-  accept_backoff_.expires_after(std::chrono::milliseconds(100));
-  accept_backoff_.async_wait([this](std::error_code error) {
-    if (!error && acceptor_.is_open()) do_accept();
+  listener.backoff.expires_after(std::chrono::milliseconds(100));
+  listener.backoff.async_wait([this, &listener](std::error_code error) {
+    if (!error && listener.acceptor.is_open()) do_accept(listener);
   });
 }
 

@@ -48,7 +48,9 @@ class Server : public DatagramSocket {
  public:
   // All run on the network thread.
   using FrameSink = std::function<void(const std::shared_ptr<const TickFrames>&)>;
-  using ConnectionHandler = std::function<void(asio::ip::tcp::socket)>;
+  // Which listener accepted a connection: size-prefixed messages on TCP, or WebSocket messages.
+  enum class StreamKind { tcp, websocket };
+  using ConnectionHandler = std::function<void(asio::ip::tcp::socket, StreamKind)>;
   using DatagramHandler = std::function<void(std::span<const std::uint8_t>, const asio::ip::udp::endpoint&)>;
   using StopHandler = std::function<void()>;
 
@@ -85,15 +87,24 @@ class Server : public DatagramSocket {
   ServerMetrics& metrics() { return metrics_; }
   const CookieKey& cookie_key() const { return cookie_key_; }
   std::uint16_t tcp_port() const { return tcp_port_; }
+  std::optional<std::uint16_t> ws_port() const { return ws_ ? std::optional(ws_port_) : std::nullopt; }
   std::uint16_t udp_port() const { return udp_port_; }
   std::optional<std::uint16_t> metrics_port() const { return metrics_port_; }
   bool ready() const { return ready_.load(); }  // a first frame reached the network side
 
  private:
   void do_await_stop();
-  void do_accept();
+  // A stream listener: its acceptor and the pause after running out of descriptors.
+  struct Listener {
+    Listener(asio::io_context& context, asio::ip::tcp::acceptor a, StreamKind k)
+        : acceptor(std::move(a)), backoff(context), kind(k) {}
+    asio::ip::tcp::acceptor acceptor;
+    asio::steady_timer backoff;
+    StreamKind kind;
+  };
+  void do_accept(Listener& listener);
   bool descriptors_low(asio::ip::tcp::socket& socket);
-  void back_off_accept();
+  void back_off_accept(Listener& listener);
   void on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& from);
   void do_stop();
   void on_tick(const TickDecision& decision);  // simulation thread
@@ -112,10 +123,12 @@ class Server : public DatagramSocket {
   MetricsRegistry registry_;
   ServerMetrics metrics_;
   CookieKey cookie_key_;
-  asio::ip::tcp::acceptor acceptor_;
+  Listener tcp_;
+  std::unique_ptr<Listener> ws_;  // --ws-listen
   std::unique_ptr<DatagramPort> udp_;  // the bound UDP socket, read outside asio's reactor
   std::unique_ptr<MetricsHttpServer> metrics_http_;
   std::uint16_t tcp_port_ = 0;
+  std::uint16_t ws_port_ = 0;
   std::uint16_t udp_port_ = 0;
   std::optional<std::uint16_t> metrics_port_;
 
@@ -123,7 +136,6 @@ class Server : public DatagramSocket {
   ConnectionHandler connection_handler_;
   DatagramHandler datagram_handler_;
   StopHandler stop_handler_;
-  asio::steady_timer accept_backoff_{context_};
   // After a stop, ends run() if the goodbyes have not drained within kStopGraceS. A thread, not
   // a timer: a pending timer would itself keep the context running for the whole grace.
   std::thread stop_watchdog_;

@@ -33,6 +33,10 @@ struct ServerConfig {
   // changes it (podman -p 17700:7700/udp, a Service's port); 0 = the bound UDP port.
   int udp_public_port = 0;
   std::optional<ListenAddress> metrics_listen = ListenAddress{"127.0.0.1", 9464};  // empty = off
+  // WebSocket clients (browsers): off unless given. A browser's handshake names the page's
+  // Origin; only these are let in ("*": any). Clients that send no Origin always are.
+  std::optional<ListenAddress> ws_listen;
+  std::vector<std::string> ws_origins;
 
   sim::SceneParams scene;                         // the scene at the epoch (tick 0 onward)
   std::vector<ScheduleEntry> schedule;            // later scene changes, by tick

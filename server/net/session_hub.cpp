@@ -1,6 +1,8 @@
 #include "session_hub.hpp"
 
 #include "tcp_link.hpp"
+#include "websocket_link.hpp"
+#include "server_log.hpp"
 #include "tick_clock.hpp"
 
 #include <spdlog/spdlog.h>
@@ -31,7 +33,8 @@ constexpr double kWarnEvery_s = 10.0;
 
 SessionHub::SessionHub(Server& server, SessionCoreOptions options)
     : server_(server), core_(host_of(server), options, tick_now(server.config())) {
-  server_.set_connection_handler([this](asio::ip::tcp::socket socket) { on_connection(std::move(socket)); });
+  server_.set_connection_handler(
+      [this](asio::ip::tcp::socket socket, Server::StreamKind kind) { on_connection(std::move(socket), kind); });
   server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
     const Instant now = now_instant();
     core_.on_datagram(bytes, sender, now);
@@ -42,12 +45,21 @@ SessionHub::SessionHub(Server& server, SessionCoreOptions options)
   server_.set_stop_handler([this] { core_.stop(); });
 }
 
-void SessionHub::on_connection(asio::ip::tcp::socket socket) {
+void SessionHub::on_connection(asio::ip::tcp::socket socket, Server::StreamKind kind) {
   if (const int bytes = core_.options().socket_send_buffer_bytes; bytes > 0) {
     std::error_code ignored;
     socket.set_option(asio::socket_base::send_buffer_size(bytes), ignored);
   }
-  core_.open(std::make_shared<TcpLink>(std::move(socket), core_.options().send_queue_bytes), now_instant());
+  const std::size_t queue_bytes = core_.options().send_queue_bytes;
+  if (kind == Server::StreamKind::tcp) return core_.open(std::make_shared<TcpLink>(std::move(socket), queue_bytes), now_instant());
+  // A refused WebSocket handshake never reaches the core's Hello: it is counted here.
+  auto refused = [this](const std::string& reason, const std::string& peer) {
+    server_.metrics().rejects(reason).inc();
+    log_reject("ws", peer, reason);
+  };
+  core_.open(std::make_shared<WebSocketLink>(std::move(socket), queue_bytes, OriginPolicy{server_.config().ws_origins},
+                                             std::move(refused)),
+             now_instant());
 }
 
 void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {

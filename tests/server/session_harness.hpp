@@ -53,6 +53,10 @@ class SessionHarness {
 
   Server& server() { return server_; }
   SessionHub& hub() { return hub_; }  // read only after stop(): the hub lives on the network thread
+  // A client on the WebSocket port (--ws-listen), sending this Origin ("" = none).
+  std::unique_ptr<SessionTestClient> ws_client(const std::string& origin = "") {
+    return std::make_unique<SessionTestClient>(server_.ws_port().value(), server_.udp_port(), 0, origin);
+  }
   std::unique_ptr<SessionTestClient> client(int receive_buffer_bytes = 0) {
     return std::make_unique<SessionTestClient>(server_.tcp_port(), server_.udp_port(), receive_buffer_bytes);
   }

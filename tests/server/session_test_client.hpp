@@ -11,6 +11,7 @@
 #include "message_readers.hpp"
 #include "tcp_framer.hpp"
 #include "verify_message.hpp"
+#include "websocket_test_frames.hpp"
 
 #include <asio/connect.hpp>
 #include <asio/io_context.hpp>
@@ -21,6 +22,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <optional>
@@ -33,11 +36,15 @@ namespace proto = ocean::protocol;
 
 class SessionTestClient {
  public:
-  SessionTestClient(std::uint16_t tcp_port, std::uint16_t udp_port, int receive_buffer_bytes = 0)
-      : tcp_(context_), udp_(context_), udp_port_(udp_port) {
+  // websocket_origin: connect to a WebSocket port (tcp_port) instead, sending this Origin ("" =
+  // none); the upgrade's HTTP status is in ws_status.
+  SessionTestClient(std::uint16_t tcp_port, std::uint16_t udp_port, int receive_buffer_bytes = 0,
+                    std::optional<std::string> websocket_origin = std::nullopt)
+      : tcp_(context_), udp_(context_), udp_port_(udp_port), websocket_(websocket_origin.has_value()) {
     tcp_.open(asio::ip::tcp::v4());
     if (receive_buffer_bytes > 0) tcp_.set_option(asio::socket_base::receive_buffer_size(receive_buffer_bytes));
     tcp_.connect({asio::ip::make_address("127.0.0.1"), tcp_port});
+    if (websocket_) upgrade(tcp_port, *websocket_origin);
     tcp_.non_blocking(true);
     udp_.open(asio::ip::udp::v4());
     udp_.bind({asio::ip::make_address("127.0.0.1"), 0});
@@ -45,9 +52,13 @@ class SessionTestClient {
   }
 
   void send_tcp(const proto::Bytes& bytes) {
+    if (websocket_) return send_raw(::ocean::test::ws_client_frame(::ocean::test::ws_binary, bytes));
+    send_raw(bytes);
+  }
+  void send_raw(std::span<const std::uint8_t> bytes) {
     tcp_.non_blocking(false);
     std::error_code error;
-    asio::write(tcp_, asio::buffer(bytes), error);
+    asio::write(tcp_, asio::buffer(bytes.data(), bytes.size()), error);
     tcp_.non_blocking(true);
   }
   void send_udp(const proto::Bytes& bytes) {
@@ -69,6 +80,10 @@ class SessionTestClient {
         break;
       }
       std::span<const std::uint8_t> bytes(buffer.data(), n);
+      if (websocket_) {
+        on_websocket_bytes(bytes);
+        continue;
+      }
       while (!bytes.empty()) {
         const auto result = framer_.feed(bytes);
         bytes = bytes.subspan(result.consumed);
@@ -122,6 +137,8 @@ class SessionTestClient {
   std::size_t udp_datagrams_seen = 0;
   std::size_t udp_frame_chunks = 0, tcp_frame_chunks = 0, udp_bytes_in = 0, rejected_chunks = 0, udp_bundles = 0;
   bool closed() const { return tcp_closed_; }
+  int ws_status = 0;                      // the WebSocket upgrade's HTTP status
+  std::optional<std::uint16_t> ws_close_code;  // the server's close frame
 
  private:
   void on_message(std::span<const std::uint8_t> bytes, wire::Transport transport) {
@@ -188,6 +205,37 @@ class SessionTestClient {
     else send_tcp(proto::encode(ack));
   }
 
+  void upgrade(std::uint16_t port, const std::string& origin) {
+    const std::string request = ::ocean::test::ws_upgrade_request(port, origin);
+    asio::write(tcp_, asio::buffer(request));
+    std::string response;
+    std::array<char, 1024> chunk;
+    while (response.find("\r\n\r\n") == std::string::npos) {
+      std::error_code error;
+      const std::size_t n = tcp_.read_some(asio::buffer(chunk), error);
+      if (error || n == 0) break;
+      response.append(chunk.data(), n);
+    }
+    if (response.rfind("HTTP/1.1 ", 0) == 0) ws_status = std::atoi(response.c_str() + 9);
+    const std::size_t end = response.find("\r\n\r\n");
+    if (end != std::string::npos && end + 4 < response.size())
+      deframer_.feed(std::span(reinterpret_cast<const std::uint8_t*>(response.data()) + end + 4, response.size() - end - 4));
+  }
+
+  void on_websocket_bytes(std::span<const std::uint8_t> bytes) {
+    deframer_.feed(bytes);
+    while (auto frame = deframer_.next()) {
+      if (frame->opcode == ::ocean::test::ws_close) {
+        if (frame->payload.size() >= 2) ws_close_code = static_cast<std::uint16_t>(frame->payload[0] << 8 | frame->payload[1]);
+        continue;
+      }
+      if (frame->opcode != ::ocean::test::ws_binary) continue;
+      aligned_.assign((frame->payload.size() + 7) / 8, 0);  // verify_message needs 8-byte alignment
+      std::memcpy(aligned_.data(), frame->payload.data(), frame->payload.size());
+      on_message(std::span(reinterpret_cast<const std::uint8_t*>(aligned_.data()), frame->payload.size()), wire::Transport::tcp);
+    }
+  }
+
   asio::io_context context_;
   asio::ip::tcp::socket tcp_;
   asio::ip::udp::socket udp_;
@@ -197,6 +245,9 @@ class SessionTestClient {
   codec::StreamConfig config_;
   std::unique_ptr<codec::Decoder> decoder_;
   std::chrono::steady_clock::time_point last_udp_hello_{};
+  bool websocket_ = false;
+  ::ocean::test::WsDeframer deframer_;
+  std::vector<std::uint64_t> aligned_;
 };
 
 }  // namespace ocean::server::test

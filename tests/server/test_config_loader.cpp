@@ -32,6 +32,8 @@ TEST_CASE("no flags gives the documented defaults", "[config]") {
   CHECK(r.config.tick_rate_hz == 30);
   CHECK(r.config.epoch_unix_ms == 1767225600000);  // 2026-01-01T00:00:00Z, per Python's datetime
   CHECK(r.config.profiles == std::vector<std::string>{"mobile", "desktop"});
+  CHECK_FALSE(r.config.ws_listen);  // no WebSocket port unless asked for
+  CHECK(r.config.ws_origins.empty());
 }
 
 TEST_CASE("flags set every kind of option", "[config]") {
@@ -42,7 +44,8 @@ TEST_CASE("flags set every kind of option", "[config]") {
             "45", "--fetch", "50000", "--amplitude", "2", "--depth", "40", "--choppiness", "1.5", "--small-wave",
             "0.1", "--seed", "18446744073709551615", "--tick-rate", "60", "--epoch", "2026-11-21T17:00:00Z",
             "--profiles", "lite, desktop-choppy", "--max-clients", "3", "--admin-token-file", token.path(),
-            "--idle-timeout", "2.5", "--log-level", "debug"});
+            "--idle-timeout", "2.5", "--log-level", "debug", "--ws-listen", "0.0.0.0:7701", "--ws-origins",
+            "https://ocean.example:8443, http://localhost:8080"});
   REQUIRE(r.message == "");
   REQUIRE(r.outcome == Outcome::run);
   const ServerConfig& c = r.config;
@@ -70,6 +73,8 @@ TEST_CASE("flags set every kind of option", "[config]") {
   CHECK(c.admin_token == "s3cret");
   CHECK(c.idle_timeout_s == 2.5);
   CHECK(c.log_level == "debug");
+  CHECK(*c.ws_listen == ListenAddress{"0.0.0.0", 7701});
+  CHECK(c.ws_origins == std::vector<std::string>{"https://ocean.example:8443", "http://localhost:8080"});
 }
 
 TEST_CASE("--help documents every option", "[config]") {
@@ -142,6 +147,10 @@ TEST_CASE("every kind of bad value is refused with a message naming it", "[confi
       {{"--udp-public-port", "70000"}, {"--udp-public-port", "0..65535"}},
       {{"--udp-public-port", "-1"}, {"--udp-public-port", "0..65535"}},
       {{"--metrics-listen", "on"}, {"--metrics-listen", "ADDR:PORT"}},
+      {{"--ws-listen", "7701"}, {"--ws-listen", "ADDR:PORT"}},
+      {{"--ws-origins", "ocean.example"}, {"--ws-origins", "'ocean.example'", "scheme://host[:port]"}},
+      {{"--ws-origins", "https://ocean.example/viewer"}, {"--ws-origins", "no path"}},
+      {{"--ws-origins", "ftp://ocean.example"}, {"--ws-origins", "http or https"}},
       {{"--tick-rate", "0"}, {"--tick-rate", "1..240"}},
       {{"--tick-rate", "241"}, {"--tick-rate", "1..240"}},
       {{"--tick-rate", "20"}, {"--tick-rate", "mobile", "multiple"}},

@@ -1,0 +1,53 @@
+// WebSocketLink: one browser's (or any WebSocket client's) connection as a StreamLink. Each binary
+// WebSocket message is one protocol message, byte for byte as on TCP (PROTOCOL.md 4.1). The same
+// limits as TcpLink (SocketStreamLink: a bounded, paced send queue, one message written at a time,
+// a reason for every close) and a size cap on what the client sends. The protocol itself
+// (handshake, Origin check, framing) is websocketpp's, behind WebSocketProtocol.
+#pragma once
+
+#include "socket_stream_link.hpp"
+#include "websocket_protocol.hpp"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace ocean::server {
+
+// Which browser pages may connect: a handshake's Origin must be one of these exactly
+// ("https://ocean.example:8443"), or anything with "*". A client that sends no Origin (not a
+// browser: a native tool or a test) is always let in, as over plain TCP.
+struct OriginPolicy {
+  std::vector<std::string> allowed;
+  bool accepts(const std::string& origin) const;
+};
+
+class WebSocketLink final : public SocketStreamLink {
+ public:
+  // on_refused: called once if the handshake is refused or fails ("origin_refused",
+  // "handshake_failed"): the connection never became a WebSocket, and no session saw it.
+  WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes, OriginPolicy origins,
+                std::function<void(const std::string& reason, const std::string& peer)> on_refused = {});
+
+  std::string_view transport() const override { return "ws"; }
+  void set_max_message_bytes(std::size_t bytes) override { protocol_.set_max_message_bytes(bytes); }
+
+ private:
+  WebSocketProtocol::Handlers protocol_handlers();
+  void do_read() override;
+  void do_write() override;
+  void on_ended(const std::string& reason);
+
+  OriginPolicy origins_;
+  std::function<void(const std::string&, const std::string&)> on_refused_;
+  WebSocketProtocol protocol_;
+  std::array<std::uint8_t, 16 * 1024> read_buffer_{};
+  std::vector<char> output_;          // the protocol's bytes not yet handed to the socket
+  std::vector<char> writing_bytes_;   // ... and those being written now
+  bool message_in_flight_ = false;    // the queue's front is among them
+  std::string ended_reason_;          // the protocol ended: close once its last bytes are written
+};
+
+}  // namespace ocean::server

@@ -1,0 +1,117 @@
+// The WebSocket transport (--ws-listen, --ws-origins) against a real Server over loopback: a
+// WebSocket client reconstructs exactly what the encoder sent, like a TCP one; handshakes from
+// origins outside the allow-list are refused with 403; hostile WebSocket clients (text frames,
+// oversized and unmasked frames, a Ping flood that never reads) are closed with a reason while
+// the other clients keep their stream.
+#include "session_harness.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace ocean::server;
+using namespace ocean::server::test;
+namespace proto = ocean::protocol;
+
+namespace {
+
+ServerConfig websocket_config() {
+  ServerConfig config = session_test_config();
+  config.ws_listen = ListenAddress{"127.0.0.1", 0};
+  config.ws_origins = {"http://viewer.example:8080"};
+  return config;
+}
+
+proto::Hello tcp_hello() { return proto::Hello{1, 0, ocean::wire::Transport::tcp, "ws-test"}; }
+
+}  // namespace
+
+TEST_CASE("a WebSocket client reconstructs exactly what the encoder sent") {
+  SessionHarness harness(websocket_config());
+  auto browser = harness.ws_client("http://viewer.example:8080");
+  auto tool = harness.ws_client();  // no Origin: not a browser
+  auto tcp = harness.client();
+  CHECK(browser->ws_status == 101);
+  CHECK(tool->ws_status == 101);
+  std::vector<SessionTestClient*> all{browser.get(), tool.get(), tcp.get()};
+  for (auto* c : all) c->hello(tcp_hello());
+  REQUIRE(pump_until(all, [&] {
+    for (auto* c : all)
+      if (c->completed_heights.size() < 20) return false;
+    return true;
+  }));
+  for (auto* c : all) {
+    CHECK(c->errors.empty());
+    CHECK(c->rejected_chunks == 0);
+    harness.check_reconstructions(*c);
+  }
+  harness.stop();
+  for (auto* c : {browser.get(), tool.get()}) {
+    pump_until({c}, [&] { return !c->byes.empty(); }, std::chrono::seconds(5));
+    REQUIRE(c->byes.size() == 1);  // the goodbye travels as a WebSocket message too
+  }
+}
+
+TEST_CASE("WebSocket handshakes from origins outside the allow-list are refused") {
+  SessionHarness harness(websocket_config());
+  auto stranger = harness.ws_client("http://evil.example");
+  auto lookalike = harness.ws_client("http://viewer.example:8081");
+  auto allowed = harness.ws_client("http://viewer.example:8080");
+  CHECK(stranger->ws_status == 403);
+  CHECK(lookalike->ws_status == 403);
+  CHECK(allowed->ws_status == 101);
+  REQUIRE(pump_until({stranger.get(), lookalike.get()}, [&] { return stranger->closed() && lookalike->closed(); }));
+  harness.stop();
+  CHECK(harness.server().metrics().rejects("origin_refused").value() == 2);
+}
+
+TEST_CASE("hostile WebSocket clients are closed with a reason while the others keep their stream") {
+  SessionHarness harness(websocket_config());
+  auto viewer = harness.ws_client();
+  auto tcp = harness.client();
+  viewer->hello(tcp_hello());
+  tcp->hello(tcp_hello());
+  std::vector<SessionTestClient*> good{viewer.get(), tcp.get()};
+  REQUIRE(pump_until(good, [&] { return viewer->completed_heights.size() >= 5 && tcp->completed_heights.size() >= 5; }));
+
+  auto texter = harness.ws_client();
+  const std::string text = "hello?";
+  texter->send_raw(ocean::test::ws_client_frame(ocean::test::ws_text, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size())));
+  auto giant = harness.ws_client();
+  std::vector<std::uint8_t> huge(proto::kDefaultMaxMessageBytes + 1024, 0x55);
+  giant->send_raw(ocean::test::ws_client_frame(ocean::test::ws_binary, huge));
+  auto unmasked = harness.ws_client();
+  const std::uint8_t bare[] = {0x82, 0x03, 1, 2, 3};  // client frames must be masked
+  unmasked->send_raw(bare);
+  auto flooder = harness.ws_client();
+  flooder->hello(tcp_hello());
+  flooder->reading_paused = true;
+  std::vector<std::uint8_t> pings;
+  for (int i = 0; i < 4000; ++i) {
+    proto::Ping ping;
+    ping.seq = static_cast<std::uint32_t>(i);
+    const auto frame = ocean::test::ws_client_frame(ocean::test::ws_binary, proto::encode(ping));
+    pings.insert(pings.end(), frame.begin(), frame.end());
+  }
+  flooder->send_raw(pings);
+
+  std::vector<SessionTestClient*> hostile{texter.get(), giant.get(), unmasked.get()};
+  std::vector<SessionTestClient*> everyone = good;
+  everyone.insert(everyone.end(), hostile.begin(), hostile.end());
+  const std::size_t viewer_before = viewer->completed_heights.size(), tcp_before = tcp->completed_heights.size();
+  REQUIRE(pump_until(everyone, [&] {
+    for (auto* c : hostile)
+      if (!c->closed()) return false;
+    return viewer->completed_heights.size() >= viewer_before + 30 && tcp->completed_heights.size() >= tcp_before + 30;
+  }));
+  CHECK(texter->ws_close_code == 1003);   // unsupported data
+  CHECK(giant->ws_close_code == 1009);    // message too big
+  CHECK(unmasked->ws_close_code == 1002); // protocol error
+  for (auto* c : good) {
+    CHECK(c->errors.empty());
+    CHECK(c->byes.empty());
+    harness.check_reconstructions(*c);
+  }
+  harness.stop();
+  ServerMetrics& metrics = harness.server().metrics();
+  CHECK(metrics.rejects("oversized").value() >= 1);
+  CHECK(metrics.rejects("unexpected_message").value() >= 2);  // the text and the unmasked frame
+}
