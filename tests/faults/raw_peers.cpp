@@ -3,6 +3,7 @@
 #include <arpa/inet.h>
 #include <cerrno>
 #include <chrono>
+#include <utility>
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
@@ -84,6 +85,20 @@ std::optional<protocol::AnyMessage> RawTcp::read_message(double timeout_s) {
     pending_.insert(pending_.end(), buffer, buffer + n);
   }
   return std::nullopt;
+}
+
+std::vector<std::uint8_t> RawTcp::read_raw(double timeout_s) {
+  std::vector<std::uint8_t> bytes = std::exchange(pending_, {});
+  if (!bytes.empty() || fd_ < 0) return bytes;
+  pollfd p{fd_, POLLIN, 0};
+  if (::poll(&p, 1, static_cast<int>(timeout_s * 1000.0)) <= 0) return bytes;
+  std::uint8_t buffer[16384];
+  const ssize_t n = ::recv(fd_, buffer, sizeof buffer, 0);
+  if (n <= 0) {
+    connected_ = false;
+    return bytes;
+  }
+  return std::vector<std::uint8_t>(buffer, buffer + n);
 }
 
 std::optional<protocol::Welcome> RawTcp::handshake(const protocol::Hello& hello, double timeout_s) {

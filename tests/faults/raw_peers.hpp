@@ -28,6 +28,8 @@ class RawTcp {
   bool send(std::span<const std::uint8_t> bytes);
   // The next verified server message within timeout_s; nullopt on timeout, close or a bad message.
   std::optional<protocol::AnyMessage> read_message(double timeout_s);
+  // The bytes that arrive within timeout_s, unparsed (empty on timeout or close).
+  std::vector<std::uint8_t> read_raw(double timeout_s);
   // Sends the Hello and reads until the Welcome (frames before it are skipped).
   std::optional<protocol::Welcome> handshake(const protocol::Hello& hello, double timeout_s = 3.0);
   // Reads until the server closes; returns the Error or Bye seen (if any) and whether it closed.

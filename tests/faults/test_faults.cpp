@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <functional>
 #include <mutex>
 #include <random>
@@ -16,6 +17,8 @@
 #include "ocean_generated.h"
 #include "protocol_version.hpp"
 #include "raw_peers.hpp"
+#include "verify_message.hpp"
+#include "websocket_test_frames.hpp"
 
 using namespace ocean::faults;
 namespace proto = ocean::protocol;
@@ -60,6 +63,36 @@ proto::Bytes unpadded_udp_hello(std::uint64_t session_id, const proto::Bytes& co
 
 proto::Hello hello(std::uint8_t profile, ocean::wire::Transport transport, const std::string& name) {
   return proto::Hello{profile, 0, transport, name};
+}
+
+// After a WebSocket upgrade and a Hello: the Welcome's session id (0 if none came within 3 s).
+std::uint64_t ws_welcome_session(RawTcp& c) {
+  std::vector<std::uint8_t> head;
+  ocean::test::WsDeframer deframer;
+  bool upgraded = false;
+  const auto end = Clock::now() + milliseconds(3000);
+  while (Clock::now() < end) {
+    const std::vector<std::uint8_t> bytes = c.read_raw(0.1);
+    if (!upgraded) {
+      head.insert(head.end(), bytes.begin(), bytes.end());
+      const std::string text(head.begin(), head.end());
+      const std::size_t blank = text.find("\r\n\r\n");
+      if (blank == std::string::npos) continue;
+      upgraded = true;
+      deframer.feed(std::span(head).subspan(blank + 4));
+    } else {
+      deframer.feed(bytes);
+    }
+    while (auto frame = deframer.next()) {
+      std::vector<std::uint64_t> aligned((frame->payload.size() + 7) / 8);
+      std::memcpy(aligned.data(), frame->payload.data(), frame->payload.size());
+      const auto verified = proto::verify_message(std::span(reinterpret_cast<const std::uint8_t*>(aligned.data()), frame->payload.size()),
+                                                  {proto::Sender::server, ocean::wire::Transport::tcp});
+      if (verified && verified.message->body_type() == ocean::wire::Body::Welcome)
+        return verified.message->body_as_Welcome()->session_id();
+    }
+  }
+  return 0;
 }
 
 }  // namespace
@@ -418,4 +451,68 @@ TEST_CASE("UDP garbage and forged datagrams are dropped unanswered while the vic
   CHECK(s.population().keyframes(0) == victim_keys_before);
   const ClientWindow& victim_window = m.window.clients.at(0);
   if (machine_kept_up(m)) CHECK(victim_window.on_time_share() >= kOnTimeShare);
+}
+
+TEST_CASE("WebSocket clients that send garbage, flood or never read leave the others on time", "[faults]") {
+  std::vector<std::string> args = small_server(64, 3.0);
+  args.insert(args.end(), {"--ws-listen", "127.0.0.1:0"});
+  FaultScenario s(args);
+  REQUIRE(s.server().ws_port() != 0);
+  start_population(s);
+  const std::uint16_t ws = s.server().ws_port();
+  const auto text = [](const std::string& t) { return std::span(reinterpret_cast<const std::uint8_t*>(t.data()), t.size()); };
+  std::atomic<int> bad_connections{0};
+  std::atomic<std::uint64_t> pings{0};
+  const FaultMeasure m = s.measure("WebSocket garbage and a non-reader's Ping flood", [&] {
+    std::vector<std::thread> threads;
+    // Connection after connection, each with one kind of bad input after a good handshake.
+    threads.emplace_back([&] {
+      lower_thread_priority();
+      const std::vector<std::uint8_t> huge(proto::kDefaultMaxMessageBytes + 4096, 0x5a);
+      const std::vector<std::vector<std::uint8_t>> bad = {
+          ocean::test::ws_client_frame(ocean::test::ws_text, text("{\"hello\": 1}")),
+          ocean::test::ws_client_frame(ocean::test::ws_binary, huge),
+          {0x82, 0x05, 1, 2, 3, 4, 5},  // unmasked
+          ocean::test::ws_client_frame(ocean::test::ws_binary, text("not a protocol message at all")),
+          {0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff}};
+      const auto end = Clock::now() + milliseconds(3000);
+      for (std::size_t i = 0; Clock::now() < end; ++i) {
+        RawTcp c(ws);
+        const std::string upgrade = ocean::test::ws_upgrade_request(ws);
+        if (!c.send(text(upgrade)) || !c.send(bad[i % bad.size()])) continue;
+        ++bad_connections;
+        std::this_thread::sleep_for(milliseconds(20));
+      }
+    });
+    // A WebSocket viewer that stops reading and floods Pings: its Pongs fill its bounded queue.
+    threads.emplace_back([&] {
+      lower_thread_priority();
+      RawTcp c(ws, 4096);
+      const std::string upgrade = ocean::test::ws_upgrade_request(ws);
+      if (!c.send(text(upgrade))) return;
+      const auto hello_frame = ocean::test::ws_client_frame(ocean::test::ws_binary, proto::encode(hello(kMobile, ocean::wire::Transport::tcp, "ws-flood")));
+      if (!c.send(hello_frame)) return;
+      const std::uint64_t session = ws_welcome_session(c);
+      if (session == 0) return;
+      std::vector<std::uint8_t> batch;
+      for (int i = 0; i < 64; ++i) {
+        const auto frame = ocean::test::ws_client_frame(ocean::test::ws_binary, proto::encode(proto::Ping{session, {}, static_cast<std::uint32_t>(i), 0}));
+        batch.insert(batch.end(), frame.begin(), frame.end());
+      }
+      const auto end = Clock::now() + milliseconds(3000);
+      while (Clock::now() < end && c.send(batch)) pings += 64;
+      std::this_thread::sleep_until(end);
+    });
+    for (auto& t : threads) t.join();
+  });
+  check_population(s, m);
+  std::printf("[faults] websocket: %d bad connections, %llu Pings from a reader that never read\n", bad_connections.load(),
+              static_cast<unsigned long long>(pings.load()));
+  CHECK(bad_connections > 20);
+  CHECK(pings > 1000);
+  const std::string metrics = s.metrics();
+  CHECK(rejects(metrics, "oversized") >= 1);
+  CHECK(rejects(metrics, "unexpected_message") >= 2);  // text and unmasked frames
+  CHECK(rejects(metrics, "send_queue_full") + rejects(metrics, "idle_timeout") >= 1);  // the flooder is gone
+  CHECK(s.healthy());
 }

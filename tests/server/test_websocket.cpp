@@ -83,10 +83,12 @@ TEST_CASE("hostile WebSocket clients are closed with a reason while the others k
   unmasked->send_raw(bare);
   auto flooder = harness.ws_client();
   flooder->hello(tcp_hello());
-  flooder->reading_paused = true;
+  REQUIRE(pump_until({flooder.get()}, [&] { return flooder->welcome.has_value(); }));
+  flooder->reading_paused = true;  // from now on its Pongs pile up in its bounded queue
   std::vector<std::uint8_t> pings;
   for (int i = 0; i < 4000; ++i) {
     proto::Ping ping;
+    ping.session_id = flooder->welcome->session_id;
     ping.seq = static_cast<std::uint32_t>(i);
     const auto frame = ocean::test::ws_client_frame(ocean::test::ws_binary, proto::encode(ping));
     pings.insert(pings.end(), frame.begin(), frame.end());

@@ -31,6 +31,7 @@ struct ListeningPorts {
   std::uint16_t tcp = 0;
   std::uint16_t udp = 0;
   std::uint16_t metrics = 0;
+  std::uint16_t ws = 0;  // --ws-listen
 };
 std::optional<ListeningPorts> parse_listening_line(const std::string& log);
 
@@ -64,6 +65,7 @@ class ServerProcess {
   const ListeningPorts& ports() const { return ports_; }  // zeros before wait_listening()
   std::uint16_t tcp_port() const { return ports_.tcp; }
   std::uint16_t metrics_port() const { return ports_.metrics; }
+  std::uint16_t ws_port() const { return ports_.ws; }
 
   void signal(int number);
   // The exit status, or -1 when it did not exit normally (a signal) or not within `seconds`.
