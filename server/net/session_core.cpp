@@ -287,6 +287,7 @@ void SessionCore::on_hello(const std::shared_ptr<Session>& session, const wire::
                                 options_.cookie_lifetime_ms);
   send_control(*session, protocol::encode(welcome(*session)));
   for (const AnnouncedScene& later : scenes_.after(tick_)) send_control(*session, protocol::encode(scene_update(later, 0)));
+  if (session->closed) return;  // a full control queue closed it: nothing to serve
   sessions_.insert(session);
   host_.metrics.sessions_started.inc();
   log_connect(session->id, session->wants_udp ? "udp" : session->link->transport(), session->peer(), stream->profile().name);

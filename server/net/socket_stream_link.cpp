@@ -71,12 +71,16 @@ void SocketStreamLink::write_after(double wait_s) {
 void SocketStreamLink::close_after_flush(double grace_s) {
   if (closed_ || closing_) return;
   closing_ = true;
+  close_within(grace_s);
+  do_write();
+}
+
+void SocketStreamLink::close_within(double grace_s) {
   close_timer_.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(grace_s)));
   close_timer_.async_wait([self = shared_from_this()](std::error_code error) {
     if (!error) self->close("flush_timeout");
   });
-  do_write();
 }
 
 void SocketStreamLink::close(const std::string& reason) {

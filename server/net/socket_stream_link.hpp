@@ -56,6 +56,8 @@ class SocketStreamLink : public StreamLink, public std::enable_shared_from_this<
   void pop_written();
   // Nothing queued can be written any more (the connection is ending).
   void drop_queue();
+  // Closes as flush_timeout after grace_s unless closed before (a reader that stopped).
+  void close_within(double grace_s);
   // do_write() again after `wait_s` (pacing).
   void write_after(double wait_s);
   template <class Self>

@@ -37,6 +37,7 @@ WebSocketProtocol::Handlers WebSocketLink::protocol_handlers() {
 // writes a 403 after asking about the Origin): do_read writes them.
 void WebSocketLink::on_ended(const std::string& reason) {
   ended_reason_ = reason;
+  if (!closing_) close_within(kEndGraceS);  // a client that reads nothing cannot hold the last bytes forever
   if ((reason == "origin_refused" || reason == "handshake_failed") && on_refused_) on_refused_(reason, peer_text_);
   if ((reason == "oversized" || reason == "malformed") && on_message_ && !closing_) {
     framing_failure_ = reason == "oversized" ? protocol::Reason::oversized : protocol::Reason::unexpected_message;
@@ -51,6 +52,10 @@ void WebSocketLink::do_read() {
     if (error) return self->close(error == asio::error::eof ? "peer_closed" : "read_error");
     self->protocol_.feed(self->read_buffer_.data(), n);
     if (self->closed_) return;
+    // What the protocol answers by itself (Pongs to WebSocket Pings) is bounded like the queue:
+    // a client that sends Pings and reads nothing is closed, not buffered for.
+    if (self->output_.size() + self->writing_bytes_.size() > self->max_queue_bytes() + kControlHeadroomBytes)
+      return self->close("send_queue_full");
     self->do_write();  // a handshake answer, a Pong, a close frame
     if (self->ended_reason_.empty()) self->do_read();
   });

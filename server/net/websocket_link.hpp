@@ -26,6 +26,8 @@ struct OriginPolicy {
 
 class WebSocketLink final : public SocketStreamLink {
  public:
+  static constexpr double kEndGraceS = 1.0;  // to write a 403 or a close frame once the protocol ended
+
   // on_refused: called once if the handshake is refused or fails ("origin_refused",
   // "handshake_failed"): the connection never became a WebSocket, and no session saw it.
   WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes, OriginPolicy origins,

@@ -32,6 +32,10 @@ struct WebSocketProtocol::Impl {
     }
   }
 
+  // A close the client started: websocketpp's answer echoes the client's code, which is then no
+  // verdict on the client's input.
+  bool client_closed() const { return connection->get_remote_close_code() != close_code::abnormal_close; }
+
   void end(const std::string& reason) {
     if (ended) return;
     ended = true;
@@ -48,6 +52,9 @@ WebSocketProtocol::WebSocketProtocol(Handlers handlers, std::size_t max_message_
   Endpoint::connection_ptr& con = impl.connection;
   Impl* self = impl_.get();
   con->set_max_message_size(max_message_bytes);
+  // An upgrade request has no body: without this, websocketpp buffers a Content-Length of up to
+  // 32 MB per handshake.
+  con->set_max_http_body_size(0);
   con->set_write_handler([self](websocketpp::connection_hdl, const char* data, std::size_t size) {
     if (self->handlers.on_output) self->handlers.on_output(data, size);
     return websocketpp::lib::error_code();
@@ -61,7 +68,8 @@ WebSocketProtocol::WebSocketProtocol(Handlers handlers, std::size_t max_message_
   con->set_message_handler([self](websocketpp::connection_hdl, Endpoint::message_ptr message) {
     if (self->ended) return;
     if (message->get_opcode() != websocketpp::frame::opcode::binary) {
-      self->connection->close(close_code::unsupported_data, "text messages are not part of the protocol");
+      websocketpp::lib::error_code ignored;
+      self->connection->close(close_code::unsupported_data, "text messages are not part of the protocol", ignored);
       return self->end("malformed");
     }
     const std::string& payload = message->get_payload();
@@ -69,15 +77,21 @@ WebSocketProtocol::WebSocketProtocol(Handlers handlers, std::size_t max_message_
       self->handlers.on_message(reinterpret_cast<const std::uint8_t*>(payload.data()), payload.size());
   });
   con->set_fail_handler([self](websocketpp::connection_hdl) { self->end("handshake_failed"); });
-  con->set_close_handler([self](websocketpp::connection_hdl) { self->end_by_code(); });
+  con->set_close_handler([self](websocketpp::connection_hdl) {
+    if (self->client_closed() && !self->closing_by_us) return self->end("peer_closed");
+    self->end_by_code();
+  });
   con->start();
 }
 
 WebSocketProtocol::~WebSocketProtocol() {
-  // The connection's handlers point here: no callback may run while it goes away.
+  // The connection's handlers point here: no callback may reach the link while it goes away.
   if (impl_ && impl_->connection) {
     impl_->ended = true;
     impl_->handlers = Handlers{};
+    // Its pending read holds a shared_ptr to the connection itself (iostream transport): ending
+    // the read ends the connection, or a client that left mid-handshake would leak it.
+    impl_->connection->eof();
   }
 }
 
@@ -87,8 +101,9 @@ void WebSocketProtocol::feed(const std::uint8_t* data, std::size_t size) {
     const std::size_t used = impl_->connection->read_some(reinterpret_cast<const char*>(data) + done, size - done);
     if (used == 0) break;
     done += used;
-    // websocketpp answers bad input (an oversized or malformed frame) with its own close frame and
-    // then waits for the client's; a hostile client never sends one, so the link ends now.
+    // Bad input (an oversized or malformed frame) normally ends the connection inside read_some
+    // (websocketpp sends its close frame and terminates); should it ever wait for the client's
+    // close frame instead, a hostile client never sends one, so the link ends now.
     if (!impl_->ended && !impl_->closing_by_us &&
         impl_->connection->get_state() == websocketpp::session::state::closing)
       impl_->end_by_code();

@@ -59,8 +59,10 @@ class SessionTestClient {
     tcp_.non_blocking(false);
     std::error_code error;
     asio::write(tcp_, asio::buffer(bytes.data(), bytes.size()), error);
+    if (error) send_failed_ = true;
     tcp_.non_blocking(true);
   }
+  bool send_failed() const { return send_failed_; }  // the server closed (or reset) the connection
   void send_udp(const proto::Bytes& bytes) {
     std::error_code error;
     udp_.send_to(asio::buffer(bytes), {asio::ip::make_address("127.0.0.1"), udp_port_}, 0, error);
@@ -246,6 +248,7 @@ class SessionTestClient {
   std::unique_ptr<codec::Decoder> decoder_;
   std::chrono::steady_clock::time_point last_udp_hello_{};
   bool websocket_ = false;
+  bool send_failed_ = false;
   ::ocean::test::WsDeframer deframer_;
   std::vector<std::uint64_t> aligned_;
 };
