@@ -48,17 +48,15 @@ void SessionCore::on_frames(const std::shared_ptr<const TickFrames>& frames, con
   bundles_.clear();  // the bytes of last tick's bundles stay alive while queued
   std::vector<std::pair<const void*, codec::StateId>> bases;
   roots_full_.clear();
-  if (tick_ % static_cast<Tick>(host_.config.tick_rate_hz) == 0) forget_unwatched_streams();
+  if (second_tick()) forget_unwatched_streams();
   for (auto& stream : streams_)
     if (stream->is_frame_tick(tick_) && is_key_tick(*stream, tick_) && !limit_roots(*stream, tick_, now.monotonic_s))
       roots_full_.push_back(stream.get());
   // From a different session each tick: when a budget (keys, encodes) runs out, it is not always
   // the same sessions that wait. A copy, so a session closing meanwhile cannot upset the walk.
   rotate_from_ += 0x9E3779B97F4A7C15ull;
-  std::vector<std::shared_ptr<Session>> order;
-  order.reserve(sessions_.size());
-  const std::size_t first = sessions_.empty() ? 0 : static_cast<std::size_t>(rotate_from_ % sessions_.size());
-  for (std::size_t i = 0; i < sessions_.size(); ++i) order.push_back(sessions_[(first + i) % sessions_.size()]);
+  std::vector<std::shared_ptr<Session>> order = sessions_.snapshot();
+  if (!order.empty()) std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(rotate_from_ % order.size()), order.end());
   for (const auto& session : order) {
     try {
       serve(*session, tick_, now.monotonic_s, bases);
@@ -86,9 +84,7 @@ void SessionCore::record_tick_stats(std::vector<std::pair<const void*, codec::St
   }
   metrics.encodes.inc(static_cast<double>(stats.encodes));
   metrics.encodes_last_tick.set(static_cast<double>(stats.encodes));
-  // Once a second: it asks every session's link.
-  if (tick_ % static_cast<Tick>(host_.config.tick_rate_hz) == 0)
-    metrics.send_queue_max_bytes.set(static_cast<double>(max_queued_bytes()));
+  if (second_tick()) metrics.send_queue_max_bytes.set(static_cast<double>(max_queued_bytes()));  // asks every link
   last_tick_ = stats;
   if (tick_observer_) tick_observer_(stats);
 }
@@ -366,7 +362,7 @@ void SessionCore::sweep_timeouts(double now_s) {
   for (const auto& session : expired) refuse(*session, protocol::Reason::timeout, "timeout: no Hello within the handshake time");
   expired.clear();
   for (const auto& session : sessions_)
-    if (session->link->open() && !session->ending && now_s - session->last_heard_s > host_.config.idle_timeout_s)
+    if (!session->closed && !session->ending && now_s - session->last_heard_s > host_.config.idle_timeout_s)
       expired.push_back(session);
   for (const auto& session : expired) {
     host_.metrics.rejects("idle_timeout").inc();

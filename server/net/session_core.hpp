@@ -154,6 +154,7 @@ class SessionCore {
   std::size_t root_cap(const ProfileStream& stream) const;
   std::size_t root_budget(const ProfileStream& stream) const;
   void forget_unwatched_streams();  // once a second
+  bool second_tick() const { return tick_ % static_cast<Tick>(host_.config.tick_rate_hz) == 0; }  // the first of each second
   bool is_key_tick(const ProfileStream& stream, Tick tick) const;
   // A key interval has passed since the session's last key: a requested key may go out.
   bool key_due(const Session& session, double now_s) const { return now_s - session.last_key_s >= options_.key_interval_s; }
