@@ -317,12 +317,17 @@ std::int64_t steady_ms() {
 constexpr std::int64_t kStalledMs = 5000;
 }  // namespace
 
+// One tick per handler: a network thread slower than the ticks would otherwise find a new one
+// queued after each and never return to the loop, and a signal, an ack or an accept would wait
+// behind every tick to come (a SIGTERM went unanswered for over 10 s that way under ASan).
 void Server::drain_frames() {
-  while (std::optional<std::shared_ptr<const TickFrames>> frames = frames_.pop()) {
+  if (std::optional<std::shared_ptr<const TickFrames>> frames = frames_.pop()) {
     ready_.store(true);
     if (frame_sink_) frame_sink_(*frames);
     heartbeat_ms_.store(steady_ms());
   }
+  // A push into an empty queue posts a drain itself; one into a non-empty queue relies on this.
+  if (frames_.size() > 0) asio::post(context_, [this] { drain_frames(); });
   flush_log_summary();
 }
 

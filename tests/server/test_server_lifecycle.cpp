@@ -6,6 +6,7 @@
 #include <asio/write.hpp>
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <csignal>
 #include <future>
@@ -148,6 +149,29 @@ TEST_CASE("frames reach the network side in tick order at tick / rate", "[server
                           std::chrono::system_clock::now().time_since_epoch()).count();
   const auto now_tick = (now_ms - server.config().epoch_unix_ms) * 60 / 1000;
   CHECK(std::abs(seen.back().first - now_tick) < 60 * 5);
+}
+
+TEST_CASE("a network side slower than the ticks still answers stop() and SIGTERM", "[server]") {
+  // Each tick takes the network thread 5 periods: a new tick always waits when one is served.
+  // Served back to back in one handler, they would keep stop's handler waiting for ever.
+  Server server(test_config());
+  std::atomic<int> served{0};
+  std::atomic<bool> slow{true};  // cleared after the verdict, so a failing server still ends
+  server.set_frame_sink([&](const std::shared_ptr<const TickFrames>&) {
+    ++served;
+    if (slow) std::this_thread::sleep_for(std::chrono::milliseconds(5 * 1000 / 60));
+  });
+  auto done = run_async(server);
+  REQUIRE(wait_until([&] { return served >= 3; }));
+  const auto asked = std::chrono::steady_clock::now();
+  std::raise(SIGTERM);
+  const bool stopped = done.wait_for(5s) == std::future_status::ready;
+  slow = false;
+  REQUIRE(stopped);
+  done.get();
+  // The signal waits for at most the tick being served, then the goodbyes' grace.
+  CHECK(std::chrono::steady_clock::now() - asked < std::chrono::duration<double>(kStopGraceS + 1.0));
+  CHECK(server.metrics().frames_dropped.value() > 0);  // the queue kept the newest ticks
 }
 
 TEST_CASE("until sessions exist, TCP clients are refused with a counted reason", "[server]") {
