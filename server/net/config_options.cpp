@@ -160,6 +160,18 @@ const ConfigOption kOptions[] = {
        return std::string();
      },
      [](const ServerConfig& c) { return c.ws_origins.empty() ? std::string("none") : join(c.ws_origins); }},
+    {"web-listen", "ADDR:PORT|off",
+     "HTTP address serving the browser viewer's page (needs --ws-listen; its Origin is then let in); 'off' (default) disables it",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) { return apply_address(c.web_listen, v, true); },
+     [](const ServerConfig& c) { return show_optional_address(c.web_listen, "off"); }},
+    {"web-root", "DIR", "folder holding the browser viewer (index.html, viewer.js, ocean-web.js, ocean-web.wasm)",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) {
+       c.web_root = std::string(v);
+       return std::string();
+     },
+     [](const ServerConfig& c) { return c.web_root.empty() ? std::string("the build tree's or installed web viewer") : c.web_root; }},
     {"size", "N", "simulation grid N x N samples: a power of two in 16..2048", ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) {
        int n = 0;

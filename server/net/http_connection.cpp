@@ -8,6 +8,9 @@ namespace ocean::server {
 namespace {
 
 constexpr auto kRequestDeadline = std::chrono::seconds(5);
+// A reply gets the request's 5 s plus its size at this rate (128 kbit/s): the web viewer's
+// module (about 0.7 MB) may take 50 s on a thin link, a /metrics page about 5 s.
+constexpr double kSlowestReplyBytesPerS = 16 * 1024;
 
 const char* reason_phrase(int status) {
   switch (status) {
@@ -47,13 +50,17 @@ void HttpConnection::refused(std::string_view reason) {
 }
 
 void HttpConnection::start() {
-  deadline_.expires_after(kRequestDeadline);
+  arm_deadline(kRequestDeadline);
+  do_read();
+}
+
+void HttpConnection::arm_deadline(std::chrono::steady_clock::duration limit) {
+  deadline_.expires_after(limit);  // an earlier wait completes with operation_aborted
   deadline_.async_wait([self = shared_from_this()](std::error_code error) {
     if (error) return;
     self->refused("http_timeout");  // too slow: give up on it
     self->finish();
   });
-  do_read();
 }
 
 void HttpConnection::stop() {
@@ -84,6 +91,8 @@ void HttpConnection::do_read() {
 
 void HttpConnection::do_write(const HttpReply& reply, bool include_body) {
   reply_bytes_ = reply.to_wire(include_body);
+  arm_deadline(kRequestDeadline + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(static_cast<double>(reply_bytes_.size()) / kSlowestReplyBytesPerS)));
   asio::async_write(socket_, asio::buffer(reply_bytes_), [self = shared_from_this()](std::error_code error, std::size_t) {
     if (!error) {
       std::error_code ignored;

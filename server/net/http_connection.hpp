@@ -8,6 +8,7 @@
 #include <asio/steady_timer.hpp>
 
 #include <array>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -36,6 +37,7 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   void stop();  // closes the socket; pending operations complete with an error
 
  private:
+  void arm_deadline(std::chrono::steady_clock::duration limit);  // then: http_timeout, closed
   void do_read();
   void do_write(const HttpReply& reply, bool include_body);
   void finish();

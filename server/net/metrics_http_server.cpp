@@ -20,8 +20,11 @@ asio::ip::tcp::acceptor open_tcp_acceptor(asio::io_context& context, const Liste
 }
 
 MetricsHttpServer::MetricsHttpServer(asio::io_context& context, const ListenAddress& address,
-                                     HttpConnection::Handler handler)
-    : acceptor_(open_tcp_acceptor(context, address, "metrics")), backoff_(context), handler_(std::move(handler)) {}
+                                     HttpConnection::Handler handler, std::size_t max_connections, std::string_view purpose)
+    : acceptor_(open_tcp_acceptor(context, address, purpose)),
+      backoff_(context),
+      handler_(std::move(handler)),
+      max_connections_(max_connections) {}
 
 void MetricsHttpServer::start() { do_accept(); }
 
@@ -44,7 +47,12 @@ void MetricsHttpServer::do_accept() {
         if (!e && acceptor_.is_open()) do_accept();
       });
     }
-    if (!error) {
+    if (!error && max_connections_ > 0 && connections_.size() >= max_connections_) {
+      std::error_code ignored;
+      const auto peer = socket.remote_endpoint(ignored);
+      if (on_refused_) on_refused_("http_busy", peer.address().to_string());
+      socket.close(ignored);
+    } else if (!error) {
       auto connection = std::make_shared<HttpConnection>(
           std::move(socket), handler_, [this](const std::shared_ptr<HttpConnection>& done) { connections_.erase(done); },
           on_refused_);

@@ -1,5 +1,6 @@
 // MetricsHttpServer: the HTTP endpoint for Prometheus (/metrics) and probes (/healthz, /readyz),
-// on the network io_context. Owns its acceptor and the open connections so stop() ends them all.
+// and for the browser viewer's page (--web-listen, WebFiles), on the probes' io_context. Owns its
+// acceptor and the open connections so stop() ends them all.
 #pragma once
 
 #include "http_connection.hpp"
@@ -11,13 +12,18 @@
 
 #include <memory>
 #include <set>
+#include <string_view>
 
 namespace ocean::server {
 
 class MetricsHttpServer {
  public:
-  // Binds at once; throws std::system_error naming the address when it cannot.
-  MetricsHttpServer(asio::io_context& context, const ListenAddress& address, HttpConnection::Handler handler);
+
+  // Binds at once; throws std::system_error naming the address when it cannot. max_connections
+  // (0: no limit) bounds the open connections, each of which may hold a whole reply; one more is
+  // closed at once and counted as http_busy.
+  MetricsHttpServer(asio::io_context& context, const ListenAddress& address, HttpConnection::Handler handler,
+                    std::size_t max_connections = 0, std::string_view purpose = "metrics");
 
   void set_refused_callback(HttpConnection::RefusedCallback callback) { on_refused_ = std::move(callback); }
   void start();
@@ -32,6 +38,7 @@ class MetricsHttpServer {
   HttpConnection::Handler handler_;
   HttpConnection::RefusedCallback on_refused_;
   std::set<std::shared_ptr<HttpConnection>> connections_;
+  std::size_t max_connections_ = 0;
 };
 
 // Opens, configures (SO_REUSEADDR) and binds a listening TCP acceptor; used for every TCP listener.

@@ -112,6 +112,22 @@ Server::Server(ServerConfig config)
       log_limited(spdlog::level::info, reason, peer, "reject transport=http peer={} reason={}", peer, reason);
     });
   }
+  if (config_.web_listen) {
+    const std::string root = config_.web_root.empty() ? default_web_root() : config_.web_root;
+    if (root.empty())
+      throw std::invalid_argument("--web-listen: no browser viewer found (build it with -DOCEAN_BUILD_WEB=ON, or give --web-root DIR)");
+    std::string error;
+    web_files_ = WebFiles::load(root, ws_port_, error);
+    if (!web_files_) throw std::invalid_argument(error);
+    // Each connection may hold a whole reply (the module is 0.7 MB): at most 64 at once.
+    web_http_ = std::make_unique<MetricsHttpServer>(
+        http_context_, *config_.web_listen, [this](const HttpRequest& r) { return web_files_->reply(r); }, 64, "web page");
+    web_port_ = web_http_->local_endpoint().port();
+    web_http_->set_refused_callback([this](std::string_view reason, const std::string& peer) {
+      metrics_.rejects(reason).inc();
+      log_limited(spdlog::level::info, reason, peer, "reject transport=web peer={} reason={}", peer, reason);
+    });
+  }
   for (const Profile* profile : offered_profiles(config_)) {
     metrics_.frames_computed(profile->name);
     for (const char* transport : {"tcp", "udp"}) metrics_.clients(profile->name, transport);
@@ -134,15 +150,15 @@ Server::~Server() {
 }
 
 void Server::run() {
-  spdlog::info("listening tcp={} udp={} ws={} metrics={}", config_.listen.host + ":" + std::to_string(tcp_port_),
+  spdlog::info("listening tcp={} udp={} ws={} metrics={} web={}", config_.listen.host + ":" + std::to_string(tcp_port_),
                udp_address(config_, tcp_port_).host + ":" + std::to_string(udp_port_),
                ws_ ? config_.ws_listen->host + ":" + std::to_string(ws_port_) : "off",
-               metrics_port_ ? config_.metrics_listen->host + ":" + std::to_string(*metrics_port_) : "off");
+               metrics_port_ ? config_.metrics_listen->host + ":" + std::to_string(*metrics_port_) : "off",
+               web_http_ ? config_.web_listen->host + ":" + std::to_string(web_port_) : "off");
   tick_loop_.start();
-  if (metrics_http_) {
-    metrics_http_->start();
-    http_thread_ = std::thread([this] { http_context_.run(); });
-  }
+  if (metrics_http_) metrics_http_->start();
+  if (web_http_) web_http_->start();
+  if (metrics_http_ || web_http_) http_thread_ = std::thread([this] { http_context_.run(); });
   do_accept(tcp_);
   if (ws_) do_accept(*ws_);
   udp_->start();
@@ -183,6 +199,7 @@ void Server::do_stop() {
   }
   udp_->close();
   if (metrics_http_) asio::post(http_context_, [this] { metrics_http_->stop(); });
+  if (web_http_) asio::post(http_context_, [this] { web_http_->stop(); });
   tick_loop_.stop();  // joins the simulation thread; frames it already queued are drained below
   if (stop_handler_) stop_handler_();  // sessions say Bye while the context still runs
   // A client that reads slowly (or a network thread far behind) must not hold the exit.
@@ -305,6 +322,7 @@ void Server::on_tick(const TickDecision& decision) {
 void Server::stop_http() {
   if (!http_thread_.joinable()) return;
   if (metrics_http_) asio::post(http_context_, [this] { metrics_http_->stop(); });
+  if (web_http_) asio::post(http_context_, [this] { web_http_->stop(); });
   http_context_.stop();
   http_thread_.join();
 }

@@ -15,6 +15,7 @@
 #include "server_metrics.hpp"
 #include "tick_loop.hpp"
 #include "udp_cookie.hpp"
+#include "web_files.hpp"
 
 #include <asio/io_context.hpp>
 #include <asio/ip/tcp.hpp>
@@ -90,6 +91,7 @@ class Server : public DatagramSocket {
   std::optional<std::uint16_t> ws_port() const { return ws_ ? std::optional(ws_port_) : std::nullopt; }
   std::uint16_t udp_port() const { return udp_port_; }
   std::optional<std::uint16_t> metrics_port() const { return metrics_port_; }
+  std::optional<std::uint16_t> web_port() const { return web_http_ ? std::optional(web_port_) : std::nullopt; }
   bool ready() const { return ready_.load(); }  // a first frame reached the network side
 
  private:
@@ -109,7 +111,7 @@ class Server : public DatagramSocket {
   void do_stop();
   void on_tick(const TickDecision& decision);  // simulation thread
   void drain_frames();                          // network thread
-  void stop_http();                             // stops and joins the probes' thread
+  void stop_http();                             // stops and joins the probes' (and web page's) thread
   HttpReply handle_http(const HttpRequest& request);
 
   ServerConfig config_;
@@ -127,6 +129,10 @@ class Server : public DatagramSocket {
   std::unique_ptr<Listener> ws_;  // --ws-listen
   std::unique_ptr<DatagramPort> udp_;  // the bound UDP socket, read outside asio's reactor
   std::unique_ptr<MetricsHttpServer> metrics_http_;
+  // --web-listen: the browser viewer's files, on the probes' thread (served from memory).
+  std::optional<WebFiles> web_files_;
+  std::unique_ptr<MetricsHttpServer> web_http_;
+  std::uint16_t web_port_ = 0;
   std::uint16_t tcp_port_ = 0;
   std::uint16_t ws_port_ = 0;
   std::uint16_t udp_port_ = 0;

@@ -82,6 +82,8 @@ std::string validate_server_config(const ServerConfig& config) {
     return "--log-level '" + config.log_level + "': must be one of trace, debug, info, warn, error, critical, off";
   if (!config.admin_token_file.empty() && config.admin_token.empty())
     return "--admin-token-file '" + config.admin_token_file + "': the token is empty";
+  if (config.web_listen && !config.ws_listen)
+    return "--web-listen serves the browser viewer, which connects over WebSocket: give --ws-listen too";
   return validate_profiles(config);
 }
 

@@ -37,6 +37,11 @@ struct ServerConfig {
   // Origin; only these are let in ("*": any). Clients that send no Origin always are.
   std::optional<ListenAddress> ws_listen;
   std::vector<std::string> ws_origins;
+  // The browser viewer's page, served over HTTP (off unless given); it connects to ws_listen,
+  // whose Origin check then also lets in this page as the browser names it. web_root empty: the
+  // build tree's web/ or the installed share/ocean/web.
+  std::optional<ListenAddress> web_listen;
+  std::string web_root;
 
   sim::SceneParams scene;                         // the scene at the epoch (tick 0 onward)
   std::vector<ScheduleEntry> schedule;            // later scene changes, by tick

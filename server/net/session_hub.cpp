@@ -57,7 +57,7 @@ void SessionHub::on_connection(asio::ip::tcp::socket socket, Server::StreamKind 
     server_.metrics().rejects(reason).inc();
     log_reject("ws", peer, reason);
   };
-  core_.open(std::make_shared<WebSocketLink>(std::move(socket), queue_bytes, OriginPolicy{server_.config().ws_origins},
+  core_.open(std::make_shared<WebSocketLink>(std::move(socket), queue_bytes, OriginPolicy{server_.config().ws_origins, server_.web_port().value_or(0)},
                                              std::move(refused)),
              now_instant());
 }

@@ -8,9 +8,23 @@
 
 namespace ocean::server {
 
-bool OriginPolicy::accepts(const std::string& origin) const {
+bool OriginPolicy::accepts(const std::string& origin, const std::string& host) const {
   if (origin.empty()) return true;
-  return std::any_of(allowed.begin(), allowed.end(), [&](const std::string& a) { return a == "*" || a == origin; });
+  if (std::any_of(allowed.begin(), allowed.end(), [&](const std::string& a) { return a == "*" || a == origin; }))
+    return true;
+  if (page_port == 0 || host.empty()) return false;
+  // Host is "name:port", "[v6]:port" or a bare name; the page's Origin has the same name.
+  const std::size_t bracket = host.rfind(']');
+  const std::size_t colon = host.rfind(':');
+  const std::string name = colon != std::string::npos && (bracket == std::string::npos || colon > bracket) ? host.substr(0, colon) : host;
+  if (name.empty() || name.find_first_of("/@ ") != std::string::npos) return false;
+  const std::size_t scheme_end = origin.find("://");
+  if (scheme_end == std::string::npos) return false;
+  const std::string scheme = origin.substr(0, scheme_end);
+  if (scheme != "http" && scheme != "https") return false;
+  const std::string rest = origin.substr(scheme_end + 3);
+  if (rest == name + ":" + std::to_string(page_port)) return true;
+  return rest == name && page_port == (scheme == "https" ? 443 : 80);  // the default port is not written
 }
 
 WebSocketLink::WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes, OriginPolicy origins,
@@ -22,7 +36,7 @@ WebSocketLink::WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue
 
 WebSocketProtocol::Handlers WebSocketLink::protocol_handlers() {
   WebSocketProtocol::Handlers handlers;
-  handlers.accept_origin = [this](const std::string& origin) { return origins_.accepts(origin); };
+  handlers.accept_origin = [this](const std::string& origin, const std::string& host) { return origins_.accepts(origin, host); };
   handlers.on_message = [this](const std::uint8_t* data, std::size_t size) {
     if (!closed_ && !closing_ && on_message_) on_message_(std::span<const std::uint8_t>(data, size), now_instant());
   };

@@ -60,7 +60,7 @@ WebSocketProtocol::WebSocketProtocol(Handlers handlers, std::size_t max_message_
     return websocketpp::lib::error_code();
   });
   con->set_validate_handler([self](websocketpp::connection_hdl) {
-    if (self->handlers.accept_origin && self->handlers.accept_origin(self->connection->get_origin())) return true;
+    if (self->handlers.accept_origin && self->handlers.accept_origin(self->connection->get_origin(), self->connection->get_request_header("Host"))) return true;
     self->connection->set_status(websocketpp::http::status_code::forbidden);
     self->end("origin_refused");
     return false;

@@ -151,6 +151,8 @@ TEST_CASE("every kind of bad value is refused with a message naming it", "[confi
       {{"--ws-origins", "ocean.example"}, {"--ws-origins", "'ocean.example'", "scheme://host[:port]"}},
       {{"--ws-origins", "https://ocean.example/viewer"}, {"--ws-origins", "no path"}},
       {{"--ws-origins", "ftp://ocean.example"}, {"--ws-origins", "http or https"}},
+      {{"--web-listen", "8080"}, {"--web-listen", "ADDR:PORT"}},
+      {{"--web-listen", "127.0.0.1:8080"}, {"--web-listen", "--ws-listen"}},  // the page needs a WebSocket
       {{"--tick-rate", "0"}, {"--tick-rate", "1..240"}},
       {{"--tick-rate", "241"}, {"--tick-rate", "1..240"}},
       {{"--tick-rate", "20"}, {"--tick-rate", "mobile", "multiple"}},

@@ -2,10 +2,17 @@
 // WebSocket client reconstructs exactly what the encoder sent, like a TCP one; handshakes from
 // origins outside the allow-list are refused with 403; hostile WebSocket clients (text frames,
 // oversized and unmasked frames, a Ping flood that never reads) are closed with a reason while
-// the other clients keep their stream.
+// the other clients keep their stream; --web-listen serves the page and lets its own origin in.
 #include "session_harness.hpp"
+#include "web_files.hpp"
 
+#include <asio/read.hpp>
+#include <asio/write.hpp>
 #include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 using namespace ocean::server;
 using namespace ocean::server::test;
@@ -21,6 +28,18 @@ ServerConfig websocket_config() {
 }
 
 proto::Hello tcp_hello() { return proto::Hello{1, 0, ocean::wire::Transport::tcp, "ws-test"}; }
+
+// One blocking HTTP/1.1 GET over loopback; the whole response (the server closes).
+std::string http_get(std::uint16_t port, const std::string& target) {
+  asio::io_context context;
+  asio::ip::tcp::socket socket(context);
+  socket.connect({asio::ip::make_address("127.0.0.1"), port});
+  asio::write(socket, asio::buffer("GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"));
+  std::string response;
+  std::error_code error;
+  asio::read(socket, asio::dynamic_buffer(response), error);
+  return response;
+}
 
 }  // namespace
 
@@ -141,4 +160,32 @@ TEST_CASE("hostile WebSocket clients are closed with a reason while the others k
   ServerMetrics& metrics = harness.server().metrics();
   CHECK(metrics.rejects("oversized").value() == 1);  // the giant; the leaver's 1009 was its own
   CHECK(metrics.rejects("unexpected_message").value() >= 2);  // the text and the unmasked frame
+}
+
+TEST_CASE("the page server (--web-listen) serves the page, names the WebSocket port, and lets its origin in") {
+  const auto root = std::filesystem::temp_directory_path() / ("ocean-web-root-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(root);
+  for (const std::string& name : WebFiles::names()) std::ofstream(root / name) << "<!-- " << name << " -->";
+  ServerConfig config = websocket_config();
+  config.web_listen = ListenAddress{"127.0.0.1", 0};
+  config.web_root = root.string();
+  SessionHarness harness(config);
+  REQUIRE(harness.server().web_port());
+  const std::uint16_t web = *harness.server().web_port();
+  const std::string page = http_get(web, "/?connect=1");
+  CHECK(page.rfind("HTTP/1.1 200", 0) == 0);
+  CHECK(page.find("<!-- index.html -->") != std::string::npos);
+  CHECK(http_get(web, "/ocean-web.json").find("{\"ws_port\": " + std::to_string(*harness.server().ws_port()) + "}") !=
+        std::string::npos);
+  CHECK(http_get(web, "/../server.cpp").rfind("HTTP/1.1 404", 0) == 0);
+  // The page's origin as the browser names it (the host it reached the WebSocket by, the page's
+  // port) needs no --ws-origins entry; the same host's other ports and other names do not pass.
+  auto own = harness.ws_client("http://127.0.0.1:" + std::to_string(web));
+  auto other_port = harness.ws_client("http://127.0.0.1:" + std::to_string(web == 65535 ? web - 1 : web + 1));
+  auto other_name = harness.ws_client("http://localhost:" + std::to_string(web));
+  CHECK(own->ws_status == 101);
+  CHECK(other_port->ws_status == 403);
+  CHECK(other_name->ws_status == 403);
+  harness.stop();
+  std::filesystem::remove_all(root);
 }

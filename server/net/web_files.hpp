@@ -1,0 +1,36 @@
+// WebFiles: the browser viewer's files as --web-listen serves them - the page, its script and the
+// WebAssembly module, read once at startup from --web-root, plus /ocean-web.json telling the page
+// which port the WebSocket listener has. Only these names are served: no path from a request
+// ever reaches the file system.
+#pragma once
+
+#include "http_connection.hpp"
+#include "http_request_parser.hpp"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ocean::server {
+
+class WebFiles {
+ public:
+  // The files a web root must hold (the output of -DOCEAN_BUILD_WEB=ON).
+  static const std::vector<std::string>& names();
+  // Reads every file of names() from root; nullopt with error naming the first one missing.
+  static std::optional<WebFiles> load(const std::string& root, std::uint16_t ws_port, std::string& error);
+
+  HttpReply reply(const HttpRequest& request) const;
+  std::size_t total_bytes() const;
+
+ private:
+  std::map<std::string, HttpReply> replies_;  // by request target
+};
+
+// The first folder among --web-root's defaults (the build tree's web/, then the installed
+// share/ocean/web) that holds the page; empty when none does.
+std::string default_web_root();
+
+}  // namespace ocean::server

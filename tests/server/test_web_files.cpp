@@ -1,0 +1,69 @@
+// --web-listen's pieces: the fixed set of files it serves from memory, and the Origin rule that
+// lets its own page open a WebSocket under whatever name the browser used, and nobody else's.
+#include "web_files.hpp"
+#include "websocket_link.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+using namespace ocean::server;
+
+namespace {
+
+std::filesystem::path web_root_with(const std::vector<std::string>& names) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ocean-web-files-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  for (const std::string& name : names) std::ofstream(dir / name) << "contents of " << name;
+  return dir;
+}
+
+HttpRequest get(const std::string& target) { return {"GET", target, "HTTP/1.1"}; }
+
+}  // namespace
+
+TEST_CASE("WebFiles serves the page, its script and module with their types, and nothing else") {
+  const auto root = web_root_with(WebFiles::names());
+  std::string error;
+  const auto files = WebFiles::load(root.string(), 7701, error);
+  REQUIRE(files);
+  CHECK(files->reply(get("/")).body == "contents of index.html");
+  CHECK(files->reply(get("/")).content_type == "text/html; charset=utf-8");
+  CHECK(files->reply(get("/index.html")).body == "contents of index.html");
+  CHECK(files->reply(get("/ocean-web.js")).content_type == "text/javascript; charset=utf-8");
+  CHECK(files->reply(get("/ocean-web.wasm")).content_type == "application/wasm");
+  CHECK(files->reply(get("/ocean-web.json")).body == "{\"ws_port\": 7701}\n");
+  // Any other name - a file that exists in the folder, a path out of it - is 404.
+  std::ofstream(root / "secret.txt") << "not served";
+  for (const char* target : {"/secret.txt", "/../index.html", "/web/index.html", "index.html", "/INDEX.HTML"})
+    CHECK(files->reply(get(target)).status == 404);
+  std::filesystem::remove_all(root);
+}
+
+TEST_CASE("WebFiles names the first file a web root lacks") {
+  const auto root = web_root_with({"index.html", "viewer.js"});
+  std::string error;
+  CHECK_FALSE(WebFiles::load(root.string(), 1, error));
+  CHECK(error.find("ocean-web.js") != std::string::npos);
+  CHECK(error.find("OCEAN_BUILD_WEB") != std::string::npos);
+  std::filesystem::remove_all(root);
+}
+
+TEST_CASE("the server's own page opens a WebSocket under any host name; other pages do not") {
+  const OriginPolicy policy{{"https://ocean.example"}, 8080};
+  CHECK(policy.accepts("", "anything"));                                        // no Origin: not a browser
+  CHECK(policy.accepts("https://ocean.example", "10.0.0.2:7701"));              // the allow-list
+  CHECK(policy.accepts("http://10.0.0.2:8080", "10.0.0.2:7701"));               // the page, by address
+  CHECK(policy.accepts("http://sea.lan:8080", "sea.lan:7701"));                 // ... by name
+  CHECK(policy.accepts("http://[::1]:8080", "[::1]:7701"));                     // ... over IPv6
+  CHECK_FALSE(policy.accepts("http://evil.example:8080", "10.0.0.2:7701"));     // another site
+  CHECK_FALSE(policy.accepts("http://10.0.0.2:9000", "10.0.0.2:7701"));         // this host's other port
+  CHECK_FALSE(policy.accepts("http://10.0.0.2", "10.0.0.2:7701"));              // port 80 is not 8080
+  CHECK_FALSE(policy.accepts("ftp://10.0.0.2:8080", "10.0.0.2:7701"));
+  CHECK_FALSE(policy.accepts("http://10.0.0.2:8080", ""));                      // no Host: nothing to match
+  CHECK(OriginPolicy{{}, 80}.accepts("http://sea.lan", "sea.lan:7701"));        // default port, not written
+  CHECK_FALSE(OriginPolicy{{}, 0}.accepts("http://sea.lan:8080", "sea.lan:7701"));  // no page served
+}
