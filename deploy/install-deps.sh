@@ -11,6 +11,11 @@ packages=(
   libglfw3-dev libglm-dev libgles-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
   xvfb xauth gnuplot-nox python3-numpy python3-yaml python3-jsonschema procps
 )
+# The browser viewer (-DOCEAN_BUILD_WEB=ON) and its test in headless Chromium over WebDriver.
+# OCEAN_WEB=0 leaves them out (the server image's builder needs none of it).
+if [[ "${OCEAN_WEB:-1}" != 0 ]]; then
+  packages+=(emscripten chromium chromium-driver)
+fi
 if [[ "${OCEAN_SANITIZE:-}" == 1 || "${OCEAN_FUZZ:-}" == 1 ]]; then
   packages+=(clang libclang-rt-14-dev)
 fi

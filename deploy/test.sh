@@ -14,7 +14,8 @@ cd "$(dirname "$0")/.."
 ./deploy/install-deps.sh
 only=${OCEAN_SANITIZE_ONLY:-}
 if [[ -z "$only" || "${OCEAN_SANITIZE:-}" != 1 ]]; then
-  ./deploy/build.sh
+  # With the browser viewer (Emscripten) and its test in headless Chromium (tests/web).
+  ./deploy/build.sh -DOCEAN_BUILD_WEB=ON
   build_dir=${OCEAN_BUILD_DIR:-build}
   ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" --timeout 600
   if [[ "${OCEAN_CONTAINER:-}" == 1 ]]; then

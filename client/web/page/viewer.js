@@ -1,0 +1,76 @@
+// The page around ocean-web.wasm: the connect box, the canvas size, and a report a test can read.
+// Query parameters: ws=URL (the server's WebSocket; default: the port /ocean-web.json names, on
+// this page's host), profile=ID, connect=1 (connect at once), record=1 (keep the received
+// messages), ui=0 (no panel or help over the sea, for screenshots), report=SECONDS (after that
+// long, write the report into #report and stop).
+'use strict';
+const params = new URLSearchParams(location.search);
+const canvas = document.getElementById('ocean');
+const statusLine = document.getElementById('status');
+
+function fitCanvas() {
+  const ratio = window.devicePixelRatio || 1;
+  canvas.width = Math.round(canvas.clientWidth * ratio);
+  canvas.height = Math.round(canvas.clientHeight * ratio);
+}
+window.addEventListener('resize', fitCanvas);
+fitCanvas();
+if (params.get('ui') === '0')
+  for (const id of ['panel', 'help']) document.getElementById(id).hidden = true;
+
+async function defaultServer() {
+  if (params.get('ws')) return params.get('ws');
+  try {
+    const config = await (await fetch('ocean-web.json')).json();
+    if (config.ws_port) return `ws://${location.hostname}:${config.ws_port}/`;
+  } catch (e) { /* opened from a file or another server: the user types the address */ }
+  return '';
+}
+
+function report() {
+  return JSON.parse(Module.UTF8ToString(Module.ccall('ocean_web_report', 'number', [], [])));
+}
+
+function connect() {
+  const url = document.getElementById('server').value.trim();
+  const profile = Number(document.getElementById('profile').value);
+  if (!url) { statusLine.textContent = 'type the server\'s WebSocket address, e.g. ws://host:8082/'; return; }
+  Module.ccall('ocean_web_connect', null, ['string', 'number'], [url, profile]);
+  canvas.focus();
+}
+
+function showStatus() {
+  const r = report();
+  let text = `${r.state}`;
+  if (r.profile) text += ` · ${r.profile} ${r.grid}² · ${r.frames} frames · ${r.decode_ms_per_frame.toFixed(2)} ms decode`;
+  if (r.state === 'closed' && r.close_reason) text += ` · ${r.close_reason}`;
+  statusLine.textContent = text;
+}
+
+function finishReport() {
+  const r = report();
+  if (params.get('record') === '1')
+    r.messages = Module.UTF8ToString(Module.ccall('ocean_web_recorded_messages', 'number', [], []));
+  Module.ccall('ocean_web_disconnect', null, [], []);
+  const out = document.getElementById('report');
+  out.textContent = JSON.stringify(r);
+  out.hidden = false;
+  document.title = 'ocean-web report ready';
+}
+
+var Module = {
+  canvas,
+  print: (text) => console.log(text),
+  printErr: (text) => console.warn(text),
+  onRuntimeInitialized: async () => {
+    document.getElementById('server').value = await defaultServer();
+    if (params.get('profile') !== null) document.getElementById('profile').value = params.get('profile');
+    document.getElementById('connect').addEventListener('submit', (e) => { e.preventDefault(); connect(); });
+    statusLine.textContent = 'ready';
+    setInterval(showStatus, 500);
+    if (params.get('record') === '1') Module.ccall('ocean_web_record', null, ['number'], [1]);
+    if (params.get('connect') === '1') connect();
+    const seconds = Number(params.get('report') || 0);
+    if (seconds > 0) setTimeout(finishReport, seconds * 1000);
+  },
+};

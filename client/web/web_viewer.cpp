@@ -1,0 +1,221 @@
+// WebViewer: session, timeline and drawing on the browser's thread.
+#include "web_viewer.hpp"
+
+#include <emscripten/emscripten.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "base64.hpp"
+#include "common/json_writer.hpp"
+#include "height_hash.hpp"
+#include "profile.hpp"
+
+namespace ocean::web {
+
+namespace {
+constexpr std::size_t kHashesKept = 600;                   // 20 s of a 30 Hz stream
+constexpr std::size_t kRecordLimitBytes = 8u << 20;        // a test records seconds, not hours
+constexpr double kEyeHeightM = 10.0, kPitchDeg = -6.0;      // the native viewers' default pose
+}  // namespace
+
+double WebViewer::now() const { return emscripten_get_now() / 1000.0; }
+
+bool WebViewer::init(std::string& error) {
+  render::RendererDesc desc;
+  desc.sky_dir = "/sky";  // embedded in the module (--embed-file)
+  if (!renderer_.init(desc)) {
+    error = renderer_.error();
+    return false;
+  }
+  if (!hud_.init(error)) return false;
+  camera_.position = {0.0, kEyeHeightM, 0.0};
+  camera_.pitch_rad = static_cast<float>(kPitchDeg * 3.14159265358979 / 180.0);
+  camera_.far_m = std::max(camera_.far_m, renderer_.desc().view_distance_m * 1.6f);
+  return true;
+}
+
+void WebViewer::connect(const std::string& url, std::uint8_t profile_id) {
+  disconnect();
+  client::ClientSessionConfig config;
+  config.profile_id = profile_id;
+  config.transport = wire::Transport::tcp;  // a browser has no UDP; the WebSocket is the TCP path
+  config.client_name = "ocean-web";
+  client::ClientSessionEvents events;
+  events.send_tcp = [this](std::span<const std::uint8_t> bytes) { socket_.send(bytes); };
+  events.on_welcome = [this](const protocol::Welcome& welcome) { on_welcome(welcome); };
+  events.on_frame = [this](const codec::ReconstructedFrame& frame, Tick tick) { on_frame(frame, tick); };
+  events.on_closed = [this](const std::string& why) { close_reason_ = why; };
+  session_ = std::make_unique<client::ClientSession>(config, std::move(events));
+  state_ = "connecting";
+  close_reason_.clear();
+  ++connects_;
+  BrowserSocketEvents socket_events;
+  socket_events.on_open = [this] {
+    if (session_) session_->start(now());
+  };
+  socket_events.on_message = [this](std::span<const std::uint8_t> bytes) { on_message(bytes); };
+  socket_events.on_closed = [this](const std::string& why) { end_session(why); };
+  std::string error;
+  if (!socket_.open(url, std::move(socket_events), error)) end_session(error);
+}
+
+void WebViewer::disconnect() {
+  if (session_ && socket_.is_open()) session_->quit(now());  // Bye goes out before the close
+  socket_.close();
+  if (session_) end_session("disconnected");
+}
+
+void WebViewer::end_session(const std::string& why) {
+  if (!session_) return;
+  if (close_reason_.empty()) close_reason_ = why;
+  session_.reset();
+  socket_.close();
+  state_ = "closed";
+  std::fprintf(stderr, "ocean-web: session ended: %s\n", close_reason_.c_str());
+}
+
+void WebViewer::on_message(std::span<const std::uint8_t> bytes) {
+  if (!session_) return;
+  bytes_in_ += bytes.size();
+  ++messages_in_;
+  if (recording_ && recorded_bytes_ + bytes.size() <= kRecordLimitBytes) {
+    recorded_.emplace_back(bytes.begin(), bytes.end());
+    recorded_bytes_ += bytes.size();
+  }
+  const std::uint64_t before = session_->stats().frames_complete;
+  frame_callback_ms_ = 0.0;
+  const double t0 = emscripten_get_now();
+  session_->on_tcp_message(bytes, now());
+  // Verification and decoding; not what on_frame does with the result (jitter buffer, hash).
+  const double spent_ms = emscripten_get_now() - t0 - frame_callback_ms_;
+  if (!session_) return;
+  const std::uint64_t completed = session_->stats().frames_complete - before;
+  if (completed > 0) decode_ms_ += spent_ms;  // handling of messages that carry no frame is not decode
+  if (session_->state() == client::ClientSession::State::closed) end_session(session_->close_reason());
+}
+
+void WebViewer::on_welcome(const protocol::Welcome& welcome) {
+  const Profile* profile = find_profile(welcome.stream.profile_id);
+  profile_ = profile ? std::string(profile->name) : "profile " + std::to_string(welcome.stream.profile_id);
+  client::FrameTimelineConfig config;
+  if (welcome.tick_period_s > 0) config.tick_period_s = welcome.tick_period_s;
+  config.send_interval_s = welcome.stream.rate_hz > 0 ? 1.0 / welcome.stream.rate_hz : config.tick_period_s;
+  timeline_ = client::FrameTimeline(config);
+  ticks_per_frame_ = std::max(1.0, std::round(config.send_interval_s / config.tick_period_s));
+  session_frames_ = 0;
+  if (welcome.stream.grid != grid_) {
+    height_.clear(), slope_x_.clear(), slope_z_.clear();
+    if (!renderer_.set_grid(welcome.stream.grid, static_cast<float>(welcome.stream.patch_x_m),
+                            static_cast<float>(welcome.stream.patch_z_m))) {
+      end_session("stream grid " + std::to_string(welcome.stream.grid) + ": " + renderer_.error());
+      return;
+    }
+    grid_ = welcome.stream.grid;
+  }
+  state_ = "streaming";
+}
+
+void WebViewer::on_frame(const codec::ReconstructedFrame& frame, Tick tick) {
+  const double t0 = emscripten_get_now();
+  ++frames_;
+  if (session_frames_++ == 0) first_tick_ = last_tick_ = tick;
+  first_tick_ = std::min(first_tick_, tick), last_tick_ = std::max(last_tick_, tick);
+  timeline_.push(frame, tick, now());
+  hashes_.push_back({tick, client::hash_heights(frame.height)});
+  if (hashes_.size() > kHashesKept) hashes_.pop_front();
+  frame_callback_ms_ += emscripten_get_now() - t0;
+}
+
+double WebViewer::loss_percent() const {
+  if (session_frames_ < 2) return 0.0;
+  const double expected = std::floor(static_cast<double>(last_tick_ - first_tick_) / ticks_per_frame_ + 0.5) + 1.0;
+  return std::max(0.0, 100.0 * (1.0 - static_cast<double>(session_frames_) / expected));
+}
+
+void WebViewer::touches(const std::vector<render::TouchPoint>& down) {
+  render::apply_touch_motion(camera_, touch_.update(down));
+}
+
+void WebViewer::frame(double now_s, int width, int height) {
+  const double dt = last_frame_s_ > 0.0 ? std::min(now_s - last_frame_s_, 0.25) : 0.0;
+  last_frame_s_ = now_s;
+  if (session_ && session_->next_due() <= now_s) {
+    session_->update(now_s);
+    if (session_ && session_->state() == client::ClientSession::State::closed) end_session(session_->close_reason());
+  }
+
+  render::FlyInput input = keys_;
+  input.look_dx_px = look_dx_, input.look_dy_px = look_dy_;
+  look_dx_ = look_dy_ = 0.0;
+  render::apply_fly_input(camera_, input, dt);
+
+  const std::size_t samples = static_cast<std::size_t>(grid_) * grid_;
+  const client::TimelineSample sample = timeline_.sample(now_s);
+  if (sample.status != client::TimelineSample::Status::empty && samples > 0) {
+    client::FrameTimeline::blend(sample, height_, slope_x_, slope_z_);
+    if (height_.size() == samples) {
+      const bool slopes = slope_x_.size() == samples && slope_z_.size() == samples;
+      renderer_.upload_frame(height_.data(), slopes ? slope_x_.data() : nullptr, slopes ? slope_z_.data() : nullptr);
+      ++uploads_;
+    }
+  }
+  renderer_.draw(camera_, width, height, now_s);
+
+  if (fps_window_start_s_ < 0.0) fps_window_start_s_ = now_s;
+  ++fps_frames_;
+  if (now_s - fps_window_start_s_ >= 0.5) {
+    fps_ = static_cast<double>(fps_frames_) / (now_s - fps_window_start_s_);
+    fps_frames_ = 0;
+    fps_window_start_s_ = now_s;
+    kbps_ = kbps_at_s_ > 0.0 ? static_cast<double>(bytes_in_ - kbps_bytes_) * 8.0 / 1000.0 / (now_s - kbps_at_s_) : 0.0;
+    kbps_bytes_ = bytes_in_;
+    kbps_at_s_ = now_s;
+  }
+  if (hud_on_) {
+    render::HudStats stats;
+    stats.fps = fps_;
+    stats.kbps = kbps_;
+    // As the native viewer shows it: the jitter buffer's delay plus half the round trip.
+    stats.latency_ms = 1000.0 * (timeline_.adaptive_delay_s() + (session_ ? session_->stats().rtt_smoothed_s / 2.0 : 0.0));
+    stats.loss_percent = loss_percent();
+    stats.profile = profile_.empty() ? state_ : profile_;
+    char extra[160];
+    std::snprintf(extra, sizeof extra, "%s  decode %.2f ms/frame  frames %llu", state_.c_str(),
+                  frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, static_cast<unsigned long long>(frames_));
+    stats.extra = extra;
+    hud_.draw(stats, width, height);
+  }
+  ++rendered_;
+}
+
+std::string WebViewer::report() const {
+  common::JsonWriter json(common::JsonWriter::Style::compact);
+  json.text("state", state_).text("close_reason", close_reason_).text("profile", profile_).integer("grid", grid_);
+  json.integer("connects", connects_).integer("messages", messages_in_).integer("bytes", bytes_in_);
+  json.integer("frames", frames_).integer("uploads", uploads_).integer("rendered", rendered_);
+  json.fixed("decode_ms_per_frame", frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, 4);
+  json.fixed("fps", fps_, 2).fixed("kbps", kbps_, 2).fixed("loss_percent", loss_percent(), 2);
+  if (session_) {
+    const client::ClientStats& s = session_->stats();
+    json.integer("keyframes", s.keyframes_complete).integer("rejected", s.rejected_total()).integer("keyframe_requests", s.keyframe_requests_sent);
+  }
+  std::string list = "[";
+  for (const FrameHash& h : hashes_) {
+    char entry[48];
+    std::snprintf(entry, sizeof entry, "%s[%lld,\"%016llx\"]", list.size() > 1 ? "," : "",
+                  static_cast<long long>(h.tick), static_cast<unsigned long long>(h.hash));
+    list += entry;
+  }
+  json.raw("hashes", list + "]");
+  return json.str();
+}
+
+std::string WebViewer::recorded_messages() const {
+  std::string out;
+  for (const auto& message : recorded_) out += base64_encode(message) + "\n";
+  return out;
+}
+
+}  // namespace ocean::web

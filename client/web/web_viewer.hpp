@@ -1,0 +1,98 @@
+// WebViewer: the browser viewer's whole state on the page's one thread - a ClientSession over a
+// BrowserSocket, the FrameTimeline jitter buffer, and the renderer, HUD and camera the native
+// viewers draw with. The page's JavaScript calls connect/disconnect and reads report(); the
+// browser calls frame() once per animation frame.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "browser_socket.hpp"
+#include "client/render/camera.hpp"
+#include "client/render/camera_controls.hpp"
+#include "client/render/hud_overlay.hpp"
+#include "client/render/renderer.hpp"
+#include "client/render/touch_controls.hpp"
+#include "client_session.hpp"
+#include "frame_timeline.hpp"
+
+namespace ocean::web {
+
+// Per-tick fingerprints of the decoded heights, so a test can hold them against a native decoder
+// fed the same messages.
+struct FrameHash {
+  Tick tick = 0;
+  std::uint64_t hash = 0;
+};
+
+class WebViewer {
+ public:
+  // Needs the canvas's WebGL 1 context current. False with a reason.
+  bool init(std::string& error);
+  // profile_id 0: the server's choice. Ends any session first.
+  void connect(const std::string& url, std::uint8_t profile_id);
+  void disconnect();
+  // Keeps each received message (for a test's replay through the native decoder).
+  void set_recording(bool on) { recording_ = on; }
+  void set_hud(bool on) { hud_on_ = on; }
+
+  // One animation frame: protocol timers, input, the timeline's blend at now, draw.
+  void frame(double now_s, int width, int height);
+
+  // Input, gathered by the page's event handlers.
+  render::FlyInput& keys() { return keys_; }
+  void look(double dx_px, double dy_px) { look_dx_ += dx_px, look_dy_ += dy_px; }
+  void touches(const std::vector<render::TouchPoint>& down);
+
+  // JSON: state, stream, counts, decode ms per frame, fps, and the recent frame hashes.
+  std::string report() const;
+  // The recorded messages, one base64 line each, in arrival order.
+  std::string recorded_messages() const;
+
+ private:
+  void on_welcome(const protocol::Welcome& welcome);
+  void on_frame(const codec::ReconstructedFrame& frame, Tick tick);
+  void on_message(std::span<const std::uint8_t> bytes);
+  void end_session(const std::string& why);
+  double now() const;
+  double loss_percent() const;
+
+  render::Renderer renderer_;
+  render::HudOverlay hud_;
+  render::Camera camera_;
+  render::TouchGesture touch_;
+  render::FlyInput keys_;
+  double look_dx_ = 0.0, look_dy_ = 0.0;
+  bool hud_on_ = true;
+
+  BrowserSocket socket_;
+  std::unique_ptr<client::ClientSession> session_;
+  client::FrameTimeline timeline_;
+  std::vector<float> height_, slope_x_, slope_z_;
+  std::string state_ = "idle";  // idle, connecting, streaming, closed
+  std::string close_reason_;
+  std::string profile_;
+  int grid_ = 0;
+  std::uint64_t connects_ = 0;
+
+  // Figures for the HUD and report().
+  std::uint64_t bytes_in_ = 0, messages_in_ = 0, frames_ = 0, uploads_ = 0, rendered_ = 0;
+  double decode_ms_ = 0.0;  // message handling (verify + decode) for the frames counted in frames_
+  double frame_callback_ms_ = 0.0;  // on_frame's own time within the message being handled
+  double last_frame_s_ = 0.0, fps_ = 0.0, fps_window_start_s_ = -1.0, kbps_ = 0.0, kbps_at_s_ = 0.0;
+  std::uint64_t fps_frames_ = 0, kbps_bytes_ = 0;
+  // Loss: frames the ticks say were sent (one per ticks_per_frame_) against frames received.
+  Tick first_tick_ = 0, last_tick_ = 0;
+  std::uint64_t session_frames_ = 0;
+  double ticks_per_frame_ = 1.0;
+  std::deque<FrameHash> hashes_;
+  bool recording_ = false;
+  std::vector<std::vector<std::uint8_t>> recorded_;
+  std::size_t recorded_bytes_ = 0;
+};
+
+}  // namespace ocean::web

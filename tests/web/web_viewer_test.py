@@ -1,0 +1,274 @@
+#!/usr/bin/python3
+"""The browser viewer in headless Chromium against a real ocean-server.
+
+The server serves the page itself (--web-listen) and streams over its WebSocket (--ws-listen).
+Chromium is driven over WebDriver (chromedriver, plain HTTP + JSON). The test checks that the page
+received and decoded frames, that every frame it decoded is bit for bit what the native decoder
+makes of the same messages (per-tick hashes of the heights; ocean-web-replay), that the
+screenshot shows sky above and water below, and prints the page's figures as JSON: frames per
+second at 1280x720 and decode milliseconds per frame.
+
+Exit status: 0 pass, 1 a check failed, 2 bad arguments or a tool missing.
+"""
+import argparse
+import base64
+import json
+import os
+import re
+import shutil
+import socket
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.request
+import zlib
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def http(method, url, body=None, timeout=60):
+    data = json.dumps(body).encode() if body is not None else None
+    request = urllib.request.Request(url, data=data, method=method, headers={"Content-Type": "application/json"})
+    with urllib.request.urlopen(request, timeout=timeout) as reply:
+        return json.loads(reply.read().decode())
+
+
+def start_server(build, log_path):
+    args = [os.path.join(build, "server", "ocean-server"), "--listen", "127.0.0.1:0", "--ws-listen", "127.0.0.1:0",
+            "--web-listen", "127.0.0.1:0", "--metrics-listen", "127.0.0.1:0", "--profiles", "mobile,lite"]
+    log = open(log_path, "w")
+    server = subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT)
+    deadline = time.time() + 30
+    while time.time() < deadline:
+        text = open(log_path).read()
+        match = re.search(r"listening tcp=\S+ udp=\S+ ws=\S+:(\d+) metrics=\S+ web=\S+:(\d+)", text)
+        if match:
+            return server, int(match.group(1)), int(match.group(2))
+        if server.poll() is not None:
+            break
+        time.sleep(0.1)
+    server.kill()
+    sys.exit(f"FAIL: ocean-server did not report its ports:\n{open(log_path).read()}")
+
+
+class Browser:
+    """One headless Chromium session over chromedriver's WebDriver HTTP API."""
+
+    def __init__(self, chromium, chromedriver, profile_dir):
+        self.port = free_port()
+        self.driver = subprocess.Popen([chromedriver, f"--port={self.port}"], stdout=subprocess.DEVNULL,
+                                       stderr=subprocess.DEVNULL)
+        self.base = f"http://127.0.0.1:{self.port}"
+        deadline = time.time() + 30
+        while True:
+            try:
+                if http("GET", self.base + "/status", timeout=2)["value"]["ready"]:
+                    break
+            except OSError:
+                pass
+            if time.time() > deadline:
+                self.driver.kill()
+                sys.exit("FAIL: chromedriver did not start")
+            time.sleep(0.2)
+        options = {"binary": chromium,
+                   "args": ["--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                            "--window-size=1280,720", "--disable-dev-shm-usage", f"--user-data-dir={profile_dir}",
+                            "--autoplay-policy=no-user-gesture-required"]}
+        reply = http("POST", self.base + "/session",
+                     {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": options}}})
+        self.session = f"{self.base}/session/{reply['value']['sessionId']}"
+
+    def open(self, url):
+        http("POST", self.session + "/url", {"url": url})
+
+    def set_viewport(self, width, height):
+        """--window-size sizes the window, whose frame takes some of it: grow it by that much."""
+        frame_w, frame_h = self.run("return [window.outerWidth - window.innerWidth, window.outerHeight - window.innerHeight];")
+        http("POST", self.session + "/window/rect", {"width": width + frame_w, "height": height + frame_h})
+        return self.run("return [window.innerWidth, window.innerHeight];")
+
+    def run(self, script):
+        return http("POST", self.session + "/execute/sync", {"script": script, "args": []})["value"]
+
+    def screenshot(self):
+        return base64.b64decode(http("GET", self.session + "/screenshot")["value"])
+
+    def close(self):
+        try:
+            http("DELETE", self.session, timeout=10)
+        except OSError:
+            pass
+        self.driver.terminate()
+        try:
+            self.driver.wait(10)
+        except subprocess.TimeoutExpired:
+            self.driver.kill()
+
+
+REPORT = ("return (typeof Module !== 'undefined' && Module.calledRun) ? "
+          "Module.UTF8ToString(Module.ccall('ocean_web_report', 'number', [], [])) : null;")
+MESSAGES = "return Module.UTF8ToString(Module.ccall('ocean_web_recorded_messages', 'number', [], []));"
+
+
+def decode_png(data):
+    """8-bit RGB or RGBA, not interlaced (what Chromium writes): rows of (r, g, b) tuples."""
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        raise ValueError("not a PNG")
+    pos, idat, width = 8, b"", 0
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        chunk = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", chunk)
+            if depth != 8 or colour not in (2, 6) or interlace:
+                raise ValueError(f"PNG depth {depth} colour type {colour} interlace {interlace} not handled")
+            channels = 4 if colour == 6 else 3
+        elif kind == b"IDAT":
+            idat += chunk
+        pos += 12 + length
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows, previous = [], bytearray(stride)
+    for y in range(height):
+        filter_type = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            left = line[i - channels] if i >= channels else 0
+            up = previous[i]
+            up_left = previous[i - channels] if i >= channels else 0
+            if filter_type == 1:
+                line[i] = (line[i] + left) & 255
+            elif filter_type == 2:
+                line[i] = (line[i] + up) & 255
+            elif filter_type == 3:
+                line[i] = (line[i] + (left + up) // 2) & 255
+            elif filter_type == 4:
+                p = left + up - up_left
+                pa, pb, pc = abs(p - left), abs(p - up), abs(p - up_left)
+                line[i] = (line[i] + (left if pa <= pb and pa <= pc else up if pb <= pc else up_left)) & 255
+        rows.append(line)
+        previous = line
+    return width, height, channels, rows
+
+
+def mean_rgb(rows, channels, first, last):
+    total, count = [0, 0, 0], 0
+    for line in rows[first:last]:
+        for x in range(0, len(line), channels * 4):  # every fourth pixel is plenty
+            for c in range(3):
+                total[c] += line[x + c]
+            count += 1
+    return [t / count / 255.0 for t in total]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--build", required=True, help="the native build tree (with web/ from -DOCEAN_BUILD_WEB=ON)")
+    parser.add_argument("--chromium", default="chromium")
+    parser.add_argument("--chromedriver", default="chromedriver")
+    parser.add_argument("--profile", type=int, default=1, help="profile id (1 mobile, 4 lite)")
+    parser.add_argument("--seconds", type=float, default=6.0, help="how long the frame rate is measured")
+    parser.add_argument("--screenshot", default="", help="where to keep the screenshot (PNG)")
+    args = parser.parse_args()
+    for tool in (args.chromium, args.chromedriver):
+        if not shutil.which(tool):
+            print(f"web_viewer_test: {tool} not found", file=sys.stderr)
+            return 2
+    chromium, chromedriver = shutil.which(args.chromium), shutil.which(args.chromedriver)  # chromedriver wants a path
+
+    work = tempfile.mkdtemp(prefix="ocean-web-test-")
+    failures = []
+    server, ws_port, web_port = start_server(args.build, os.path.join(work, "server.log"))
+    browser = None
+    try:
+        browser = Browser(chromium, chromedriver, os.path.join(work, "chromium"))
+        url = f"http://127.0.0.1:{web_port}/index.html?connect=1&record=1&ui=0&profile={args.profile}"
+        browser.open(url)
+        viewport = browser.set_viewport(1280, 720)
+        if viewport != [1280, 720]:
+            failures.append(f"the page got a {viewport[0]}x{viewport[1]} viewport, not 1280x720")
+        # Streaming: wait for a few seconds of frames.
+        deadline, report = time.time() + 90, None
+        while time.time() < deadline:
+            text = browser.run(REPORT)
+            report = json.loads(text) if text else None
+            if report and (report["frames"] >= 90 or report["state"] == "closed"):
+                break
+            time.sleep(0.5)
+        if not report or report["frames"] < 90:
+            failures.append(f"the page decoded too few frames: {report}")
+            raise RuntimeError
+        # Frame rate over a window of wall time, as the page counts its animation frames.
+        first, t0 = report, time.time()
+        time.sleep(args.seconds)
+        report = json.loads(browser.run(REPORT))
+        fps = (report["rendered"] - first["rendered"]) / (time.time() - t0)
+        png = browser.screenshot()
+        if args.screenshot:
+            with open(args.screenshot, "wb") as f:
+                f.write(png)
+        messages = browser.run(MESSAGES)
+
+        # The WebAssembly decoder against the native one, on the same bytes.
+        stream = b"".join(base64.b64decode(line) for line in messages.split("\n") if line)
+        recorded = os.path.join(work, "messages.bin")
+        with open(recorded, "wb") as f:
+            f.write(stream)
+        replay = subprocess.run([os.path.join(args.build, "tests", "web", "ocean-web-replay"), recorded],
+                                capture_output=True, text=True, timeout=120)
+        native = dict(line.split() for line in replay.stdout.splitlines())
+        page = {str(tick): digest for tick, digest in report["hashes"]}
+        compared = [tick for tick in page if tick in native]
+        mismatched = [tick for tick in compared if page[tick] != native[tick]]
+        if replay.returncode != 0:
+            failures.append(f"ocean-web-replay failed: {replay.stderr.strip()}")
+        if len(compared) < 90 or len(compared) < len(page):
+            failures.append(f"only {len(compared)} of the page's {len(page)} frames were found in the native replay")
+        if mismatched:
+            failures.append(f"{len(mismatched)} frames differ from the native decoder, first at tick {mismatched[0]}")
+
+        width, height, channels, rows = decode_png(png)
+        sky = mean_rgb(rows, channels, 0, height // 10)
+        water = mean_rgb(rows, channels, height * 8 // 10, height)
+        if not (sky[2] > 0.6 and sky[2] >= sky[0]):
+            failures.append(f"no sky at the top of the picture: mean rgb {sky}")
+        if not (sum(water) < 0.7 * sum(sky) and water[2] > water[0]):
+            failures.append(f"no water at the bottom of the picture: mean rgb {water} (sky {sky})")
+        if (width, height) != (1280, 720):
+            failures.append(f"screenshot is {width}x{height}, not 1280x720")
+        if report["rejected"] != 0:
+            failures.append(f"the page rejected {report['rejected']} messages")
+
+        print(json.dumps({"profile": report["profile"], "grid": report["grid"], "frames": report["frames"],
+                          "keyframes": report["keyframes"], "fps": round(fps, 2),
+                          "decode_ms_per_frame": report["decode_ms_per_frame"], "kbps": report["kbps"],
+                          "frames_compared_with_native": len(compared), "mismatched": len(mismatched),
+                          "sky_rgb": [round(v, 3) for v in sky], "water_rgb": [round(v, 3) for v in water],
+                          "screenshot": args.screenshot}))
+    except RuntimeError:
+        pass
+    finally:
+        if browser:
+            browser.close()
+        server.terminate()
+        try:
+            server.wait(10)
+        except subprocess.TimeoutExpired:
+            server.kill()
+    if failures:
+        for failure in failures:
+            print("FAIL:", failure)
+        print(open(os.path.join(work, "server.log")).read()[-3000:])
+        return 1
+    shutil.rmtree(work, ignore_errors=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
