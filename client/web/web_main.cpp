@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/json_writer.hpp"
 #include "web_viewer.hpp"
 
 namespace {
@@ -17,11 +18,22 @@ constexpr const char* kCanvas = "#ocean";
 ocean::web::WebViewer* viewer = nullptr;
 bool dragging = false;
 std::string text_out;  // what the last exported call that returns text returned
+std::string startup_error;  // why there is no viewer (no WebGL, the renderer refused)
 
 EM_BOOL on_mouse(int type, const EmscriptenMouseEvent* e, void*) {
-  if (type == EMSCRIPTEN_EVENT_MOUSEDOWN) dragging = true;
+  if (type == EMSCRIPTEN_EVENT_MOUSEDOWN) {
+    dragging = true;
+    return EM_FALSE;  // the browser's default still gives the canvas the keyboard focus
+  }
   if (type == EMSCRIPTEN_EVENT_MOUSEUP) dragging = false;
   if (type == EMSCRIPTEN_EVENT_MOUSEMOVE && dragging && (e->buttons & 1)) viewer->look(e->movementX, e->movementY);
+  return EM_TRUE;
+}
+
+// Keys held when the canvas loses focus never see their keyup: let go of them all.
+EM_BOOL on_blur(int, const EmscriptenFocusEvent*, void*) {
+  viewer->keys() = {};
+  dragging = false;
   return EM_TRUE;
 }
 
@@ -67,17 +79,24 @@ void frame() {
 
 extern "C" {
 
+// Each call is a no-op (or reports the failure) when main() found no WebGL and made no viewer.
 EMSCRIPTEN_KEEPALIVE void ocean_web_connect(const char* url, int profile_id) {
-  viewer->connect(url, static_cast<std::uint8_t>(profile_id));
+  if (viewer) viewer->connect(url, static_cast<std::uint8_t>(profile_id));
 }
-EMSCRIPTEN_KEEPALIVE void ocean_web_disconnect() { viewer->disconnect(); }
-EMSCRIPTEN_KEEPALIVE void ocean_web_record(int on) { viewer->set_recording(on != 0); }
+EMSCRIPTEN_KEEPALIVE void ocean_web_disconnect() {
+  if (viewer) viewer->disconnect();
+}
+EMSCRIPTEN_KEEPALIVE void ocean_web_record(int on) {
+  if (viewer) viewer->set_recording(on != 0);
+}
 EMSCRIPTEN_KEEPALIVE const char* ocean_web_report() {
-  text_out = viewer->report();
+  text_out = viewer ? viewer->report()
+                    : ocean::common::JsonWriter(ocean::common::JsonWriter::Style::compact)
+                          .text("state", "failed").text("close_reason", startup_error).str();
   return text_out.c_str();
 }
 EMSCRIPTEN_KEEPALIVE const char* ocean_web_recorded_messages() {
-  text_out = viewer->recorded_messages();
+  text_out = viewer ? viewer->recorded_messages() : "";
   return text_out.c_str();
 }
 
@@ -93,13 +112,15 @@ int main() {
   attributes.preserveDrawingBuffer = EM_TRUE;  // a screenshot reads what was drawn last
   const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_create_context(kCanvas, &attributes);
   if (context <= 0 || emscripten_webgl_make_context_current(context) != EMSCRIPTEN_RESULT_SUCCESS) {
-    std::fprintf(stderr, "ocean-web: this browser gives no WebGL 1 context\n");
+    startup_error = "this browser gives no WebGL 1 context";
+    std::fprintf(stderr, "ocean-web: %s\n", startup_error.c_str());
     return 1;
   }
   static ocean::web::WebViewer instance;
   std::string error;
   if (!instance.init(error)) {
-    std::fprintf(stderr, "ocean-web: renderer: %s\n", error.c_str());
+    startup_error = "renderer: " + error;
+    std::fprintf(stderr, "ocean-web: %s\n", startup_error.c_str());
     return 1;
   }
   viewer = &instance;
@@ -109,6 +130,7 @@ int main() {
   // On the canvas (it has a tabindex), so typing in the connect box moves nothing.
   emscripten_set_keydown_callback(kCanvas, nullptr, EM_TRUE, on_key);
   emscripten_set_keyup_callback(kCanvas, nullptr, EM_TRUE, on_key);
+  emscripten_set_blur_callback(kCanvas, nullptr, EM_TRUE, on_blur);
   emscripten_set_touchstart_callback(kCanvas, nullptr, EM_TRUE, on_touch);
   emscripten_set_touchmove_callback(kCanvas, nullptr, EM_TRUE, on_touch);
   emscripten_set_touchend_callback(kCanvas, nullptr, EM_TRUE, on_touch);

@@ -72,6 +72,7 @@ void WebViewer::end_session(const std::string& why) {
   if (close_reason_.empty()) close_reason_ = why;
   session_.reset();
   socket_.close();
+  pending_end_.clear();
   state_ = "closed";
   std::fprintf(stderr, "ocean-web: session ended: %s\n", close_reason_.c_str());
 }
@@ -80,7 +81,11 @@ void WebViewer::on_message(std::span<const std::uint8_t> bytes) {
   if (!session_) return;
   bytes_in_ += bytes.size();
   ++messages_in_;
-  if (recording_ && recorded_bytes_ + bytes.size() <= kRecordLimitBytes) {
+  if (recording_ && recorded_bytes_ + bytes.size() > kRecordLimitBytes) {
+    recording_ = false;  // stop at the first gap: a replay of later messages would lack their baselines
+    recording_full_ = true;
+  }
+  if (recording_) {
     recorded_.emplace_back(bytes.begin(), bytes.end());
     recorded_bytes_ += bytes.size();
   }
@@ -93,7 +98,8 @@ void WebViewer::on_message(std::span<const std::uint8_t> bytes) {
   if (!session_) return;
   const std::uint64_t completed = session_->stats().frames_complete - before;
   if (completed > 0) decode_ms_ += spent_ms;  // handling of messages that carry no frame is not decode
-  if (session_->state() == client::ClientSession::State::closed) end_session(session_->close_reason());
+  if (!pending_end_.empty()) end_session(pending_end_);
+  else if (session_->state() == client::ClientSession::State::closed) end_session(session_->close_reason());
 }
 
 void WebViewer::on_welcome(const protocol::Welcome& welcome) {
@@ -109,7 +115,8 @@ void WebViewer::on_welcome(const protocol::Welcome& welcome) {
     height_.clear(), slope_x_.clear(), slope_z_.clear();
     if (!renderer_.set_grid(welcome.stream.grid, static_cast<float>(welcome.stream.patch_x_m),
                             static_cast<float>(welcome.stream.patch_z_m))) {
-      end_session("stream grid " + std::to_string(welcome.stream.grid) + ": " + renderer_.error());
+      // Ended once on_tcp_message has returned: the session is still on the stack here.
+      pending_end_ = "stream grid " + std::to_string(welcome.stream.grid) + ": " + renderer_.error();
       return;
     }
     grid_ = welcome.stream.grid;
@@ -196,6 +203,7 @@ std::string WebViewer::report() const {
   json.integer("connects", connects_).integer("messages", messages_in_).integer("bytes", bytes_in_);
   json.integer("frames", frames_).integer("uploads", uploads_).integer("rendered", rendered_);
   json.fixed("decode_ms_per_frame", frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, 4);
+  json.boolean("recording_full", recording_full_);
   json.fixed("fps", fps_, 2).fixed("kbps", kbps_, 2).fixed("loss_percent", loss_percent(), 2);
   if (session_) {
     const client::ClientStats& s = session_->stats();

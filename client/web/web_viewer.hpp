@@ -75,6 +75,7 @@ class WebViewer {
   std::vector<float> height_, slope_x_, slope_z_;
   std::string state_ = "idle";  // idle, connecting, streaming, closed
   std::string close_reason_;
+  std::string pending_end_;  // set inside a session callback; the session ends after it returns
   std::string profile_;
   int grid_ = 0;
   std::uint64_t connects_ = 0;
@@ -90,7 +91,7 @@ class WebViewer {
   std::uint64_t session_frames_ = 0;
   double ticks_per_frame_ = 1.0;
   std::deque<FrameHash> hashes_;
-  bool recording_ = false;
+  bool recording_ = false, recording_full_ = false;
   std::vector<std::vector<std::uint8_t>> recorded_;
   std::size_t recorded_bytes_ = 0;
 };

@@ -1,5 +1,6 @@
 #include "metrics_http_server.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <system_error>
@@ -47,17 +48,27 @@ void MetricsHttpServer::do_accept() {
         if (!e && acceptor_.is_open()) do_accept();
       });
     }
-    if (!error && max_connections_ > 0 && connections_.size() >= max_connections_) {
+    if (!error) {
       std::error_code ignored;
-      const auto peer = socket.remote_endpoint(ignored);
-      if (on_refused_) on_refused_("http_busy", peer.address().to_string());
-      socket.close(ignored);
-    } else if (!error) {
-      auto connection = std::make_shared<HttpConnection>(
-          std::move(socket), handler_, [this](const std::shared_ptr<HttpConnection>& done) { connections_.erase(done); },
-          on_refused_);
-      connections_.insert(connection);
-      connection->start();
+      const asio::ip::address peer = socket.remote_endpoint(ignored).address();
+      // One host may hold a share of the connections only, so it cannot keep out everyone else.
+      const std::size_t per_host = max_connections_ > 0 ? std::max<std::size_t>(1, max_connections_ / 8) : 0;
+      if (max_connections_ > 0 && (connections_.size() >= max_connections_ || per_host_[peer] >= per_host)) {
+        if (per_host_[peer] == 0) per_host_.erase(peer);
+        if (on_refused_) on_refused_("http_busy", peer.to_string());
+        socket.close(ignored);
+      } else {
+        ++per_host_[peer];
+        auto connection = std::make_shared<HttpConnection>(
+            std::move(socket), handler_,
+            [this, peer](const std::shared_ptr<HttpConnection>& done) {
+              connections_.erase(done);
+              if (--per_host_[peer] == 0) per_host_.erase(peer);
+            },
+            on_refused_);
+        connections_.insert(connection);
+        connection->start();
+      }
     }
     do_accept();
   });

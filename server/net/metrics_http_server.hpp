@@ -11,6 +11,7 @@
 #include <asio/steady_timer.hpp>
 
 #include <memory>
+#include <map>
 #include <set>
 #include <string_view>
 
@@ -20,8 +21,8 @@ class MetricsHttpServer {
  public:
 
   // Binds at once; throws std::system_error naming the address when it cannot. max_connections
-  // (0: no limit) bounds the open connections, each of which may hold a whole reply; one more is
-  // closed at once and counted as http_busy.
+  // (0: no limit) bounds the open connections, each of which may hold a whole reply, and one host
+  // may hold an eighth of them; one more is closed at once and counted as http_busy.
   MetricsHttpServer(asio::io_context& context, const ListenAddress& address, HttpConnection::Handler handler,
                     std::size_t max_connections = 0, std::string_view purpose = "metrics");
 
@@ -39,6 +40,7 @@ class MetricsHttpServer {
   HttpConnection::RefusedCallback on_refused_;
   std::set<std::shared_ptr<HttpConnection>> connections_;
   std::size_t max_connections_ = 0;
+  std::map<asio::ip::address, std::size_t> per_host_;  // open connections by peer address
 };
 
 // Opens, configures (SO_REUSEADDR) and binds a listening TCP acceptor; used for every TCP listener.

@@ -10,8 +10,10 @@
 #include <asio/write.hpp>
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <unistd.h>
 
 using namespace ocean::server;
@@ -186,6 +188,20 @@ TEST_CASE("the page server (--web-listen) serves the page, names the WebSocket p
   CHECK(own->ws_status == 101);
   CHECK(other_port->ws_status == 403);
   CHECK(other_name->ws_status == 403);
+  // One host holds at most an eighth of the page listener's 64 connections: idle ones included.
+  {
+    asio::io_context context;
+    std::vector<asio::ip::tcp::socket> idle;
+    for (int i = 0; i < 8; ++i) {
+      idle.emplace_back(context);
+      idle.back().connect({asio::ip::make_address("127.0.0.1"), web});
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // accepted before the next
+    CHECK(http_get(web, "/").empty());  // closed at once
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the idle ones' closes are seen
+  CHECK(http_get(web, "/").rfind("HTTP/1.1 200", 0) == 0);
   harness.stop();
+  CHECK(harness.server().metrics().rejects("http_busy").value() == 1);
   std::filesystem::remove_all(root);
 }

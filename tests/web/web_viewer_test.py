@@ -22,6 +22,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import urllib.error
 import urllib.request
 import zlib
 
@@ -35,8 +36,11 @@ def free_port():
 def http(method, url, body=None, timeout=60):
     data = json.dumps(body).encode() if body is not None else None
     request = urllib.request.Request(url, data=data, method=method, headers={"Content-Type": "application/json"})
-    with urllib.request.urlopen(request, timeout=timeout) as reply:
-        return json.loads(reply.read().decode())
+    try:
+        with urllib.request.urlopen(request, timeout=timeout) as reply:
+            return json.loads(reply.read().decode())
+    except urllib.error.HTTPError as e:  # WebDriver's own message says what went wrong
+        raise OSError(f"{method} {url}: HTTP {e.code}: {e.read().decode(errors='replace')[:500]}") from None
 
 
 def start_server(build, log_path):
@@ -76,13 +80,20 @@ class Browser:
                 self.driver.kill()
                 sys.exit("FAIL: chromedriver did not start")
             time.sleep(0.2)
+        try:
+            self.session = self.start_session(chromium, profile_dir)
+        except Exception:
+            self.driver.kill()
+            raise
+
+    def start_session(self, chromium, profile_dir):
         options = {"binary": chromium,
                    "args": ["--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                             "--window-size=1280,720", "--disable-dev-shm-usage", f"--user-data-dir={profile_dir}",
                             "--autoplay-policy=no-user-gesture-required"]}
         reply = http("POST", self.base + "/session",
                      {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": options}}})
-        self.session = f"{self.base}/session/{reply['value']['sessionId']}"
+        return f"{self.base}/session/{reply['value']['sessionId']}"
 
     def open(self, url):
         http("POST", self.session + "/url", {"url": url})
@@ -198,10 +209,10 @@ def main():
         while time.time() < deadline:
             text = browser.run(REPORT)
             report = json.loads(text) if text else None
-            if report and (report["frames"] >= 90 or report["state"] == "closed"):
+            if report and (report.get("frames", 0) >= 90 or report["state"] in ("closed", "failed")):
                 break
             time.sleep(0.5)
-        if not report or report["frames"] < 90:
+        if not report or report.get("frames", 0) < 90 or report["state"] != "streaming":
             failures.append(f"the page decoded too few frames: {report}")
             raise RuntimeError
         # Frame rate over a window of wall time, as the page counts its animation frames.
@@ -226,6 +237,8 @@ def main():
         page = {str(tick): digest for tick, digest in report["hashes"]}
         compared = [tick for tick in page if tick in native]
         mismatched = [tick for tick in compared if page[tick] != native[tick]]
+        if report.get("recording_full"):
+            failures.append("the page's recording filled up: the replay lacks messages")
         if replay.returncode != 0:
             failures.append(f"ocean-web-replay failed: {replay.stderr.strip()}")
         if len(compared) < 90 or len(compared) < len(page):
@@ -242,17 +255,19 @@ def main():
             failures.append(f"no water at the bottom of the picture: mean rgb {water} (sky {sky})")
         if (width, height) != (1280, 720):
             failures.append(f"screenshot is {width}x{height}, not 1280x720")
-        if report["rejected"] != 0:
+        if report.get("rejected", 0) != 0:
             failures.append(f"the page rejected {report['rejected']} messages")
 
         print(json.dumps({"profile": report["profile"], "grid": report["grid"], "frames": report["frames"],
-                          "keyframes": report["keyframes"], "fps": round(fps, 2),
+                          "keyframes": report.get("keyframes"), "fps": round(fps, 2),
                           "decode_ms_per_frame": report["decode_ms_per_frame"], "kbps": report["kbps"],
                           "frames_compared_with_native": len(compared), "mismatched": len(mismatched),
                           "sky_rgb": [round(v, 3) for v in sky], "water_rgb": [round(v, 3) for v in water],
                           "screenshot": args.screenshot}))
     except RuntimeError:
-        pass
+        pass  # the failure is in failures already
+    except Exception as e:  # WebDriver refused something, the page threw: say what, with the server's log
+        failures.append(f"{type(e).__name__}: {e}")
     finally:
         if browser:
             browser.close()

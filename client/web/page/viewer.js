@@ -34,8 +34,19 @@ function report() {
 function connect() {
   const url = document.getElementById('server').value.trim();
   const profile = Number(document.getElementById('profile').value);
-  if (!url) { statusLine.textContent = 'type the server\'s WebSocket address, e.g. ws://host:8082/'; return; }
-  Module.ccall('ocean_web_connect', null, ['string', 'number'], [url, profile]);
+  let parsed = null;
+  try { parsed = new URL(url); } catch (e) { /* not a URL: said below */ }
+  if (!parsed || (parsed.protocol !== 'ws:' && parsed.protocol !== 'wss:')) {
+    statusLine.textContent = `'${url}' is not a WebSocket address: type one like ws://host:7702/`;
+    return;
+  }
+  try {
+    Module.ccall('ocean_web_connect', null, ['string', 'number'], [url, profile]);
+  } catch (e) {
+    Module.ccall('ocean_web_disconnect', null, [], []);
+    statusLine.textContent = `cannot connect to ${url}: ${e.message}`;
+    return;
+  }
   canvas.focus();
 }
 
