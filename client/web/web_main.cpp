@@ -108,8 +108,9 @@ int main() {
   attributes.majorVersion = 1;  // WebGL 1 is OpenGL ES 2: the shaders as they are
   attributes.minorVersion = 0;
   attributes.depth = EM_TRUE;
+  attributes.alpha = EM_FALSE;  // opaque: the page composites the canvas without blending it
   attributes.antialias = EM_FALSE;
-  attributes.preserveDrawingBuffer = EM_TRUE;  // a screenshot reads what was drawn last
+  attributes.preserveDrawingBuffer = EM_FALSE;  // a copy per frame otherwise; screenshots read the composited page
   const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_create_context(kCanvas, &attributes);
   if (context <= 0 || emscripten_webgl_make_context_current(context) != EMSCRIPTEN_RESULT_SUCCESS) {
     startup_error = "this browser gives no WebGL 1 context";

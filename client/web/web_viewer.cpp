@@ -204,6 +204,8 @@ std::string WebViewer::report() const {
   json.integer("frames", frames_).integer("uploads", uploads_).integer("rendered", rendered_);
   json.fixed("decode_ms_per_frame", frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, 4);
   json.boolean("recording_full", recording_full_);
+  const render::DrawStats& draw = renderer_.last_stats();
+  json.integer("triangles", draw.triangles).integer("draw_calls", draw.draw_calls).integer("tiles", draw.tiles_drawn);
   json.fixed("fps", fps_, 2).fixed("kbps", kbps_, 2).fixed("loss_percent", loss_percent(), 2);
   if (session_) {
     const client::ClientStats& s = session_->stats();

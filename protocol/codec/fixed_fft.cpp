@@ -42,10 +42,9 @@ namespace {
 struct Twiddled {
   std::int64_t re, im;
 };
+static_assert(FixedFft::kTwiddleBits == 30, "dot_round30 rounds at 2^30 and needs |w| <= 2^30");
 inline Twiddled twiddle(std::int64_t br, std::int64_t bi, std::int64_t wr, std::int64_t wi) {
-  const __int128 pr = static_cast<__int128>(br) * wr - static_cast<__int128>(bi) * wi;
-  const __int128 pi = static_cast<__int128>(br) * wi + static_cast<__int128>(bi) * wr;
-  return {round_shift(pr, FixedFft::kTwiddleBits), round_shift(pi, FixedFft::kTwiddleBits)};
+  return {dot_round30(br, wr, bi, -wi), dot_round30(br, wi, bi, wr)};
 }
 
 // (a, b) <- (a + t, a - t); t is passed by value, so it may be computed from b.

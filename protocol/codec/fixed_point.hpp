@@ -22,6 +22,16 @@ inline std::int64_t round_shift(__int128 p, int s) {
 }
 inline std::int64_t round_shift64(std::int64_t p, int s) { return round_shift(static_cast<__int128>(p), s); }
 
+// round_shift(a * x + b * y, 30) for |x|, |y| <= 2^30 (the FFT's twiddles), in 64-bit products
+// only: the same bits, since a = ah * 2^32 + al splits the exact sum into 4 * (ah x + bh y) +
+// (al x + bl y + 2^29) / 2^30, neither part of which overflows. WebAssembly has no 64 x 64 -> 128
+// multiply: the 128-bit form costs a library call per product there (4x the native decode time).
+inline std::int64_t dot_round30(std::int64_t a, std::int64_t x, std::int64_t b, std::int64_t y) {
+  const std::int64_t high = (a >> 32) * x + (b >> 32) * y;  // |high| <= 2^62
+  const std::int64_t low = (a & 0xffffffff) * x + (b & 0xffffffff) * y + (std::int64_t{1} << 29);  // |low| < 2^63
+  return wadd(wshl(high, 2), low >> 30);
+}
+
 // round(a * b / 2^s) with ties away from zero, so that x and -x give exactly opposite results
 // (keeps Hermitian pairs exact).
 inline std::int64_t mul_round_sym(std::int64_t a, std::int64_t b, int s) {

@@ -1,10 +1,13 @@
-// The fixed-point FFT against a double-precision DFT, and its inverse round trip.
+// The fixed-point FFT against a double-precision DFT, and its inverse round trip; its twiddle product
+// in 64-bit arithmetic against the 128-bit one.
 #include "fixed_fft.hpp"
+#include "fixed_point.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -78,4 +81,32 @@ TEST_CASE("inverse(forward(x)) / n^2 returns x within two units (one rounding pe
 TEST_CASE("FixedFft refuses sizes that are not powers of two") {
   CHECK_THROWS_AS(FixedFft(12), std::invalid_argument);
   CHECK_THROWS_AS(FixedFft(1), std::invalid_argument);
+}
+
+TEST_CASE("dot_round30 gives the 128-bit product's bits for any int64 inputs and twiddle-sized factors") {
+  const auto reference = [](std::int64_t a, std::int64_t x, std::int64_t b, std::int64_t y) {
+    return ocean::codec::round_shift(static_cast<__int128>(a) * x + static_cast<__int128>(b) * y, 30);
+  };
+  constexpr std::int64_t kMin = std::numeric_limits<std::int64_t>::min(), kMax = std::numeric_limits<std::int64_t>::max();
+  constexpr std::int64_t kOne = std::int64_t{1} << 30;
+  const std::int64_t values[] = {0, 1, -1, kMin, kMax, kMin + 1, kMax - 1, std::int64_t{1} << 32, -(std::int64_t{1} << 32),
+                                 (std::int64_t{1} << 32) - 1, std::int64_t{0xffffffff} << 31, kOne, -kOne, 12345678901234};
+  const std::int64_t factors[] = {0, 1, -1, kOne, -kOne, kOne - 1, -(kOne - 1), 759250125, -759250125};
+  int checked = 0;
+  for (const std::int64_t a : values)
+    for (const std::int64_t b : values)
+      for (const std::int64_t x : factors)
+        for (const std::int64_t y : factors) {
+          REQUIRE(ocean::codec::dot_round30(a, x, b, y) == reference(a, x, b, y));
+          ++checked;
+        }
+  std::mt19937_64 random(42);
+  for (int i = 0; i < 200000; ++i) {
+    const auto a = static_cast<std::int64_t>(random()), b = static_cast<std::int64_t>(random());
+    const std::int64_t x = static_cast<std::int64_t>(random() % (2 * kOne + 1)) - kOne;
+    const std::int64_t y = static_cast<std::int64_t>(random() % (2 * kOne + 1)) - kOne;
+    REQUIRE(ocean::codec::dot_round30(a, x, b, y) == reference(a, x, b, y));
+    ++checked;
+  }
+  CHECK(checked > 200000);
 }

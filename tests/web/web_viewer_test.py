@@ -185,6 +185,7 @@ def main():
     parser.add_argument("--chromedriver", default="chromedriver")
     parser.add_argument("--profile", type=int, default=1, help="profile id (1 mobile, 4 lite)")
     parser.add_argument("--seconds", type=float, default=6.0, help="how long the frame rate is measured")
+    parser.add_argument("--size", default="1280x720", help="the page's viewport, WxH")
     parser.add_argument("--screenshot", default="", help="where to keep the screenshot (PNG)")
     args = parser.parse_args()
     for tool in (args.chromium, args.chromedriver):
@@ -201,9 +202,10 @@ def main():
         browser = Browser(chromium, chromedriver, os.path.join(work, "chromium"))
         url = f"http://127.0.0.1:{web_port}/index.html?connect=1&record=1&ui=0&profile={args.profile}"
         browser.open(url)
-        viewport = browser.set_viewport(1280, 720)
-        if viewport != [1280, 720]:
-            failures.append(f"the page got a {viewport[0]}x{viewport[1]} viewport, not 1280x720")
+        want = [int(v) for v in args.size.split("x")]
+        viewport = browser.set_viewport(*want)
+        if viewport != want:
+            failures.append(f"the page got a {viewport[0]}x{viewport[1]} viewport, not {args.size}")
         # Streaming: wait for a few seconds of frames.
         deadline, report = time.time() + 90, None
         while time.time() < deadline:
@@ -253,13 +255,14 @@ def main():
             failures.append(f"no sky at the top of the picture: mean rgb {sky}")
         if not (sum(water) < 0.7 * sum(sky) and water[2] > water[0]):
             failures.append(f"no water at the bottom of the picture: mean rgb {water} (sky {sky})")
-        if (width, height) != (1280, 720):
-            failures.append(f"screenshot is {width}x{height}, not 1280x720")
+        if [width, height] != want:
+            failures.append(f"screenshot is {width}x{height}, not {args.size}")
         if report.get("rejected", 0) != 0:
             failures.append(f"the page rejected {report['rejected']} messages")
 
-        print(json.dumps({"profile": report["profile"], "grid": report["grid"], "frames": report["frames"],
+        print(json.dumps({"size": args.size, "profile": report["profile"], "grid": report["grid"], "frames": report["frames"],
                           "keyframes": report.get("keyframes"), "fps": round(fps, 2),
+                          "triangles": report.get("triangles"), "draw_calls": report.get("draw_calls"),
                           "decode_ms_per_frame": report["decode_ms_per_frame"], "kbps": report["kbps"],
                           "frames_compared_with_native": len(compared), "mismatched": len(mismatched),
                           "sky_rgb": [round(v, 3) for v in sky], "water_rgb": [round(v, 3) for v in water],
