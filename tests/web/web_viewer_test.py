@@ -65,6 +65,7 @@ class Browser:
     """One headless Chromium session over chromedriver's WebDriver HTTP API."""
 
     def __init__(self, chromium, chromedriver, profile_dir):
+        self.profile_dir = profile_dir
         self.port = free_port()
         self.driver = subprocess.Popen([chromedriver, f"--port={self.port}"], stdout=subprocess.DEVNULL,
                                        stderr=subprocess.DEVNULL)
@@ -84,6 +85,7 @@ class Browser:
             self.session = self.start_session(chromium, profile_dir)
         except Exception:
             self.driver.kill()
+            subprocess.run(["pkill", "-KILL", "-f", f"--user-data-dir={profile_dir}"], check=False)
             raise
 
     def start_session(self, chromium, profile_dir):
@@ -120,6 +122,9 @@ class Browser:
             self.driver.wait(10)
         except subprocess.TimeoutExpired:
             self.driver.kill()
+        # A browser that did not quit (a busy page, a timed-out DELETE) would keep its software
+        # rasterizer spinning beside the tests that run next: its processes all name our profile.
+        subprocess.run(["pkill", "-KILL", "-f", f"--user-data-dir={self.profile_dir}"], check=False)
 
 
 REPORT = ("return (typeof Module !== 'undefined' && Module.calledRun) ? "
