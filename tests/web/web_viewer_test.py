@@ -191,6 +191,7 @@ def main():
     parser.add_argument("--profile", type=int, default=1, help="profile id (1 mobile, 4 lite)")
     parser.add_argument("--seconds", type=float, default=6.0, help="how long the frame rate is measured")
     parser.add_argument("--size", default="1280x720", help="the page's viewport, WxH")
+    parser.add_argument("--scale", type=float, default=1.0, help="the page's render scale (its scale= parameter)")
     parser.add_argument("--screenshot", default="", help="where to keep the screenshot (PNG)")
     args = parser.parse_args()
     for tool in (args.chromium, args.chromedriver):
@@ -205,7 +206,8 @@ def main():
     browser = None
     try:
         browser = Browser(chromium, chromedriver, os.path.join(work, "chromium"))
-        url = f"http://127.0.0.1:{web_port}/index.html?connect=1&record=1&ui=0&profile={args.profile}"
+        url = (f"http://127.0.0.1:{web_port}/index.html?connect=1&record=1&ui=0&profile={args.profile}"
+               f"&scale={args.scale}")
         browser.open(url)
         want = [int(v) for v in args.size.split("x")]
         viewport = browser.set_viewport(*want)
@@ -265,8 +267,8 @@ def main():
         if report.get("rejected", 0) != 0:
             failures.append(f"the page rejected {report['rejected']} messages")
 
-        print(json.dumps({"size": args.size, "profile": report["profile"], "grid": report["grid"], "frames": report["frames"],
-                          "keyframes": report.get("keyframes"), "fps": round(fps, 2),
+        print(json.dumps({"size": args.size, "scale": args.scale, "profile": report["profile"], "grid": report["grid"],
+                          "frames": report["frames"], "keyframes": report.get("keyframes"), "fps": round(fps, 2),
                           "triangles": report.get("triangles"), "draw_calls": report.get("draw_calls"),
                           "decode_ms_per_frame": report["decode_ms_per_frame"], "kbps": report["kbps"],
                           "frames_compared_with_native": len(compared), "mismatched": len(mismatched),

@@ -1,15 +1,18 @@
 // The page around ocean-web.wasm: the connect box, the canvas size, and a report a test can read.
 // Query parameters: ws=URL (the server's WebSocket; default: the port /ocean-web.json names, on
 // this page's host), profile=ID, connect=1 (connect at once), record=1 (keep the received
-// messages), ui=0 (no panel or help over the sea, for screenshots), report=SECONDS (after that
-// long, write the report into #report and stop).
+// messages), ui=0 (no panel or help over the sea, for screenshots), scale=S (render at S times
+// the page's pixels, 0.25..1, stretched to fit: for a device too weak for its own screen),
+// report=SECONDS (after that long, write the report into #report and stop).
 'use strict';
 const params = new URLSearchParams(location.search);
 const canvas = document.getElementById('ocean');
 const statusLine = document.getElementById('status');
 
+const scale = Math.min(1, Math.max(0.25, Number(params.get('scale')) || 1));  // not a number: 1
+
 function fitCanvas() {
-  const ratio = window.devicePixelRatio || 1;
+  const ratio = (window.devicePixelRatio || 1) * scale;
   canvas.width = Math.round(canvas.clientWidth * ratio);
   canvas.height = Math.round(canvas.clientHeight * ratio);
 }
