@@ -18,6 +18,7 @@ namespace {
 constexpr std::size_t kHashesKept = 600;                   // 20 s of a 30 Hz stream
 constexpr std::size_t kRecordLimitBytes = 8u << 20;        // a test records seconds, not hours
 constexpr double kEyeHeightM = 10.0, kPitchDeg = -6.0;      // the native viewers' default pose
+constexpr double kKbpsSampleS = 0.2;                        // KbpsMeter's five samples a second
 }  // namespace
 
 double WebViewer::now() const { return emscripten_get_now() / 1000.0; }
@@ -170,20 +171,15 @@ void WebViewer::frame(double now_s, int width, int height) {
   }
   renderer_.draw(camera_, width, height, now_s);
 
-  if (fps_window_start_s_ < 0.0) fps_window_start_s_ = now_s;
-  ++fps_frames_;
-  if (now_s - fps_window_start_s_ >= 0.5) {
-    fps_ = static_cast<double>(fps_frames_) / (now_s - fps_window_start_s_);
-    fps_frames_ = 0;
-    fps_window_start_s_ = now_s;
-    kbps_ = kbps_at_s_ > 0.0 ? static_cast<double>(bytes_in_ - kbps_bytes_) * 8.0 / 1000.0 / (now_s - kbps_at_s_) : 0.0;
-    kbps_bytes_ = bytes_in_;
-    kbps_at_s_ = now_s;
+  fps_ = fps_meter_.tick(now_s);
+  if (now_s - kbps_sampled_s_ >= kKbpsSampleS) {
+    kbps_meter_.update(bytes_in_, now_s);
+    kbps_sampled_s_ = now_s;
   }
   if (hud_on_) {
     render::HudStats stats;
     stats.fps = fps_;
-    stats.kbps = kbps_;
+    stats.kbps = kbps_meter_.kbps();
     // As the native viewer shows it: the jitter buffer's delay plus half the round trip.
     stats.latency_ms = 1000.0 * (timeline_.adaptive_delay_s() + (session_ ? session_->stats().rtt_smoothed_s / 2.0 : 0.0));
     stats.loss_percent = loss_percent();
@@ -206,7 +202,7 @@ std::string WebViewer::report() const {
   json.boolean("recording_full", recording_full_);
   const render::DrawStats& draw = renderer_.last_stats();
   json.integer("triangles", draw.triangles).integer("draw_calls", draw.draw_calls).integer("tiles", draw.tiles_drawn);
-  json.fixed("fps", fps_, 2).fixed("kbps", kbps_, 2).fixed("loss_percent", loss_percent(), 2);
+  json.fixed("fps", fps_, 2).fixed("kbps", kbps_meter_.kbps(), 2).fixed("loss_percent", loss_percent(), 2);
   if (session_) {
     const client::ClientStats& s = session_->stats();
     json.integer("keyframes", s.keyframes_complete).integer("rejected", s.rejected_total()).integer("keyframe_requests", s.keyframe_requests_sent);

@@ -17,6 +17,8 @@
 #include "client/render/hud_overlay.hpp"
 #include "client/render/renderer.hpp"
 #include "client/render/touch_controls.hpp"
+#include "client/viewer/fps_meter.hpp"
+#include "client/viewer/kbps_meter.hpp"
 #include "client_session.hpp"
 #include "frame_timeline.hpp"
 
@@ -84,8 +86,9 @@ class WebViewer {
   std::uint64_t bytes_in_ = 0, messages_in_ = 0, frames_ = 0, uploads_ = 0, rendered_ = 0;
   double decode_ms_ = 0.0;  // message handling (verify + decode) for the frames counted in frames_
   double frame_callback_ms_ = 0.0;  // on_frame's own time within the message being handled
-  double last_frame_s_ = 0.0, fps_ = 0.0, fps_window_start_s_ = -1.0, kbps_ = 0.0, kbps_at_s_ = 0.0;
-  std::uint64_t fps_frames_ = 0, kbps_bytes_ = 0;
+  double last_frame_s_ = 0.0, fps_ = 0.0, kbps_sampled_s_ = 0.0;
+  viewer::FpsMeter fps_meter_;    // the native viewers' meters, so the HUDs read alike
+  viewer::KbpsMeter kbps_meter_;
   // Loss: frames the ticks say were sent (one per ticks_per_frame_) against frames received.
   Tick first_tick_ = 0, last_tick_ = 0;
   std::uint64_t session_frames_ = 0;

@@ -104,7 +104,7 @@ Server::Server(ServerConfig config)
                                           });
   }
   if (config_.metrics_listen) {
-    metrics_http_ = std::make_unique<MetricsHttpServer>(http_context_, *config_.metrics_listen,
+    metrics_http_ = std::make_unique<HttpServer>(http_context_, *config_.metrics_listen,
                                                         [this](const HttpRequest& r) { return handle_http(r); });
     metrics_port_ = metrics_http_->local_endpoint().port();
     metrics_http_->set_refused_callback([this](std::string_view reason, const std::string& peer) {
@@ -119,9 +119,9 @@ Server::Server(ServerConfig config)
     std::string error;
     web_files_ = WebFiles::load(root, ws_port_, error);
     if (!web_files_) throw std::invalid_argument(error);
-    // Each connection may hold a whole reply (the module is 0.7 MB): at most 64 at once.
-    web_http_ = std::make_unique<MetricsHttpServer>(
-        http_context_, *config_.web_listen, [this](const HttpRequest& r) { return web_files_->reply(r); }, 64, "web page");
+    web_http_ = std::make_unique<HttpServer>(
+        http_context_, *config_.web_listen, [this](const HttpRequest& r) { return web_files_->reply(r); },
+        WebFiles::kMaxConnections, "web page");
     web_port_ = web_http_->local_endpoint().port();
     web_http_->set_refused_callback([this](std::string_view reason, const std::string& peer) {
       metrics_.rejects(reason).inc();

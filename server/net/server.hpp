@@ -10,7 +10,7 @@
 #include "frame_producer.hpp"
 #include "link.hpp"
 #include "metrics.hpp"
-#include "metrics_http_server.hpp"
+#include "http_server.hpp"
 #include "server_config.hpp"
 #include "server_metrics.hpp"
 #include "tick_loop.hpp"
@@ -128,10 +128,10 @@ class Server : public DatagramSocket {
   Listener tcp_;
   std::unique_ptr<Listener> ws_;  // --ws-listen
   std::unique_ptr<DatagramPort> udp_;  // the bound UDP socket, read outside asio's reactor
-  std::unique_ptr<MetricsHttpServer> metrics_http_;
+  std::unique_ptr<HttpServer> metrics_http_;
   // --web-listen: the browser viewer's files, on the probes' thread (served from memory).
   std::optional<WebFiles> web_files_;
-  std::unique_ptr<MetricsHttpServer> web_http_;
+  std::unique_ptr<HttpServer> web_http_;
   std::uint16_t web_port_ = 0;
   std::uint16_t tcp_port_ = 0;
   std::uint16_t ws_port_ = 0;

@@ -17,6 +17,9 @@ namespace ocean::server {
 
 class WebFiles {
  public:
+  // Each connection to the page listener may hold a whole reply (the module is 0.7 MB).
+  static constexpr std::size_t kMaxConnections = 64;
+
   // The files a web root must hold (the output of -DOCEAN_BUILD_WEB=ON).
   static const std::vector<std::string>& names();
   // Reads every file of names() from root; nullopt with error naming the first one missing.

@@ -1,5 +1,6 @@
 #include "server.hpp"
 #include "server_log.hpp"
+#include "raw_http_get.hpp"
 
 #include <asio/connect.hpp>
 #include <asio/read.hpp>
@@ -13,6 +14,7 @@
 #include <thread>
 
 using namespace ocean::server;
+using ocean::server::test::raw_http_get;
 using namespace std::chrono_literals;
 
 namespace {
@@ -43,19 +45,6 @@ bool wait_until(const std::function<bool()>& condition, std::chrono::millisecond
     std::this_thread::sleep_for(5ms);
   }
   return true;
-}
-
-// One blocking HTTP/1.1 GET over loopback; returns the whole response (the server closes).
-std::string http_get(std::uint16_t port, const std::string& target) {
-  asio::io_context context;
-  asio::ip::tcp::socket socket(context);
-  socket.connect({asio::ip::make_address("127.0.0.1"), port});
-  const std::string request = "GET " + target + " HTTP/1.1\r\nHost: localhost\r\n\r\n";
-  asio::write(socket, asio::buffer(request));
-  std::string response;
-  std::error_code error;
-  asio::read(socket, asio::dynamic_buffer(response), error);
-  return response;
 }
 
 }  // namespace
@@ -102,7 +91,7 @@ TEST_CASE("/metrics, /healthz and /readyz are served over loopback", "[server][m
   auto done = run_async(server);
   REQUIRE(wait_until([&] { return server.ready() && server.metrics().ticks.value() >= 3; }));
 
-  const std::string metrics = http_get(port, "/metrics");
+  const std::string metrics = raw_http_get(port, "/metrics");
   CHECK(metrics.rfind("HTTP/1.1 200 OK\r\n", 0) == 0);
   CHECK(metrics.find("Content-Type: text/plain; version=0.0.4") != std::string::npos);
   CHECK(metrics.find("\nocean_ticks_total ") != std::string::npos);
@@ -113,9 +102,9 @@ TEST_CASE("/metrics, /healthz and /readyz are served over loopback", "[server][m
   const std::size_t length_at = metrics.find("Content-Length: ") + 16;
   CHECK(std::stoul(metrics.substr(length_at)) == metrics.size() - body);
 
-  CHECK(http_get(port, "/healthz").find("\r\n\r\nok\n") != std::string::npos);
-  CHECK(http_get(port, "/readyz").rfind("HTTP/1.1 200", 0) == 0);
-  CHECK(http_get(port, "/nope").rfind("HTTP/1.1 404", 0) == 0);
+  CHECK(raw_http_get(port, "/healthz").find("\r\n\r\nok\n") != std::string::npos);
+  CHECK(raw_http_get(port, "/readyz").rfind("HTTP/1.1 200", 0) == 0);
+  CHECK(raw_http_get(port, "/nope").rfind("HTTP/1.1 404", 0) == 0);
 
   server.stop();
   REQUIRE(done.wait_for(5s) == std::future_status::ready);

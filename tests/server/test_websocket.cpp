@@ -3,11 +3,10 @@
 // origins outside the allow-list are refused with 403; hostile WebSocket clients (text frames,
 // oversized and unmasked frames, a Ping flood that never reads) are closed with a reason while
 // the other clients keep their stream; --web-listen serves the page and lets its own origin in.
+#include "raw_http_get.hpp"
 #include "session_harness.hpp"
 #include "web_files.hpp"
 
-#include <asio/read.hpp>
-#include <asio/write.hpp>
 #include <catch2/catch.hpp>
 
 #include <chrono>
@@ -30,18 +29,6 @@ ServerConfig websocket_config() {
 }
 
 proto::Hello tcp_hello() { return proto::Hello{1, 0, ocean::wire::Transport::tcp, "ws-test"}; }
-
-// One blocking HTTP/1.1 GET over loopback; the whole response (the server closes).
-std::string http_get(std::uint16_t port, const std::string& target) {
-  asio::io_context context;
-  asio::ip::tcp::socket socket(context);
-  socket.connect({asio::ip::make_address("127.0.0.1"), port});
-  asio::write(socket, asio::buffer("GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"));
-  std::string response;
-  std::error_code error;
-  asio::read(socket, asio::dynamic_buffer(response), error);
-  return response;
-}
 
 }  // namespace
 
@@ -174,12 +161,12 @@ TEST_CASE("the page server (--web-listen) serves the page, names the WebSocket p
   SessionHarness harness(config);
   REQUIRE(harness.server().web_port());
   const std::uint16_t web = *harness.server().web_port();
-  const std::string page = http_get(web, "/?connect=1");
+  const std::string page = raw_http_get(web, "/?connect=1");
   CHECK(page.rfind("HTTP/1.1 200", 0) == 0);
   CHECK(page.find("<!-- index.html -->") != std::string::npos);
-  CHECK(http_get(web, "/ocean-web.json").find("{\"ws_port\": " + std::to_string(*harness.server().ws_port()) + "}") !=
+  CHECK(raw_http_get(web, "/ocean-web.json").find("{\"ws_port\": " + std::to_string(*harness.server().ws_port()) + "}") !=
         std::string::npos);
-  CHECK(http_get(web, "/../server.cpp").rfind("HTTP/1.1 404", 0) == 0);
+  CHECK(raw_http_get(web, "/../server.cpp").rfind("HTTP/1.1 404", 0) == 0);
   // The page's origin as the browser names it (the host it reached the WebSocket by, the page's
   // port) needs no --ws-origins entry; the same host's other ports and other names do not pass.
   auto own = harness.ws_client("http://127.0.0.1:" + std::to_string(web));
@@ -197,10 +184,10 @@ TEST_CASE("the page server (--web-listen) serves the page, names the WebSocket p
       idle.back().connect({asio::ip::make_address("127.0.0.1"), web});
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // accepted before the next
-    CHECK(http_get(web, "/").empty());  // closed at once
+    CHECK(raw_http_get(web, "/").empty());  // closed at once
   }
   std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the idle ones' closes are seen
-  CHECK(http_get(web, "/").rfind("HTTP/1.1 200", 0) == 0);
+  CHECK(raw_http_get(web, "/").rfind("HTTP/1.1 200", 0) == 0);
   harness.stop();
   CHECK(harness.server().metrics().rejects("http_busy").value() == 1);
   std::filesystem::remove_all(root);

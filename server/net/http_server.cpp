@@ -1,4 +1,4 @@
-#include "metrics_http_server.hpp"
+#include "http_server.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -20,16 +20,16 @@ asio::ip::tcp::acceptor open_tcp_acceptor(asio::io_context& context, const Liste
   return acceptor;
 }
 
-MetricsHttpServer::MetricsHttpServer(asio::io_context& context, const ListenAddress& address,
+HttpServer::HttpServer(asio::io_context& context, const ListenAddress& address,
                                      HttpConnection::Handler handler, std::size_t max_connections, std::string_view purpose)
     : acceptor_(open_tcp_acceptor(context, address, purpose)),
       backoff_(context),
       handler_(std::move(handler)),
       max_connections_(max_connections) {}
 
-void MetricsHttpServer::start() { do_accept(); }
+void HttpServer::start() { do_accept(); }
 
-void MetricsHttpServer::stop() {
+void HttpServer::stop() {
   std::error_code ignored;
   acceptor_.close(ignored);
   backoff_.cancel();
@@ -37,7 +37,7 @@ void MetricsHttpServer::stop() {
   connections_.clear();
 }
 
-void MetricsHttpServer::do_accept() {
+void HttpServer::do_accept() {
   acceptor_.async_accept([this](std::error_code error, asio::ip::tcp::socket socket) {
     if (!acceptor_.is_open()) return;  // stopped
     if (error == asio::error::no_descriptors || error.value() == ENFILE) {
@@ -48,30 +48,33 @@ void MetricsHttpServer::do_accept() {
         if (!e && acceptor_.is_open()) do_accept();
       });
     }
-    if (!error) {
-      std::error_code ignored;
-      const asio::ip::address peer = socket.remote_endpoint(ignored).address();
-      // One host may hold a share of the connections only, so it cannot keep out everyone else.
-      const std::size_t per_host = max_connections_ > 0 ? std::max<std::size_t>(1, max_connections_ / 8) : 0;
-      if (max_connections_ > 0 && (connections_.size() >= max_connections_ || per_host_[peer] >= per_host)) {
-        if (per_host_[peer] == 0) per_host_.erase(peer);
-        if (on_refused_) on_refused_("http_busy", peer.to_string());
-        socket.close(ignored);
-      } else {
-        ++per_host_[peer];
-        auto connection = std::make_shared<HttpConnection>(
-            std::move(socket), handler_,
-            [this, peer](const std::shared_ptr<HttpConnection>& done) {
-              connections_.erase(done);
-              if (--per_host_[peer] == 0) per_host_.erase(peer);
-            },
-            on_refused_);
-        connections_.insert(connection);
-        connection->start();
-      }
-    }
+    if (!error) admit(std::move(socket));
     do_accept();
   });
+}
+
+// One host may hold an eighth of the connections only, so it cannot keep out everyone else.
+void HttpServer::admit(asio::ip::tcp::socket socket) {
+  std::error_code ignored;
+  const asio::ip::address peer = socket.remote_endpoint(ignored).address();
+  const bool limited = max_connections_ > 0;
+  const auto held = per_host_.find(peer);
+  const std::size_t from_peer = held == per_host_.end() ? 0 : held->second;
+  if (limited && (connections_.size() >= max_connections_ || from_peer >= std::max<std::size_t>(1, max_connections_ / 8))) {
+    if (on_refused_) on_refused_("http_busy", peer.to_string());
+    socket.close(ignored);
+    return;
+  }
+  if (limited) ++per_host_[peer];
+  auto connection = std::make_shared<HttpConnection>(
+      std::move(socket), handler_,
+      [this, peer, limited](const std::shared_ptr<HttpConnection>& done) {
+        connections_.erase(done);
+        if (limited && --per_host_[peer] == 0) per_host_.erase(peer);
+      },
+      on_refused_);
+  connections_.insert(connection);
+  connection->start();
 }
 
 }  // namespace ocean::server

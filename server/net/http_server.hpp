@@ -1,6 +1,6 @@
-// MetricsHttpServer: the HTTP endpoint for Prometheus (/metrics) and probes (/healthz, /readyz),
-// and for the browser viewer's page (--web-listen, WebFiles), on the probes' io_context. Owns its
-// acceptor and the open connections so stop() ends them all.
+// HttpServer: one HTTP listener answering GET/HEAD with a handler - the Prometheus endpoint and
+// probes (/metrics, /healthz, /readyz) and the browser viewer's page (--web-listen, WebFiles), on
+// the probes' io_context. Owns its acceptor and the open connections so stop() ends them all.
 #pragma once
 
 #include "http_connection.hpp"
@@ -17,13 +17,12 @@
 
 namespace ocean::server {
 
-class MetricsHttpServer {
+class HttpServer {
  public:
-
   // Binds at once; throws std::system_error naming the address when it cannot. max_connections
   // (0: no limit) bounds the open connections, each of which may hold a whole reply, and one host
   // may hold an eighth of them; one more is closed at once and counted as http_busy.
-  MetricsHttpServer(asio::io_context& context, const ListenAddress& address, HttpConnection::Handler handler,
+  HttpServer(asio::io_context& context, const ListenAddress& address, HttpConnection::Handler handler,
                     std::size_t max_connections = 0, std::string_view purpose = "metrics");
 
   void set_refused_callback(HttpConnection::RefusedCallback callback) { on_refused_ = std::move(callback); }
@@ -33,6 +32,7 @@ class MetricsHttpServer {
 
  private:
   void do_accept();
+  void admit(asio::ip::tcp::socket socket);  // or refuse it as http_busy
 
   asio::ip::tcp::acceptor acceptor_;
   asio::steady_timer backoff_;  // after EMFILE
@@ -40,7 +40,7 @@ class MetricsHttpServer {
   HttpConnection::RefusedCallback on_refused_;
   std::set<std::shared_ptr<HttpConnection>> connections_;
   std::size_t max_connections_ = 0;
-  std::map<asio::ip::address, std::size_t> per_host_;  // open connections by peer address
+  std::map<asio::ip::address, std::size_t> per_host_;  // open connections by peer address, when limited
 };
 
 // Opens, configures (SO_REUSEADDR) and binds a listening TCP acceptor; used for every TCP listener.
