@@ -29,11 +29,7 @@ BandEvaluator::BandEvaluator(ModeTable modes, double choppiness, double patch_x_
       patch_z_m_(patch_z_m),
       fft_(modes_.n_x, modes_.n_z),
       spectrum_h_(fft_.make_spectrum()),
-      work_{fft_.make_spectrum(), fft_.make_spectrum(), fft_.make_spectrum()},
-      d_zz_(fftw_array<float>(fft_.grid_size())),
-      d_xz_(fftw_array<float>(fft_.grid_size())) {
-  if (!d_zz_ || !d_xz_) throw std::bad_alloc();
-}
+      work_{fft_.make_spectrum(), fft_.make_spectrum(), fft_.make_spectrum()} {}
 
 int BandEvaluator::transform_count(const FrameRequest& request) {
   return 1 + (request.slopes ? 2 : 0) + (request.choppy ? 5 : 0);
@@ -51,6 +47,9 @@ void BandEvaluator::evaluate(double t, Frame& out, const FrameRequest& request) 
   size_field(out.slope_z, request.slopes, n);
   size_field(out.disp_x, request.choppy, n);
   size_field(out.disp_z, request.choppy, n);
+  size_field(out.disp_xx, request.choppy, n);
+  size_field(out.disp_zz, request.choppy, n);
+  size_field(out.disp_xz, request.choppy, n);
   size_field(out.jacobian, request.choppy, n);
 
   fftwf_complex* w0 = work_[0].get();
@@ -69,10 +68,10 @@ void BandEvaluator::evaluate(double t, Frame& out, const FrameRequest& request) 
     fft_.execute(w0, out.disp_x.data());
     fft_.execute(w1, out.disp_z.data());
     derive_displacement_gradient(modes_, lambda_, h, w0, w1, w2);
-    fft_.execute(w0, out.jacobian.data());  // d_xx, turned into J in place below
-    fft_.execute(w1, d_zz_.get());
-    fft_.execute(w2, d_xz_.get());
-    combine_jacobian(out.jacobian.data(), d_zz_.get(), d_xz_.get(), out.jacobian.data(), n);
+    fft_.execute(w0, out.disp_xx.data());
+    fft_.execute(w1, out.disp_zz.data());
+    fft_.execute(w2, out.disp_xz.data());
+    combine_jacobian(out.disp_xx.data(), out.disp_zz.data(), out.disp_xz.data(), out.jacobian.data(), n);
   }
   fft_.execute(spectrum_h_.get(), out.height.data());
 }
@@ -82,7 +81,8 @@ void BandEvaluator::execute_transforms_only(Frame& out, const FrameRequest& requ
   const auto sized = [n](const std::vector<float>& field, bool wanted) { return !wanted || field.size() == n; };
   if (!sized(out.height, true) || !sized(out.slope_x, request.slopes) || !sized(out.slope_z, request.slopes) ||
       !sized(out.disp_x, request.choppy) || !sized(out.disp_z, request.choppy) ||
-      !sized(out.jacobian, request.choppy))
+      !sized(out.disp_xx, request.choppy) || !sized(out.disp_zz, request.choppy) ||
+      !sized(out.disp_xz, request.choppy) || !sized(out.jacobian, request.choppy))
     throw std::invalid_argument("execute_transforms_only: the frame must come from evaluate() with the same request");
   fftwf_complex* w0 = work_[0].get();
   fftwf_complex* w1 = work_[1].get();
@@ -94,9 +94,9 @@ void BandEvaluator::execute_transforms_only(Frame& out, const FrameRequest& requ
   if (request.choppy) {
     fft_.execute(w0, out.disp_x.data());
     fft_.execute(w1, out.disp_z.data());
-    fft_.execute(w0, out.jacobian.data());
-    fft_.execute(w1, d_zz_.get());
-    fft_.execute(w2, d_xz_.get());
+    fft_.execute(w0, out.disp_xx.data());
+    fft_.execute(w1, out.disp_zz.data());
+    fft_.execute(w2, out.disp_xz.data());
   }
   fft_.execute(spectrum_h_.get(), out.height.data());
 }

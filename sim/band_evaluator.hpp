@@ -38,7 +38,6 @@ class BandEvaluator {
   C2rTransform fft_;
   FftwArray<fftwf_complex> spectrum_h_;  // h(k, t), consumed last by the height transform
   FftwArray<fftwf_complex> work_[3];     // derived spectra, up to three per pass
-  FftwArray<float> d_zz_, d_xz_;  // lambda-scaled displacement derivatives for J (d_xx goes to J itself)
 };
 
 }  // namespace ocean::sim

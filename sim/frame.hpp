@@ -16,7 +16,10 @@ struct Frame {
   std::vector<float> slope_z;   // dh/dz, empty unless requested
   std::vector<float> disp_x;    // choppy displacement in metres (lambda applied), empty unless choppy
   std::vector<float> disp_z;
-  std::vector<float> jacobian;  // of the displaced grid; < ~0.3 means folding (foam)
+  // Choppy: the displacement's derivatives dDx/dx, dDz/dz, dDx/dz (lambda applied), the inputs of
+  // the Jacobian (1 + xx)(1 + zz) - xz^2 of the displaced grid; < ~0.3 means folding (foam).
+  std::vector<float> disp_xx, disp_zz, disp_xz;
+  std::vector<float> jacobian;
 };
 
 }  // namespace ocean::sim

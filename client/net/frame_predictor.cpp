@@ -18,7 +18,7 @@ bool FramePredictor::predict(const codec::Decoder& decoder, Tick tick, codec::Re
   state_ = *decoder.state(base);
   // Through the decoder's scenes: a weather change announced ahead is predicted exactly too.
   decoder.scenes().advance(state_, base, tick);
-  model_.synthesize(state_.cur, fields_);
+  model_.synthesize(state_.cur, decoder.scenes().at(tick)->scene.choppiness, fields_);
   codec::to_float(fields_, config_, out);
   out.tick = tick;
   out.complete = false;

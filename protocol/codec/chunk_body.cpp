@@ -34,7 +34,7 @@ int context_of(std::int64_t a, std::int64_t b) {
 struct Models {
   std::array<SIntModel, kContexts> x, v;
   UIntModel count, gap;
-  std::array<SIntModel, 3> value;  // height, slope_x, slope_z
+  std::array<SIntModel, kCorrectionChannels> value;  // one per channel, in coding order
 };
 
 struct SampleRange {
@@ -104,9 +104,13 @@ std::vector<std::uint8_t> encode_body(const BodyLayout& layout, std::uint32_t be
       encode_channel(rc, *m, 1, corr.slope_x, r);
       encode_channel(rc, *m, 2, corr.slope_z, r);
     }
+    const double after_slopes = rc.cost_bits();
+    if (layout.choppy)
+      for (int ch = 3; ch < kCorrectionChannels; ++ch) encode_channel(rc, *m, ch, channel(corr, ch), r);
     if (cost) {
       cost->height_bits += after_height - after_key;
-      cost->slope_bits += rc.cost_bits() - after_height;
+      cost->slope_bits += after_slopes - after_height;
+      cost->choppy_bits += rc.cost_bits() - after_slopes;
     }
   }
   if (cost) cost->key_bits += after_key;
@@ -138,6 +142,9 @@ bool decode_body(const BodyLayout& layout, std::uint32_t begin, std::uint32_t en
       if (!decode_channel(rc, *m, 1, out.corrections.slope_x, r)) return false;
       if (!decode_channel(rc, *m, 2, out.corrections.slope_z, r)) return false;
     }
+    if (layout.choppy)
+      for (int ch = 3; ch < kCorrectionChannels; ++ch)
+        if (!decode_channel(rc, *m, ch, channel(out.corrections, ch), r)) return false;
   }
   return true;
 }

@@ -1,5 +1,6 @@
 // Chunk body: the range-coded contents of one chunk's item range - key spectral coefficients
-// and sparse spatial corrections (height, slope_x, slope_z). Each body decodes on its own.
+// and sparse spatial corrections (height, slope_x, slope_z, and the five choppy channels). Each
+// body decodes on its own.
 #pragma once
 
 #include <cstdint>
@@ -15,8 +16,25 @@ struct Correction {
 
 struct Corrections {
   std::vector<Correction> height, slope_x, slope_z;  // each sorted by pos
-  std::size_t total() const { return height.size() + slope_x.size() + slope_z.size(); }
+  // Choppy streams: displacement in disp_step / 4 quanta, its derivatives in slope_step / 4.
+  std::vector<Correction> disp_x, disp_z, disp_xx, disp_zz, disp_xz;
+  std::size_t total() const {
+    return height.size() + slope_x.size() + slope_z.size() + disp_x.size() + disp_z.size() + disp_xx.size() +
+           disp_zz.size() + disp_xz.size();
+  }
 };
+
+inline constexpr int kCorrectionChannels = 8;
+// The channels of a frame in coding order: height, slope_x, slope_z, disp_x, disp_z, disp_xx,
+// disp_zz, disp_xz.
+inline std::vector<Correction>& channel(Corrections& c, int i) {
+  std::vector<Correction>* all[kCorrectionChannels] = {&c.height, &c.slope_x, &c.slope_z, &c.disp_x,
+                                                       &c.disp_z, &c.disp_xx, &c.disp_zz, &c.disp_xz};
+  return *all[i];
+}
+inline const std::vector<Correction>& channel(const Corrections& c, int i) {
+  return channel(const_cast<Corrections&>(c), i);
+}
 
 // One key mode: X(t) and X(t) - X(t-1), each a quantized complex coefficient.
 struct KeyCoefficient {
@@ -28,13 +46,14 @@ struct BodyLayout {
   std::uint32_t spectral_items = 0;  // key_modes().size() for keys, 0 for deltas
   std::uint32_t samples = 0;         // n * n
   bool normals = false;
+  bool choppy = false;
   std::uint32_t total() const { return spectral_items + samples; }
 };
 
 inline constexpr std::int32_t kMaxCorrection = 1 << 24;  // |value| limit in quanta
 
 struct BodyCost {
-  double key_bits = 0, height_bits = 0, slope_bits = 0;  // ideal coder cost, statistics only
+  double key_bits = 0, height_bits = 0, slope_bits = 0, choppy_bits = 0;  // ideal coder cost, statistics only
 };
 
 std::vector<std::uint8_t> encode_body(const BodyLayout& layout, std::uint32_t begin, std::uint32_t end,

@@ -8,7 +8,8 @@ constexpr std::uint8_t kFlagKey = 1u << 0;
 constexpr std::uint8_t kFlagNormals = 1u << 1;
 constexpr std::uint8_t kFlagModeled = 1u << 2;
 constexpr std::uint8_t kFlagWhole = 1u << 3;
-constexpr std::uint8_t kKnownFlags = kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole;
+constexpr std::uint8_t kFlagChoppy = 1u << 4;  // codec version 3
+constexpr std::uint8_t kKnownFlags = kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole | kFlagChoppy;
 constexpr std::size_t kCrcOffset = 1;
 constexpr std::size_t kFixedHeaderBytes = 4;  // flags, CRC (2), scene tag
 
@@ -98,7 +99,8 @@ std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& e
   out.reserve(16 + body.size());
   const bool explicit_key = h.key && !h.modeled;
   out.push_back(static_cast<std::uint8_t>((h.key ? kFlagKey : 0) | (h.normals ? kFlagNormals : 0) |
-                                          (h.key && h.modeled ? kFlagModeled : 0) | (h.whole ? kFlagWhole : 0)));
+                                          (h.key && h.modeled ? kFlagModeled : 0) | (h.whole ? kFlagWhole : 0) |
+                                          (h.choppy ? kFlagChoppy : 0)));
   out.push_back(0);
   out.push_back(0);  // CRC placeholder
   out.push_back(h.scene_tag);
@@ -128,6 +130,7 @@ ChunkError parse_payload(const ChunkView& c, std::size_t max_payload, int grid_l
   h.normals = (flags & kFlagNormals) != 0;
   h.modeled = (flags & kFlagModeled) != 0;
   h.whole = (flags & kFlagWhole) != 0;
+  h.choppy = (flags & kFlagChoppy) != 0;
   if (h.key != c.key || (h.modeled && !h.key)) return ChunkError::bad_flags;
   h.scene_tag = p[3];
   std::size_t pos = kFixedHeaderBytes;

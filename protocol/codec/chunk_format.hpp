@@ -12,7 +12,7 @@
 
 namespace ocean::codec {
 
-inline constexpr std::uint8_t kCodecVersion = 2;
+inline constexpr std::uint8_t kCodecVersion = 3;
 inline constexpr std::size_t kDefaultMaxPayload = 1100;
 // Bytes a frame record adds around the payload in a lean UDP datagram (PROTOCOL.md 7): lag,
 // count, length and its share of the datagram's kind byte and tick; the bench charges this per
@@ -45,7 +45,7 @@ enum class ChunkError : std::uint8_t {
   ok = 0,
   truncated,           // payload shorter than its header
   oversized,           // payload longer than max_payload
-  unknown_version,     // not produced by codec version 2 (the version is the stream's, not per chunk)
+  unknown_version,     // not produced by this codec version (the version is the stream's, not per chunk)
   bad_flags,           // reserved flag bits set, or key flag differs from the envelope
   wrong_dimensions,    // grid or channel set differs from the stream configuration
   bad_range,           // item range empty or outside the frame
@@ -70,6 +70,7 @@ inline constexpr std::uint16_t kMaxChunksPerFrame = 4096;
 struct ChunkHeader {
   bool key = false;
   bool normals = false;
+  bool choppy = false;         // codec version 3: the choppy channels follow the slopes
   bool modeled = false;        // key only: the state comes from the scene model, not coefficients
   bool whole = false;          // the chunk covers every item of its frame; no range is written
   std::uint8_t scene_tag = 0;  // the scene in force at the chunk's tick (SceneUpdate.serial mod 256)

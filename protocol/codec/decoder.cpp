@@ -32,7 +32,7 @@ const ModalState* Decoder::state(Tick tick) const {
 }
 
 ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const {
-  if (h.normals != config_.normals) return ChunkError::wrong_dimensions;
+  if (h.normals != config_.normals || h.choppy != config_.choppy) return ChunkError::wrong_dimensions;
   if (h.item_begin >= h.item_end || h.item_end > layout.total()) return ChunkError::bad_range;
   if (h.key && !h.modeled && (h.pos_shift > 40 || h.vel_shift > 40)) return ChunkError::bad_value;
   if (c.count == 0 || c.count > kMaxChunksPerFrame || c.index >= c.count) return ChunkError::bad_index;
@@ -72,6 +72,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
   layout.spectral_items = h.key && !h.modeled ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
   layout.samples = static_cast<std::uint32_t>(n) * n;
   layout.normals = config_.normals;
+  layout.choppy = config_.choppy;
   if (h.whole) {
     h.item_begin = 0;
     h.item_end = layout.total();
@@ -109,7 +110,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
           scenes_.advance(p.predicted, c.baseline, c.tick);
         }
       }
-      model_.synthesize(p.predicted.cur, p.fields);
+      model_.synthesize(p.predicted.cur, scenes_.at(c.tick)->scene.choppiness, p.fields);
     }
   }
   p.got[c.index] = true;
@@ -122,9 +123,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
   auto append = [](std::vector<Correction>& to, const std::vector<Correction>& from) {
     to.insert(to.end(), from.begin(), from.end());
   };
-  append(p.corrections.height, decoded.corrections.height);
-  append(p.corrections.slope_x, decoded.corrections.slope_x);
-  append(p.corrections.slope_z, decoded.corrections.slope_z);
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) append(channel(p.corrections, ch), channel(decoded.corrections, ch));
 
   if (predicted && (!shown_tick_ || c.tick >= *shown_tick_)) show(c.tick);
   if (p.received == p.count) {
@@ -166,7 +165,7 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
   }
   if (p.key && !p.modeled) {
     p.predicted = key_state(model_, p.key_coefficients, p.pos_shift, p.vel_shift);
-    model_.synthesize(p.predicted.cur, p.fields);
+    model_.synthesize(p.predicted.cur, scenes_.at(tick)->scene.choppiness, p.fields);
     apply_corrections(p.fields, p.corrections);
   }
   if (!p.corrections.height.empty())

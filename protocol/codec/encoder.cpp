@@ -76,12 +76,32 @@ void Encoder::add_truth(Tick tick, const TruthView& truth) {
           throw std::invalid_argument("Encoder::add_truth: slope " + std::to_string(v) +
                                       " is not finite or beyond 2^20 slope steps");
   }
+  if (config_.choppy) {
+    const std::span<const float> fields[5] = {truth.disp_x, truth.disp_z, truth.disp_xx, truth.disp_zz, truth.disp_xz};
+    for (int j = 0; j < 5; ++j) {
+      if (fields[j].size() != nn)
+        throw std::invalid_argument("Encoder::add_truth: the displacement and its three derivatives need " +
+                                    std::to_string(nn) + " samples each when the stream is choppy");
+      const double limit_j = std::ldexp(static_cast<double>(j < 2 ? config_.disp_step_m : config_.slope_step), 20);
+      for (float v : fields[j])
+        if (!(std::fabs(v) < limit_j))
+          throw std::invalid_argument(std::string("Encoder::add_truth: ") + (j < 2 ? "displacement " : "displacement derivative ") +
+                                      std::to_string(v) + " is not finite or beyond 2^20 steps");
+    }
+  }
   if (tick == predictions_tick_) predictions_.clear();  // corrected against the truth it replaces
   TruthFrame& f = truth_[tick];
   f.height.assign(truth.height.begin(), truth.height.end());
   if (config_.normals) {
     f.slope_x.assign(truth.slope_x.begin(), truth.slope_x.end());
     f.slope_z.assign(truth.slope_z.begin(), truth.slope_z.end());
+  }
+  if (config_.choppy) {
+    f.disp_x.assign(truth.disp_x.begin(), truth.disp_x.end());
+    f.disp_z.assign(truth.disp_z.begin(), truth.disp_z.end());
+    f.disp_xx.assign(truth.disp_xx.begin(), truth.disp_xx.end());
+    f.disp_zz.assign(truth.disp_zz.begin(), truth.disp_zz.end());
+    f.disp_xz.assign(truth.disp_xz.begin(), truth.disp_xz.end());
   }
   if (!have_truth_ || tick > newest_) newest_ = tick;
   have_truth_ = true;
@@ -136,7 +156,8 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_key(Tick tick) {
   ModalState predicted;
   scenes_.model_state(tick, predicted);
   const Corrections corrections = correct_once(tick, predicted);
-  const double samples = static_cast<double>(model_.n()) * model_.n() * (config_.normals ? 3 : 1);
+  const double samples =
+      static_cast<double>(model_.n()) * model_.n() * (1 + (config_.normals ? 2 : 0) + (config_.choppy ? 5 : 0));
   if (static_cast<double>(corrections.total()) > options_.modeled_key_max_correction_share * samples &&
       tick > 0 && truth_.count(tick - 1) != 0)
     return explicit_key(tick);
@@ -226,14 +247,22 @@ Corrections Encoder::correct_once(Tick tick, const ModalState& predicted) {
 // within half a step of the truth (fields_ then holds exactly what the decoder shows).
 Corrections Encoder::correct(Tick tick, const ModalState& predicted) {
   const TruthFrame& truth = truth_.at(tick);
-  model_.synthesize(predicted.cur, fields_);
+  model_.synthesize(predicted.cur, scenes_.at(tick)->scene.choppiness, fields_);
   Corrections corr;
   const double hunit = static_cast<double>(config_.height_step_m) / 65536.0;
   const double sunit = static_cast<double>(config_.slope_step) / 4096.0;
+  const double dunit = static_cast<double>(config_.disp_step_m) / 65536.0;
   correct_channel(fields_.height, truth.height, hunit, config_.height_step_m, kHeightQuantumShift, corr.height);
   if (config_.normals) {
     correct_channel(fields_.slope_x, truth.slope_x, sunit, config_.slope_step, kSlopeQuantumShift, corr.slope_x);
     correct_channel(fields_.slope_z, truth.slope_z, sunit, config_.slope_step, kSlopeQuantumShift, corr.slope_z);
+  }
+  if (config_.choppy) {
+    correct_channel(fields_.disp_x, truth.disp_x, dunit, config_.disp_step_m, kDispQuantumShift, corr.disp_x);
+    correct_channel(fields_.disp_z, truth.disp_z, dunit, config_.disp_step_m, kDispQuantumShift, corr.disp_z);
+    correct_channel(fields_.disp_xx, truth.disp_xx, sunit, config_.slope_step, kSlopeQuantumShift, corr.disp_xx);
+    correct_channel(fields_.disp_zz, truth.disp_zz, sunit, config_.slope_step, kSlopeQuantumShift, corr.disp_zz);
+    correct_channel(fields_.disp_xz, truth.disp_xz, sunit, config_.slope_step, kSlopeQuantumShift, corr.disp_xz);
   }
   return corr;
 }
@@ -247,6 +276,7 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predic
   frame->base = key ? frame->id : base;
   frame->stats.corrections_height = corr.height.size();
   frame->stats.corrections_slope = corr.slope_x.size() + corr.slope_z.size();
+  frame->stats.corrections_choppy = corr.total() - corr.height.size() - frame->stats.corrections_slope;
   frame->reconstruction.tick = tick;
   frame->reconstruction.complete = true;
   to_float(fields_, config_, frame->reconstruction);
@@ -257,10 +287,12 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predic
   layout.spectral_items = explicit_key ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
   layout.samples = static_cast<std::uint32_t>(n) * n;
   layout.normals = config_.normals;
+  layout.choppy = config_.choppy;
   ChunkHeader proto;
   proto.key = key != nullptr;
   proto.modeled = key && key->modeled;
   proto.normals = config_.normals;
+  proto.choppy = config_.choppy;
   proto.scene_tag = scenes_.at(tick)->tag;
   proto.pos_shift = static_cast<std::uint8_t>(explicit_key ? key->pos_shift : 0);
   proto.vel_shift = static_cast<std::uint8_t>(explicit_key ? key->vel_shift : 0);
@@ -339,6 +371,7 @@ void Encoder::chunk_frame(EncodedFrame& frame, const BodyLayout& layout, const C
     frame.stats.cost.key_bits += best_cost.key_bits;
     frame.stats.cost.height_bits += best_cost.height_bits;
     frame.stats.cost.slope_bits += best_cost.slope_bits;
+    frame.stats.cost.choppy_bits += best_cost.choppy_bits;
     guess = lo - begin;
     begin = lo;
   }

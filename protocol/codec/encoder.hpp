@@ -41,15 +41,17 @@ struct EncoderOptions {
   double modeled_key_max_correction_share = 0.02;
 };
 
-// A view of one sim frame (row-major z * n + x); slopes required when the stream has normals.
+// A view of one sim frame (row-major z * n + x); slopes required when the stream has normals, the
+// displacement and its derivatives (choppiness applied) when it is choppy.
 struct TruthView {
   std::span<const float> height;
   std::span<const float> slope_x, slope_z;
+  std::span<const float> disp_x, disp_z, disp_xx, disp_zz, disp_xz;
 };
 
 struct FrameStats {
   std::size_t payload_bytes = 0;
-  std::size_t corrections_height = 0, corrections_slope = 0;
+  std::size_t corrections_height = 0, corrections_slope = 0, corrections_choppy = 0;
   BodyCost cost;  // ideal bits per section (statistics)
 };
 
@@ -96,7 +98,7 @@ class Encoder {
 
  private:
   struct TruthFrame {
-    std::vector<float> height, slope_x, slope_z;
+    std::vector<float> height, slope_x, slope_z, disp_x, disp_z, disp_xx, disp_zz, disp_xz;
   };
   struct KeyCoding {
     bool modeled = true;

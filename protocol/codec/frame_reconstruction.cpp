@@ -6,9 +6,14 @@
 namespace ocean::codec {
 
 void apply_corrections(SampleFields& f, const Corrections& c) {
-  for (const Correction& k : c.height) f.height[k.pos] = wadd(f.height[k.pos], wshl(k.value, kHeightQuantumShift));
-  for (const Correction& k : c.slope_x) f.slope_x[k.pos] = wadd(f.slope_x[k.pos], wshl(k.value, kSlopeQuantumShift));
-  for (const Correction& k : c.slope_z) f.slope_z[k.pos] = wadd(f.slope_z[k.pos], wshl(k.value, kSlopeQuantumShift));
+  std::vector<std::int64_t>* fields[kCorrectionChannels] = {&f.height, &f.slope_x, &f.slope_z,  &f.disp_x,
+                                                            &f.disp_z, &f.disp_xx, &f.disp_zz, &f.disp_xz};
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) {
+    const int shift = ch == 0 || ch == 3 || ch == 4 ? kHeightQuantumShift : kSlopeQuantumShift;
+    static_assert(kDispQuantumShift == kHeightQuantumShift);
+    std::vector<std::int64_t>& field = *fields[ch];
+    for (const Correction& k : channel(c, ch)) field[k.pos] = wadd(field[k.pos], wshl(k.value, shift));
+  }
 }
 
 std::vector<std::int64_t> height_correction_field(int n, const std::vector<Correction>& height) {
@@ -34,18 +39,35 @@ ModalState key_state(const ModalModel& model, std::span<const KeyCoefficient> co
   return s;
 }
 
+namespace {
+
+void convert(const std::vector<std::int64_t>& from, double scale, std::vector<float>& to) {
+  to.resize(from.size());
+  for (std::size_t i = 0; i < from.size(); ++i) to[i] = static_cast<float>(static_cast<double>(from[i]) * scale);
+}
+
+}  // namespace
+
 void to_float(const SampleFields& f, const StreamConfig& config, ReconstructedFrame& out) {
   const double hscale = static_cast<double>(config.height_step_m) / 65536.0;
   const double sscale = static_cast<double>(config.slope_step) / 4096.0;
-  out.height.resize(f.height.size());
-  for (std::size_t i = 0; i < f.height.size(); ++i)
-    out.height[i] = static_cast<float>(static_cast<double>(f.height[i]) * hscale);
-  out.slope_x.resize(f.slope_x.size());
-  for (std::size_t i = 0; i < f.slope_x.size(); ++i)
-    out.slope_x[i] = static_cast<float>(static_cast<double>(f.slope_x[i]) * sscale);
-  out.slope_z.resize(f.slope_z.size());
-  for (std::size_t i = 0; i < f.slope_z.size(); ++i)
-    out.slope_z[i] = static_cast<float>(static_cast<double>(f.slope_z[i]) * sscale);
+  const double dscale = static_cast<double>(config.disp_step_m) / 65536.0;
+  convert(f.height, hscale, out.height);
+  convert(f.slope_x, sscale, out.slope_x);
+  convert(f.slope_z, sscale, out.slope_z);
+  convert(f.disp_x, dscale, out.disp_x);
+  convert(f.disp_z, dscale, out.disp_z);
+  convert(f.disp_xx, sscale, out.disp_xx);
+  convert(f.disp_zz, sscale, out.disp_zz);
+  convert(f.disp_xz, sscale, out.disp_xz);
+  out.jacobian.resize(out.disp_xx.size());
+  for (std::size_t i = 0; i < out.jacobian.size(); ++i) {
+    // The sim's formula in float: the same operations on (nearly) the same inputs.
+    const float xx = out.disp_xx[i], zz = out.disp_zz[i], xz = out.disp_xz[i];
+    const float a = 1.0f + xx, b = 1.0f + zz, c = xz * xz;
+    const float ab = a * b;
+    out.jacobian[i] = ab - c;
+  }
 }
 
 }  // namespace ocean::codec

@@ -13,15 +13,21 @@
 
 namespace ocean::codec {
 
-// What a client renders: floats in metres (height) and dimensionless slopes, row-major z * n + x.
+// What a client renders: floats in metres (height, displacement) and dimensionless slopes and
+// derivatives, row-major z * n + x. Fields a stream does not carry are empty.
 struct ReconstructedFrame {
   Tick tick = 0;
   bool complete = false;  // all chunks arrived (only complete frames can be baselines)
   std::uint64_t shared_id = 0;  // nonzero: this very frame is shown by every decoder of a DecodeMemo that got it
   std::vector<float> height, slope_x, slope_z;
+  // Choppy streams: horizontal displacement (choppiness applied, as the sim's), its derivatives
+  // dDx/dx, dDz/dz, dDx/dz, and the Jacobian (1 + xx)(1 + zz) - xz^2 of the displaced grid,
+  // which folds (foam) where it falls low.
+  std::vector<float> disp_x, disp_z, disp_xx, disp_zz, disp_xz, jacobian;
 };
 
-// fields += corrections (height in step/4 quanta, slopes in slope_step/4 quanta).
+// fields += corrections (height and displacement in step/4 quanta, slopes and displacement
+// derivatives in slope_step/4 quanta).
 void apply_corrections(SampleFields& fields, const Corrections& corrections);
 
 // The n x n spatial field (height units) of a frame's height corrections.
@@ -32,7 +38,8 @@ std::vector<std::int64_t> height_correction_field(int n, const std::vector<Corre
 ModalState key_state(const ModalModel& model, std::span<const KeyCoefficient> coefficients,
                      int pos_shift, int vel_shift);
 
-// Exact output conversion: float(double(v) * step / 2^16), float(double(s) * slope_step / 2^12).
+// Exact output conversion: float(double(v) * step / 2^16), float(double(s) * slope_step / 2^12),
+// displacement as heights with disp_step; the Jacobian in float from the float derivatives.
 void to_float(const SampleFields& fields, const StreamConfig& config, ReconstructedFrame& out);
 
 }  // namespace ocean::codec

@@ -1,4 +1,5 @@
-// Coefficient tables, the two-step recurrence, synthesis of heights/slopes, correction folding.
+// Coefficient tables, the two-step recurrence, synthesis of heights, slopes and choppy channels,
+// correction folding.
 #include "modal_model.hpp"
 
 #include "det_math.hpp"
@@ -23,7 +24,13 @@ const StreamConfig& require_valid(const StreamConfig& config) {
 }  // namespace
 
 ModalModel::ModalModel(const StreamConfig& config)
-    : n_(require_valid(config).grid), log2n_(config.grid_log2()), normals_(config.normals), fft_(config.grid) {
+    : n_(require_valid(config).grid),
+      log2n_(config.grid_log2()),
+      normals_(config.normals),
+      choppy_(config.choppy),
+      patch_x_m_(config.patch_x_m),
+      patch_z_m_(config.patch_z_m),
+      fft_(config.grid) {
   const int n = n_, hc = n / 2 + 1;
   const double dt = config.dt_s();  // one tick step: deltas advance (tick - baseline) steps
   a_.resize(static_cast<std::size_t>(n) * hc);
@@ -39,6 +46,8 @@ ModalModel::ModalModel(const StreamConfig& config)
   // d/dx in spectral space is i kx; the factor converts height units per metre to slope units.
   const double factor = (static_cast<double>(config.height_step_m) / 65536.0) /
                         (static_cast<double>(config.slope_step) / 4096.0);
+  disp_factor_ = (static_cast<double>(config.height_step_m) / 65536.0) / (static_cast<double>(config.disp_step_m) / 65536.0);
+  jac_factor_ = factor;
   kx_coef_.assign(hc, 0);
   kz_coef_.assign(n, 0);
   if (normals_) {
@@ -56,8 +65,6 @@ ModalModel::ModalModel(const StreamConfig& config)
   const std::size_t nn = static_cast<std::size_t>(n) * n;
   z_re_.resize(nn);
   z_im_.resize(nn);
-  w_re_.resize(nn);
-  w_im_.resize(nn);
 }
 
 ModalState ModalModel::zero_state() const {
@@ -82,48 +89,125 @@ void ModalModel::advance(ModalState& s, std::uint64_t steps) const {
   for (std::uint64_t i = 0; i < steps; ++i) advance(s);
 }
 
-void ModalModel::synthesize(const HalfSpectrum& cur, SampleFields& out) {
+void ModalModel::build_choppy_coefficients(double choppiness) {
+  const int n = n_, hc = n / 2 + 1;
+  const std::size_t m = static_cast<std::size_t>(n) * hc;
+  if (ratio_[0].empty()) {
+    for (auto& r : ratio_) r.assign(m, 0.0);
+    for (int r = 0; r < n; ++r) {
+      if (r == n / 2) continue;
+      const double kz = kTwoPi * signed_index(r, n) / patch_z_m_;
+      for (int c = 0; c < n / 2; ++c) {
+        const double kx = kTwoPi * c / patch_x_m_;
+        const double k = std::sqrt(kx * kx + kz * kz);
+        if (k == 0.0) continue;
+        const std::size_t at = static_cast<std::size_t>(r) * hc + c;
+        ratio_[0][at] = kx / k;
+        ratio_[1][at] = kz / k;
+        ratio_[2][at] = (kx * kx) / k;
+        ratio_[3][at] = (kz * kz) / k;
+        ratio_[4][at] = (kx * kz) / k;
+      }
+    }
+  }
+  for (int j = 0; j < 5; ++j) {
+    const double factor = j < 2 ? disp_factor_ : jac_factor_;
+    choppy_coef_[j].resize(m);
+    for (std::size_t i = 0; i < m; ++i) choppy_coef_[j][i] = to_fixed(choppiness * ratio_[j][i] * factor, kChoppyCoefBits);
+  }
+  coef_choppiness_ = choppiness;
+}
+
+void ModalModel::synthesize_pair(const std::int64_t* ar, const std::int64_t* ai, const std::int64_t* br,
+                                 const std::int64_t* bi, std::vector<std::int64_t>& a, std::vector<std::int64_t>* b) {
   const int n = n_, hc = n / 2 + 1, shift = 2 * log2n_;
   const std::size_t nn = static_cast<std::size_t>(n) * n;
   for (int r = 0; r < n; ++r) {
     const int rm = (n - r) % n;
     for (int c = 0; c < hc; ++c) {
-      const std::int64_t hr = cur.re[r * hc + c], hi = cur.im[r * hc + c];
-      // Z = H + i Sx with Sx = i kx H, so one inverse FFT gives height (real) and slope_x (imag).
-      std::int64_t sxr = 0, sxi = 0, szr = 0, szi = 0;
-      if (normals_) {
-        sxr = -mul_round_sym(kx_coef_[c], hi, kSlopeCoefBits);
-        sxi = mul_round_sym(kx_coef_[c], hr, kSlopeCoefBits);
-        szr = -mul_round_sym(kz_coef_[r], hi, kSlopeCoefBits);
-        szi = mul_round_sym(kz_coef_[r], hr, kSlopeCoefBits);
-      }
+      const std::size_t h = static_cast<std::size_t>(r) * hc + c;
+      // Z = A + iB: one inverse FFT gives A (real part) and B (imaginary part).
+      const std::int64_t xr = ar[h], xi = ai[h], yr = br ? br[h] : 0, yi = bi ? bi[h] : 0;
       const std::size_t at = static_cast<std::size_t>(r) * n + c;
-      z_re_[at] = wsub(hr, sxi);
-      z_im_[at] = wadd(hi, sxr);
-      w_re_[at] = szr;
-      w_im_[at] = szi;
+      z_re_[at] = wsub(xr, yi);
+      z_im_[at] = wadd(xi, yr);
       if (c > 0 && c < n / 2) {  // the conjugate partner -k
         const std::size_t mat = static_cast<std::size_t>(rm) * n + (n - c);
-        z_re_[mat] = wadd(hr, sxi);
-        z_im_[mat] = wsub(sxr, hi);
-        w_re_[mat] = szr;
-        w_im_[mat] = -szi;
+        z_re_[mat] = wadd(xr, yi);
+        z_im_[mat] = wsub(yr, xi);
       }
     }
   }
   fft_.inverse_2d(z_re_.data(), z_im_.data());
-  out.height.resize(nn);
-  for (std::size_t i = 0; i < nn; ++i) out.height[i] = round_shift64(z_re_[i], shift);
-  if (!normals_) {
+  a.resize(nn);
+  for (std::size_t i = 0; i < nn; ++i) a[i] = round_shift64(z_re_[i], shift);
+  if (!b) return;
+  b->resize(nn);
+  for (std::size_t i = 0; i < nn; ++i) (*b)[i] = round_shift64(z_im_[i], shift);
+}
+
+void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out) {
+  const int n = n_, hc = n / 2 + 1;
+  const std::size_t m = static_cast<std::size_t>(half_size());
+  const std::size_t nn = static_cast<std::size_t>(n) * n;
+  // The channels in order - height, [slope_x, slope_z], [disp_x, disp_z, disp_xx, disp_zz,
+  // disp_xz] - as half-spectra, synthesized in consecutive pairs (CODEC.md 7.2).
+  struct Channel {
+    const std::int64_t *re, *im;
+    std::vector<std::int64_t>* out;
+  };
+  Channel channels[8];
+  int count = 0;
+  channels[count++] = {cur.re.data(), cur.im.data(), &out.height};
+  if (normals_) {
+    for (int j = 0; j < 4; ++j) spec_[j].resize(m);
+    std::int64_t *sxr = spec_[0].data(), *sxi = spec_[1].data(), *szr = spec_[2].data(), *szi = spec_[3].data();
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < hc; ++c) {
+        const std::size_t h = static_cast<std::size_t>(r) * hc + c;
+        const std::int64_t hr = cur.re[h], hi = cur.im[h];
+        sxr[h] = -mul_round_sym(kx_coef_[c], hi, kSlopeCoefBits);  // i kx H
+        sxi[h] = mul_round_sym(kx_coef_[c], hr, kSlopeCoefBits);
+        szr[h] = -mul_round_sym(kz_coef_[r], hi, kSlopeCoefBits);
+        szi[h] = mul_round_sym(kz_coef_[r], hr, kSlopeCoefBits);
+      }
+    channels[count++] = {sxr, sxi, &out.slope_x};
+    channels[count++] = {szr, szi, &out.slope_z};
+  } else {
     out.slope_x.clear();
     out.slope_z.clear();
-    return;
   }
-  out.slope_x.resize(nn);
-  for (std::size_t i = 0; i < nn; ++i) out.slope_x[i] = round_shift64(z_im_[i], shift);
-  fft_.inverse_2d(w_re_.data(), w_im_.data());
-  out.slope_z.resize(nn);
-  for (std::size_t i = 0; i < nn; ++i) out.slope_z[i] = round_shift64(w_re_[i], shift);
+  std::vector<std::int64_t>* choppy_out[5] = {&out.disp_x, &out.disp_z, &out.disp_xx, &out.disp_zz, &out.disp_xz};
+  if (choppy_ && choppiness == 0.0) {
+    // Every factor is 0, so every field is exactly 0: no transforms needed.
+    for (auto* f : choppy_out) f->assign(nn, 0);
+  } else if (choppy_) {
+    if (choppiness != coef_choppiness_) build_choppy_coefficients(choppiness);
+    for (int j = 0; j < 5; ++j) {
+      spec_[4 + 2 * j].resize(m);
+      spec_[5 + 2 * j].resize(m);
+      std::int64_t* re = spec_[4 + 2 * j].data();
+      std::int64_t* im = spec_[5 + 2 * j].data();
+      const std::int64_t* g = choppy_coef_[j].data();
+      for (std::size_t h = 0; h < m; ++h) {
+        const std::int64_t hr = cur.re[h], hi = cur.im[h];
+        if (j < 2) {  // displacement: -i G H
+          re[h] = mul_round_sym(g[h], hi, kChoppyCoefBits);
+          im[h] = -mul_round_sym(g[h], hr, kChoppyCoefBits);
+        } else {  // its derivatives: G H
+          re[h] = mul_round_sym(g[h], hr, kChoppyCoefBits);
+          im[h] = mul_round_sym(g[h], hi, kChoppyCoefBits);
+        }
+      }
+      channels[count++] = {re, im, choppy_out[j]};
+    }
+  } else {
+    for (auto* f : choppy_out) f->clear();
+  }
+  for (int i = 0; i < count; i += 2)
+    synthesize_pair(channels[i].re, channels[i].im, i + 1 < count ? channels[i + 1].re : nullptr,
+                    i + 1 < count ? channels[i + 1].im : nullptr, *channels[i].out,
+                    i + 1 < count ? channels[i + 1].out : nullptr);
 }
 
 void ModalModel::spectrum_of(const std::int64_t* field, HalfSpectrum& out) {

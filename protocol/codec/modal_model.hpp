@@ -1,6 +1,6 @@
 // ModalModel: the decoder's physics. The state is the pair (X(t-1), X(t)) of half-spectra of the
 // height field in fixed point; every mode advances by X(t+1) = a(k) X(t) - X(t-1), a = 2 cos(w dt).
-// Also synthesizes heights and spectral slopes from X(t) and folds spatial corrections back in.
+// Also synthesizes heights, spectral slopes and the choppy channels from X(t) and folds spatial corrections back in.
 #pragma once
 
 #include "fixed_fft.hpp"
@@ -19,6 +19,11 @@ inline constexpr int kRecurrenceBits = 48;   // a(k) in Q48
 inline constexpr int kSlopeCoefBits = 32;    // k-to-slope factors in Q32
 inline constexpr int kHeightQuantumShift = 14;  // height corrections count step / 4 = 2^14 units
 inline constexpr int kSlopeQuantumShift = 10;   // slope corrections count slope_step / 4 = 2^10 units
+// Choppy channels (codec version 3): displacement in disp_step / 2^16 units, corrected in quarter
+// steps like heights; the Jacobian's inputs in slope units, corrected like slopes.
+inline constexpr int kDispFracBits = 16;
+inline constexpr int kDispQuantumShift = 14;
+inline constexpr int kChoppyCoefBits = 32;  // per-mode choppy factors in Q32
 
 // n rows x (n/2 + 1) columns (kx >= 0 half), row-major; the rest follows by X(-k) = conj X(k).
 struct HalfSpectrum {
@@ -36,6 +41,9 @@ struct ModalState {
 struct SampleFields {
   std::vector<std::int64_t> height;            // step / 2^16 units
   std::vector<std::int64_t> slope_x, slope_z;  // slope_step / 2^12 units; empty without normals
+  // Choppy streams only (else empty), all scaled by the scene's choppiness lambda:
+  std::vector<std::int64_t> disp_x, disp_z;    // D = -i lambda k/|k| X, disp_step / 2^16 units
+  std::vector<std::int64_t> disp_xx, disp_zz, disp_xz;  // dDx/dx, dDz/dz, dDx/dz, slope units
 };
 
 class ModalModel {
@@ -46,6 +54,7 @@ class ModalModel {
   int half_cols() const { return n_ / 2 + 1; }
   int half_size() const { return n_ * (n_ / 2 + 1); }
   bool normals() const { return normals_; }
+  bool choppy() const { return choppy_; }
 
   ModalState zero_state() const;
 
@@ -53,8 +62,9 @@ class ModalModel {
   void advance(ModalState& state) const;
   void advance(ModalState& state, std::uint64_t steps) const;
 
-  // Heights (and slopes when streamed) of the field whose spectrum is `cur`.
-  void synthesize(const HalfSpectrum& cur, SampleFields& out);
+  // Heights (and slopes, displacement and its derivatives when streamed) of the field whose
+  // spectrum is `cur`; `choppiness` is the lambda of the scene in force at the frame's tick.
+  void synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out);
 
   // Half-spectrum of a real field (n x n, units as heights), made exactly Hermitian.
   void spectrum_of(const std::int64_t* field, HalfSpectrum& out);
@@ -72,15 +82,30 @@ class ModalModel {
   std::int64_t recurrence_coef(int index) const { return a_[index]; }
 
  private:
+  void build_choppy_coefficients(double choppiness);
+  // One inverse FFT of two real fields packed as A + iB, each given by its half-spectrum (re, im)
+  // arrays over the half-spectrum index; rounded into a and b (b may be null).
+  void synthesize_pair(const std::int64_t* ar, const std::int64_t* ai, const std::int64_t* br,
+                       const std::int64_t* bi, std::vector<std::int64_t>& a, std::vector<std::int64_t>* b);
+
   int n_;
   int log2n_;
   bool normals_;
+  bool choppy_;
+  double patch_x_m_, patch_z_m_;
+  double disp_factor_ = 0.0, jac_factor_ = 0.0;  // height units to displacement / slope units
   std::vector<std::int64_t> a_;       // Q48, per half-spectrum mode
   std::vector<std::int64_t> kx_coef_; // Q32 per column c in [0, n/2]
   std::vector<std::int64_t> kz_coef_; // Q32 per row r in [0, n)
   std::vector<std::int32_t> key_modes_;
+  // Choppy: kx/k, kz/k, kx^2/k, kz^2/k, kx kz/k per half-spectrum mode (0 at DC and Nyquist), and
+  // their Q32 factors for the choppiness they were last built for.
+  std::vector<double> ratio_[5];
+  std::vector<std::int64_t> choppy_coef_[5];
+  double coef_choppiness_ = -1.0;
+  std::vector<std::int64_t> spec_[14];  // derived half-spectra (re, im): two slopes, five choppy channels
   FixedFft fft_;
-  std::vector<std::int64_t> z_re_, z_im_, w_re_, w_im_;  // n x n scratch
+  std::vector<std::int64_t> z_re_, z_im_;  // n x n scratch
 };
 
 }  // namespace ocean::codec

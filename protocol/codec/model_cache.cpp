@@ -15,9 +15,12 @@ auto find_or_build(Entries& entries, std::size_t keep, Same same, Build build) {
 }  // namespace
 
 std::shared_ptr<const SceneModel> ModelCache::scene_model(const StreamConfig& stream, const SceneModelParams& scene) {
+  // Choppiness does not shape heights: scenes differing only in it share one model.
+  SceneModelParams heights = scene;
+  heights.choppiness = 0.0;
   return find_or_build(
-      scenes_, kKeep, [&](const SceneEntry& e) { return e.stream == stream && e.scene == scene; },
-      [&] { return SceneEntry{stream, scene, std::make_shared<const SceneModel>(stream, scene)}; });
+      scenes_, kKeep, [&](const SceneEntry& e) { return e.stream == stream && e.scene == heights; },
+      [&] { return SceneEntry{stream, heights, std::make_shared<const SceneModel>(stream, heights)}; });
 }
 
 std::shared_ptr<const ModalModel> ModelCache::recurrence(const StreamConfig& stream) {

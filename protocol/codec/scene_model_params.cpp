@@ -42,6 +42,8 @@ std::string validate(const SceneModelParams& p) {
     m << "small_wave_m = " << p.small_wave_m << ": must be in [0, 1e6] (0 = half the grid spacing)";
   else if (!in_range(p.gravity_mps2, 0.01, 1000.0))
     m << "gravity_mps2 = " << p.gravity_mps2 << ": must be in [0.01, 1000]";
+  else if (!in_range(p.choppiness, 0.0, 100.0))
+    m << "choppiness = " << p.choppiness << ": must be in [0, 100]";
   return m.str();
 }
 

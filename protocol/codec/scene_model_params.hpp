@@ -1,6 +1,6 @@
 // SceneModelParams: the part of a scene that shapes the heights, as the codec's scene model sees
-// it. It mirrors the sim's SceneParams field for field (choppiness aside, which moves samples but
-// not heights) because the codec may not depend on the sim: clients never link it.
+// it. It mirrors the sim's SceneParams field for field because the codec may not depend on the sim:
+// clients never link it. Choppiness moves samples but not heights: only the choppy channels use it.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +20,8 @@ struct SceneModelParams {
   double wind_speed_mps = 10.0, wind_dir_deg = 0.0, fetch_m = 100000.0, amplitude = 1.0;
   double depth_m = 0.0, small_wave_m = 0.0, gravity_mps2 = 9.81;
   std::uint64_t seed = 1;
+  // Scales the choppy channels (codec version 3), not the heights: scene models ignore it.
+  double choppiness = 0.0;
   bool operator==(const SceneModelParams&) const = default;
 };
 

@@ -52,11 +52,10 @@ std::string validate(const StreamConfig& c) {
     m << "tick_rate_hz = " << c.tick_rate_hz << ": must be 0 (= rate_hz) or in [rate_hz, 240]";
   else if (!(c.height_step_m >= 1e-4f && c.height_step_m <= 1.0f))
     m << "height_step_m = " << c.height_step_m << ": must be in [1e-4, 1]";
-  else if (c.normals && !(c.slope_step >= 1e-5f && c.slope_step <= 0.5f))
-    m << "slope_step = " << c.slope_step << ": must be in [1e-5, 0.5] when normals are streamed";
-  else if (c.choppy)
-    m << "choppy = true: displacement channels are not coded by codec version " << int(kCodecVersion)
-      << " (use a non-choppy profile)";
+  else if ((c.normals || c.choppy) && !(c.slope_step >= 1e-5f && c.slope_step <= 0.5f))
+    m << "slope_step = " << c.slope_step << ": must be in [1e-5, 0.5] when slopes or choppy channels are streamed";
+  else if (c.choppy && !(c.disp_step_m >= 1e-4f && c.disp_step_m <= 1.0f))
+    m << "disp_step_m = " << c.disp_step_m << ": must be in [1e-4, 1] when choppy channels are streamed";
   return m.str();
 }
 

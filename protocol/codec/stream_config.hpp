@@ -23,9 +23,11 @@ struct StreamConfig {
   std::uint16_t tick_rate_hz = 0;
   float height_step_m = 0.01f;   // height error bound is step / 2; in [1e-4, 1] m
   float slope_step = 1.0f / 256; // slope error bound is step / 2 (normals only); in [1e-5, 0.5]
-  float disp_step_m = 0.01f;     // choppy only (not yet coded by this codec version)
+  float disp_step_m = 0.01f;     // displacement error bound is step / 2 (choppy only); in [1e-4, 1]
   bool normals = true;           // stream slopes dh/dx, dh/dz
-  bool choppy = false;           // no codec version codes displacement yet: validate() refuses it
+  // Stream the horizontal displacement and its derivatives (the Jacobian's inputs, bounded by
+  // slope_step / 2): codec version 3.
+  bool choppy = false;
 
   // The profile's grid/rate/steps/channels with the scene's patch and physics.
   // depth_m as on the wire: 0 for deep water (scene_wire::wire_depth converts the sim's infinity).

@@ -59,6 +59,7 @@ SceneModelParams scene_model_params(const protocol::SceneParams& s) {
   m.small_wave_m = s.small_wave_m;
   m.gravity_mps2 = s.gravity_mps2;
   m.seed = s.seed;
+  m.choppiness = s.choppiness;
   return m;
 }
 

@@ -243,7 +243,7 @@ const ConfigOption kOptions[] = {
        return error;
      },
      [](const ServerConfig& c) { return std::to_string(c.epoch_unix_ms); }},
-    {"profiles", "LIST", "comma-separated stream profiles to offer (mobile, desktop, lite; desktop-choppy is not streamed yet: the codec has no choppy channels); each grid <= --size",
+    {"profiles", "LIST", "comma-separated stream profiles to offer (mobile, desktop, desktop-choppy, lite); each grid <= --size",
      ValueKind::text_list, false,
      [](ServerConfig& c, std::string_view v) {
        c.profiles = split_list(v);

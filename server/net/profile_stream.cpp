@@ -36,7 +36,8 @@ void ProfileStream::set_scene(Tick from, std::uint32_t serial, const codec::Scen
 void ProfileStream::add_truth(Tick tick, const sim::Frame& frame) {
   encoded_.clear();
   encode_seconds_ = 0.0;
-  encoder_->add_truth(tick, codec::TruthView{frame.height, frame.slope_x, frame.slope_z});
+  encoder_->add_truth(tick, codec::TruthView{frame.height, frame.slope_x, frame.slope_z, frame.disp_x, frame.disp_z,
+                                             frame.disp_xx, frame.disp_zz, frame.disp_xz});
   have_newest_ = true;
   newest_tick_ = tick;
 }

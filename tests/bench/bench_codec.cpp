@@ -59,6 +59,11 @@ struct Tally {
 double min_of(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
 
 // The fields every method reports; ours adds its own before printing.
+// Every channel the sim evaluated (the choppy ones are empty unless requested).
+codec::TruthView truth_of(const sim::Frame& f) {
+  return {f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.disp_xx, f.disp_zz, f.disp_xz};
+}
+
 common::JsonWriter common_json(const Tally& t, const Profile& p, int n) {
   const double seconds = t.frames / p.rate_hz;
   const double kbps = t.bytes * 8.0 / seconds / 1000.0;
@@ -180,13 +185,18 @@ int run_codec(int argc, char** argv) {
   int lag = 1;
   int key_bits = 6;
   int vel_bits = 3;
+  double choppiness = 1.2;
+  double wind_mps = -1.0;
   CLI::App app{"ocean-bench codec: stream codec vs raw / q16+zstd / delta+zstd on real sim frames"};
-  app.add_option("--profile", profiles_arg, "profile names, comma separated (mobile, desktop, lite)")->capture_default_str();
+  app.add_option("--profile", profiles_arg, "profile names, comma separated (mobile, desktop, desktop-choppy, lite)")->capture_default_str();
   app.add_option("--seconds", seconds, "simulated seconds per profile")->capture_default_str();
   app.add_option("--baseline-lag", lag, "ticks between a frame and its baseline (acks an RTT late); ours is also run at lag 4")
       ->capture_default_str();
   app.add_option("--key-bits", key_bits, "key precision: position rms about step * 2^-bits")->capture_default_str();
   app.add_option("--key-velocity-bits", vel_bits, "key velocity this many bits finer than position")->capture_default_str();
+  app.add_option("--choppiness", choppiness, "the scene's lambda for choppy profiles (others stream no displacement)")
+      ->capture_default_str()->check(CLI::Range(0.0, 100.0));
+  app.add_option("--wind", wind_mps, "wind speed m/s (default: the sim's default scene)")->check(CLI::Range(0.0, 100.0));
   app.add_flag("--json", json, "JSON lines (the only output format)");
   try {
     app.parse(argc, argv);
@@ -209,11 +219,9 @@ int run_codec(int argc, char** argv) {
       std::fprintf(stderr, "ocean-bench codec: unknown profile '%s'\n", name.c_str());
       return 2;
     }
-    if (p->choppy) {
-      std::fprintf(stderr, "ocean-bench codec: profile '%s' is choppy; codec v1 does not code displacement\n", name.c_str());
-      return 2;
-    }
     sim::SceneParams scene;
+    if (p->choppy) scene.choppiness = choppiness;
+    if (wind_mps >= 0.0) scene.wind_speed_mps = wind_mps;
     sim::Ocean ocean(scene);
     const codec::SceneModelParams model = codec::scene_model_params(scene_wire::to_wire(scene));
     const int n = p->grid;
@@ -249,7 +257,7 @@ int run_codec(int argc, char** argv) {
     constexpr Tick kTick0 = 1'000'000'000;
     for (int tick = 0; tick <= frames; ++tick) {
       ocean.evaluate_band(codec::tick_time_s(static_cast<std::int64_t>(kTick0) + tick, p->rate_hz), n, n, f,
-                          sim::FrameRequest{true, false});
+                          sim::FrameRequest{true, p->choppy});
       if (tick == 1) {  // the explicit (version 1) key of the same tick, for comparison
         codec::EncoderOptions eo;
         eo.key_precision_bits = key_bits;
@@ -259,9 +267,9 @@ int run_codec(int argc, char** argv) {
         explicit_keys.set_scene(0, 0, model);
         sim::Frame before;
         ocean.evaluate_band(codec::tick_time_s(static_cast<std::int64_t>(kTick0), p->rate_hz), n, n, before,
-                            sim::FrameRequest{true, false});
-        explicit_keys.add_truth(kTick0, {before.height, before.slope_x, before.slope_z});
-        explicit_keys.add_truth(kTick0 + 1, {f.height, f.slope_x, f.slope_z});
+                            sim::FrameRequest{true, p->choppy});
+        explicit_keys.add_truth(kTick0, truth_of(before));
+        explicit_keys.add_truth(kTick0 + 1, truth_of(f));
         for (const Chunk& c : explicit_keys.encode_key(kTick0 + 1)->chunks)
           for (Ours& o : ours) o.key_bytes_explicit += c.payload.size();
       }
@@ -332,7 +340,7 @@ int run_codec(int argc, char** argv) {
       for (Ours& o : ours) {
         const Tick t = kTick0 + static_cast<Tick>(tick);
         t0 = bench::now_ms();
-        o.enc->add_truth(t, {f.height, f.slope_x, f.slope_z});
+        o.enc->add_truth(t, truth_of(f));
         if (tick == 0) continue;
         std::shared_ptr<const codec::EncodedFrame> e;
         if (tick == 1)
@@ -346,7 +354,8 @@ int run_codec(int argc, char** argv) {
         const codec::ReconstructedFrame* r = o.dec->latest();
         t2 = bench::now_ms();
         if (!r || r->tick != t || !r->complete || r->height != e->reconstruction.height ||
-            r->slope_x != e->reconstruction.slope_x || r->slope_z != e->reconstruction.slope_z)
+            r->slope_x != e->reconstruction.slope_x || r->slope_z != e->reconstruction.slope_z ||
+            r->disp_x != e->reconstruction.disp_x || r->jacobian != e->reconstruction.jacobian)
           o.bitwise = false;
         std::size_t bytes = 0;
         for (const Chunk& c : e->chunks) bytes += c.payload.size();

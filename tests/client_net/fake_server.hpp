@@ -28,6 +28,7 @@ struct FakeServerOptions {
   bool trust_acks = true;            // false: UDP deltas predicted from the last frame sent (a broken server)
   double noise_m = 0.0;              // truth noise: > 0 forces corrections, so deltas of several chunks
   std::size_t max_payload = codec::kDefaultMaxPayload;
+  bool broken_stream_params = false;  // the Welcome names a stream no decoder accepts (a broken server)
 };
 
 class FakeServer {
@@ -55,6 +56,7 @@ class FakeServer {
     protocol::Welcome w;
     w.session_id = kSessionId;
     w.stream = codec::wire_stream(codec::StreamConfig::from_profile(profile_, 64.0, 64.0, 9.81, 0.0));  // choppy as the profile says
+    if (options_.broken_stream_params) w.stream.height_step_m = 0.0f;
     w.scene.size_x = w.scene.size_z = std::max<std::uint16_t>(64, profile_.grid);
     w.scene.patch_x_m = w.scene.patch_z_m = 64.0;
     w.scene.wind_speed_mps = 10.0;
@@ -134,8 +136,8 @@ class FakeServer {
   int udp_hellos = 0, set_transport_tcp = 0, keyframes_sent = 0, rejected = 0, pings = 0;
 
  private:
-  // The encoder cannot code choppy channels (no codec version does yet); the Welcome still says what the
-  // profile says, which is how the refusal test offers a stream the client cannot decode.
+  // Its truth has heights and slopes only, so it encodes without choppy channels whatever the
+  // profile (the Welcome still says what the profile says).
   static codec::StreamConfig codec_config(const Profile& profile) {
     codec::StreamConfig c = codec::StreamConfig::from_profile(profile, 64.0, 64.0, 9.81, 0.0);
     c.choppy = false;

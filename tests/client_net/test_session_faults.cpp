@@ -189,12 +189,12 @@ TEST_CASE("session: an Error before the Welcome, a Bye, or an undecodable stream
   }
   {
     FakeServerOptions options;
-    options.profile_id = 3;  // desktop-choppy, which the codec cannot decode: only a broken server offers it
+    options.broken_stream_params = true;  // a height step of 0: only a broken server sends it
     SessionHarness h(options);
     h.start();
     h.run_ticks(1);
     CHECK(h.session.state() == ClientSession::State::closed);
-    CHECK(h.session.close_reason().find("choppy") != std::string::npos);
+    CHECK(h.session.close_reason().find("height_step_m") != std::string::npos);
   }
 }
 

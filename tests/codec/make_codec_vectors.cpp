@@ -114,7 +114,7 @@ TruthView model_truth(const StreamConfig& stream, const protocol::SceneParams& s
   model.state_at(tick, state);
   ModalModel modal(with_depth);
   SampleFields fields;
-  modal.synthesize(state.cur, fields);
+  modal.synthesize(state.cur, 0.0, fields);
   to_float(fields, stream, storage);
   float sign = 1.0f;
   for (const Push& p : pushed) {

@@ -5,6 +5,7 @@
 #include "modal_model.hpp"
 #include "ocean.hpp"
 #include "scene_model.hpp"
+#include "sim_scene.hpp"
 #include "state_hash.hpp"
 
 #include <catch2/catch.hpp>
@@ -19,29 +20,11 @@
 #include <vector>
 
 using namespace ocean::codec;
+using ocean::codec::test::to_sim;
 
 namespace {
 
 constexpr std::uint64_t kTicks[] = {0, 1, 12345, (std::uint64_t{1} << 32) + 7, 76'000'000'000};
-
-ocean::sim::SceneParams to_sim(const SceneModelParams& s) {
-  ocean::sim::SceneParams p;
-  p.size_x = s.size_x;
-  p.size_z = s.size_z;
-  p.patch_x_m = s.patch_x_m;
-  p.patch_z_m = s.patch_z_m;
-  p.spectrum = static_cast<ocean::sim::SpectrumKind>(s.spectrum);
-  p.spreading = static_cast<ocean::sim::SpreadingKind>(s.spreading);
-  p.wind_speed_mps = s.wind_speed_mps;
-  p.wind_dir_deg = s.wind_dir_deg;
-  p.fetch_m = s.fetch_m;
-  p.amplitude = s.amplitude;
-  p.depth_m = s.depth_m == 0.0 ? std::numeric_limits<double>::infinity() : s.depth_m;
-  p.small_wave_m = s.small_wave_m;
-  p.gravity_mps2 = s.gravity_mps2;
-  p.seed = s.seed;
-  return p;
-}
 
 StreamConfig stream_for(const SceneModelParams& s, int grid, std::uint16_t tick_rate_hz = 240) {
   StreamConfig c;
@@ -121,7 +104,7 @@ Diff compare_with_sim(ocean::sim::Ocean& ocean, const StreamConfig& stream, cons
   for (int which = 0; which < 2; ++which) {  // X(tick) and X(tick - 1)
     const std::int64_t at = static_cast<std::int64_t>(tick) - which;
     SampleFields fields;
-    modal.synthesize(which == 0 ? state.cur : state.prev, fields);
+    modal.synthesize(which == 0 ? state.cur : state.prev, 0.0, fields);
     ocean::sim::Frame frame;
     ocean.evaluate_band(tick_time_s(at, r), stream.grid, stream.grid, frame);
     for (std::size_t i = 0; i < frame.height.size(); ++i) {
@@ -241,8 +224,8 @@ TEST_CASE("the predicted state agrees with the decoder's recurrence", "[scene_mo
         modal.advance(advanced, steps);
         model.state_at(tick + steps, direct);
         SampleFields a, b;
-        modal.synthesize(advanced.cur, a);
-        modal.synthesize(direct.cur, b);
+        modal.synthesize(advanced.cur, 0.0, a);
+        modal.synthesize(direct.cur, 0.0, b);
         double dh = 0.0;
         for (std::size_t i = 0; i < a.height.size(); ++i)
           dh = std::max(dh, std::fabs(static_cast<double>(a.height[i] - b.height[i])) * unit);

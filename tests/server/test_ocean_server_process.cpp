@@ -49,7 +49,6 @@ TEST_CASE("ocean-server exits 2 on stderr for every configuration error of issue
       negative_tick("[[schedule]]\ntick = -5\nwind-speed = 3.0\n");
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
       {{"--size", "64", "--profiles", "lite", "--epoch", "0"}, "ocean-server: --epoch 0: the current time is"},
-      {{"--size", "256", "--profiles", "desktop-choppy"}, "ocean-server: --profiles: no offered profile can be streamed"},
       {{"--size", "16"}, "ocean-server: --profiles: profile 'mobile' streams a 64x64 grid, larger than the simulation (--size 16)"},
       {{"--config", out_of_range.path()}, "ocean-server: " + out_of_range.path() + ":1: --wind-speed"},
       {{"--config", bad_rate.path()}, "ocean-server: " + bad_rate.path() + ":2: --tick-rate 7"},
