@@ -8,8 +8,8 @@
 
 namespace ocean::loadtest {
 
-GroundTruth::GroundTruth(int tick_rate_hz, std::size_t cache_frames)
-    : rate_hz_(tick_rate_hz), cache_frames_(std::max<std::size_t>(1, cache_frames)) {
+GroundTruth::GroundTruth(int tick_rate_hz, bool choppy, std::size_t cache_frames)
+    : rate_hz_(tick_rate_hz), choppy_(choppy), cache_frames_(std::max<std::size_t>(1, cache_frames)) {
   if (tick_rate_hz < 1) throw std::invalid_argument("GroundTruth: tick_rate_hz must be >= 1, got " + std::to_string(tick_rate_hz));
 }
 
@@ -49,7 +49,7 @@ std::shared_ptr<const sim::Frame> GroundTruth::at(Tick tick, int grid) {
   if (!scene) throw std::logic_error("GroundTruth::at: no scene yet (call set_scene with the Welcome's scene first)");
   while (cache_.size() >= cache_frames_) cache_.erase(cache_.begin());
   auto frame = std::make_shared<sim::Frame>();
-  scene->ocean->evaluate_band(time_of(tick), grid, grid, *frame, sim::FrameRequest{true, false});
+  scene->ocean->evaluate_band(time_of(tick), grid, grid, *frame, sim::FrameRequest{true, choppy_});
   ++evaluations_;
   cache_[key] = frame;
   return frame;

@@ -17,15 +17,18 @@ namespace ocean::loadtest {
 
 class GroundTruth {
  public:
-  // tick_rate_hz: the server's tick rate (1 / Welcome.tick_period_s, rounded).
-  explicit GroundTruth(int tick_rate_hz, std::size_t cache_frames = 256);
+  // tick_rate_hz: the server's tick rate (1 / Welcome.tick_period_s, rounded). choppy: the stream
+  // carries displacement and its derivatives (Welcome.stream.choppy), so the truth evaluates them
+  // too; five more transforms a frame, spent only when they are checked.
+  explicit GroundTruth(int tick_rate_hz, bool choppy = false, std::size_t cache_frames = 256);
 
   // The scene in force from effective_tick on. Re-announcing a known scene changes nothing, so
   // every client may report the Welcome and SceneUpdates it sees.
   void set_scene(Tick effective_tick, const protocol::SceneParams& scene);
 
-  // The grid x grid band (heights and slopes) at tick. Shared, so that a caller may compare a frame
-  // with it after handing the truth to another thread (load_run.cpp locks around at() only).
+  // The grid x grid band (heights, slopes and, when choppy, displacement and its derivatives) at
+  // tick. Shared, so that a caller may compare a frame with it after handing the truth to another
+  // thread (load_run.cpp locks around at() only).
   std::shared_ptr<const sim::Frame> at(Tick tick, int grid);
 
   // Server time of a tick as the server computes it (whole seconds and the fraction apart).
@@ -42,6 +45,7 @@ class GroundTruth {
   SceneEntry* scene_for(Tick tick);
 
   int rate_hz_;
+  bool choppy_;
   std::size_t cache_frames_;
   std::vector<SceneEntry> scenes_;  // sorted by effective_tick
   std::map<std::uint64_t, std::shared_ptr<const sim::Frame>> cache_;  // key: tick << 16 | grid, so begin() is the oldest

@@ -101,7 +101,7 @@ FrameError LoadShard::checked_error(const codec::ReconstructedFrame& frame, Tick
     truth = shared_.truth->at(tick, facts_->grid);
   }
   ++truth_checks_;
-  const FrameError error = frame_error(frame.height, frame.slope_x, frame.slope_z, truth->height, truth->slope_x, truth->slope_z);
+  const FrameError error = frame_error(channels_of(frame), channels_of(*truth));  // every streamed channel
   if (frame.shared_id != 0) {
     verdicts_.emplace(frame.shared_id, error);
     while (verdicts_.size() > 4096) verdicts_.erase(verdicts_.begin());  // ids only grow: the oldest go
@@ -116,7 +116,7 @@ void LoadShard::on_welcome(std::size_t k, const protocol::Welcome& w) {
     if (!shared_.truth) {
       first = true;
       shared_.facts = StreamFacts::from(w);
-      shared_.truth.emplace(shared_.facts->tick_rate_hz);
+      shared_.truth.emplace(shared_.facts->tick_rate_hz, shared_.facts->choppy);
       shared_.truth->set_scene(0, w.scene);
     } else {
       shared_.truth->set_scene(w.current_tick, w.scene);

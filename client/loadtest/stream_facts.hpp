@@ -18,6 +18,7 @@ struct StreamFacts {
   int tick_rate_hz = 0;
   Tick interval_ticks = 1;  // ticks between the stream's frames
   int grid = 0;
+  bool choppy = false;  // the stream carries displacement and its derivatives: so must the truth
   ErrorBounds bounds{0.0, 0.0};
   double epoch_s = 0.0;  // unix seconds of tick 0
   double interpolation_delay_s = 0.0;
@@ -29,7 +30,9 @@ struct StreamFacts {
     if (w.stream.rate_hz)
       f.interval_ticks = std::max<Tick>(1, static_cast<Tick>(std::lround(f.tick_rate_hz / double(w.stream.rate_hz))));
     f.grid = w.stream.grid;
-    f.bounds = ErrorBounds{w.stream.height_step_m / 2.0, w.stream.normals ? w.stream.slope_step / 2.0 : 0.0};
+    f.choppy = w.stream.choppy;
+    f.bounds = ErrorBounds{w.stream.height_step_m / 2.0, w.stream.normals ? w.stream.slope_step / 2.0 : 0.0,
+                           f.choppy ? w.stream.disp_step_m / 2.0 : 0.0, f.choppy ? w.stream.slope_step / 2.0 : 0.0};
     f.epoch_s = static_cast<double>(w.epoch_unix_ms) / 1000.0;
     // FrameTimeline's default: three send intervals behind (Fiedler's snapshot interpolation).
     f.interpolation_delay_s = 3.0 * f.interval_ticks * f.tick_period_s;

@@ -68,6 +68,9 @@ void FrameTimeline::fill(TimelineFrame& slot, const codec::ReconstructedFrame& f
   slot.height.assign(frame.height.begin(), frame.height.end());
   slot.slope_x.assign(frame.slope_x.begin(), frame.slope_x.end());
   slot.slope_z.assign(frame.slope_z.begin(), frame.slope_z.end());
+  slot.disp_x.assign(frame.disp_x.begin(), frame.disp_x.end());
+  slot.disp_z.assign(frame.disp_z.begin(), frame.disp_z.end());
+  slot.jacobian.assign(frame.jacobian.begin(), frame.jacobian.end());
   used_[static_cast<std::size_t>(&slot - frames_.data())] = true;
 }
 
@@ -151,21 +154,34 @@ TimelineSample FrameTimeline::sample(double now) {
   return out;
 }
 
+namespace {
+
+// out = a + w (b - a); a alone when b lacks the channel.
+void mix(float w, const std::vector<float>& a, const std::vector<float>& b, std::vector<float>& out) {
+  out.resize(a.size());
+  if (b.size() != a.size()) {
+    std::copy(a.begin(), a.end(), out.begin());
+    return;
+  }
+  for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] + w * (b[i] - a[i]);
+}
+
+}  // namespace
+
 void FrameTimeline::blend(const TimelineSample& sample, std::vector<float>& height, std::vector<float>& slope_x,
                           std::vector<float>& slope_z) {
   if (!sample.a) return;
-  const float w = sample.weight;
-  auto mix = [w](const std::vector<float>& a, const std::vector<float>& b, std::vector<float>& out) {
-    out.resize(a.size());
-    if (b.size() != a.size()) {
-      std::copy(a.begin(), a.end(), out.begin());
-      return;
-    }
-    for (std::size_t i = 0; i < a.size(); ++i) out[i] = a[i] + w * (b[i] - a[i]);
-  };
-  mix(sample.a->height, sample.b->height, height);
-  mix(sample.a->slope_x, sample.b->slope_x, slope_x);
-  mix(sample.a->slope_z, sample.b->slope_z, slope_z);
+  mix(sample.weight, sample.a->height, sample.b->height, height);
+  mix(sample.weight, sample.a->slope_x, sample.b->slope_x, slope_x);
+  mix(sample.weight, sample.a->slope_z, sample.b->slope_z, slope_z);
+}
+
+void FrameTimeline::blend(const TimelineSample& sample, FrameChannels& out) {
+  if (!sample.a) return;
+  blend(sample, out.height, out.slope_x, out.slope_z);
+  mix(sample.weight, sample.a->disp_x, sample.b->disp_x, out.disp_x);
+  mix(sample.weight, sample.a->disp_z, sample.b->disp_z, out.disp_z);
+  mix(sample.weight, sample.a->jacobian, sample.b->jacobian, out.jacobian);
 }
 
 }  // namespace ocean::client

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "arrival_clock.hpp"
+#include "frame_channels.hpp"
 #include "frame_reconstruction.hpp"
 
 #include <algorithm>
@@ -37,7 +38,9 @@ struct TimelineFrame {
   double arrival_s = 0.0;
   bool predicted = false;  // made by the extrapolator; a real frame of its tick replaces it
   std::vector<float> height, slope_x, slope_z;
+  std::vector<float> disp_x, disp_z, jacobian;  // choppy streams only
 };
+
 
 struct TimelineSample {
   enum class Status : std::uint8_t {
@@ -83,6 +86,7 @@ class FrameTimeline {
   // out = a * (1 - weight) + b * weight for every channel the frames hold (resized to fit).
   static void blend(const TimelineSample& sample, std::vector<float>& height, std::vector<float>& slope_x,
                     std::vector<float>& slope_z);
+  static void blend(const TimelineSample& sample, FrameChannels& out);
 
   double interpolation_delay_s() const { return delay_s_; }
   // The delay the jitter asks for now (>= interpolation_delay_s()).

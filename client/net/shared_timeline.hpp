@@ -45,6 +45,15 @@ class SharedTimeline {
     return out;
   }
 
+  RenderedFrame render(double now, FrameChannels& out) {
+    std::lock_guard lock(mutex_);
+    const TimelineSample s = timeline_.sample(now);
+    FrameTimeline::blend(s, out);
+    RenderedFrame r{s.status, s.render_tick, 0, 0, s.weight};
+    if (s.a) r.tick_a = s.a->tick, r.tick_b = s.b->tick;
+    return r;
+  }
+
   TimelineCounters counters() const {
     std::lock_guard lock(mutex_);
     return timeline_.counters();

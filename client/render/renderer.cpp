@@ -21,6 +21,9 @@ namespace ocean::render {
 
 namespace {
 
+// The Jacobian range over which foam goes from none to full (FoamMemory's rate is set against it).
+constexpr float kFoamBand = 0.25f;
+
 bool has_extension(const char* name) {
   const char* all = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
   return all && std::strstr(all, name) != nullptr;
@@ -47,7 +50,9 @@ bool Renderer::init(const RendererDesc& in) {
   desc_.chunks_per_side = or_default(in.chunks_per_side, 2);
   desc_.far_block_tiles = std::max(0, in.far_block_tiles);  // resolved per patch size in set_grid
   desc_.choppiness = or_default(in.choppiness, 1.0f);
-  desc_.foam_threshold = or_default(in.foam_threshold, 0.45f);
+  // A storm's streamed band (256 samples over 256 m) folds to J of about 0.45 at its crests: foam
+  // starts well above that and is full there, so whitecaps show where the surface compresses.
+  desc_.foam_threshold = or_default(in.foam_threshold, 0.7f);
   desc_.sun_colour = or_default(in.sun_colour, glm::vec3(2.6f, 2.35f, 1.9f));
   desc_.deep_colour = or_default(in.deep_colour, glm::vec3(0.01f, 0.06f, 0.10f));
   desc_.scatter_colour = or_default(in.scatter_colour, glm::vec3(0.02f, 0.12f, 0.11f));
@@ -260,7 +265,7 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
   glUniform1f(ocean_u_.choppiness, desc_.choppiness);
   glUniform1f(ocean_u_.detail_fade, 2.0f / desc_.view_distance_m);
   glUniform1f(ocean_u_.far_roughness, 0.35f);
-  glUniform2f(ocean_u_.foam, desc_.foam_threshold, 1.0f / 0.15f);
+  glUniform2f(ocean_u_.foam, desc_.foam_threshold, 1.0f / kFoamBand);
   glUniform1i(ocean_u_.sky, 0);
   glUniform3fv(ocean_u_.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
   glUniform3fv(ocean_u_.sun_colour, 1, glm::value_ptr(desc_.sun_colour));

@@ -26,7 +26,7 @@ struct RendererDesc {
   int chunks_per_side = 0;            // 2 (1 for grids under 16): LOD granularity within a tile
   int far_block_tiles = 0;            // about view distance / 5 patches (1 = off): tiles per far draw
   float choppiness = 0.0f;            // 1: scale applied to the streamed displacement
-  float foam_threshold = 0.0f;        // 0.45: foam where the Jacobian is below this
+  float foam_threshold = 0.0f;        // 0.7: foam where the Jacobian is below this, full 0.25 lower
   glm::vec3 sun_direction{0.0f};      // estimated from the sky's brightest spot
   glm::vec3 sun_colour{0.0f};         // (2.6, 2.35, 1.9): > 1 so the glitter saturates
   glm::vec3 deep_colour{0.0f};        // (0.01, 0.06, 0.10)

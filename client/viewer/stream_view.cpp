@@ -1,6 +1,7 @@
 // StreamView: grid changes, blending and upload on the render thread.
 #include "client/viewer/stream_view.hpp"
 
+#include "client/render/channel_upload.hpp"
 #include "client/viewer/thread_cpu_clock.hpp"
 
 namespace ocean::viewer {
@@ -20,20 +21,21 @@ bool StreamView::update(NetworkThread& net, double now) {
         return false;
       }
       // The old frame's samples do not fit the new grid: nothing is shown until a frame of it arrives.
-      height_.clear(), slope_x_.clear(), slope_z_.clear();
+      channels_ = {};
+      foam_.clear();
       ++grid_changes_;
     }
     shape_ = shape;
   }
   const double t0 = thread_cpu_ms();
-  last_ = net.timeline().render(now, height_, slope_x_, slope_z_);
+  last_ = net.timeline().render(now, channels_);
   const std::size_t samples = static_cast<std::size_t>(shape_.grid) * shape_.grid;
-  if (last_.status == client::TimelineSample::Status::empty || samples == 0 || height_.size() != samples) {
+  if (last_.status == client::TimelineSample::Status::empty || samples == 0 || channels_.height.size() != samples) {
     ++held_;  // the renderer keeps the last upload: the picture holds
     return true;
   }
-  const bool slopes = slope_x_.size() == samples && slope_z_.size() == samples;
-  scene_.renderer.upload_frame(height_.data(), slopes ? slope_x_.data() : nullptr, slopes ? slope_z_.data() : nullptr);
+  render::upload_channels(scene_.renderer, channels_, samples, foam_, now - last_upload_s_);
+  last_upload_s_ = now;
   upload_cpu_ms_ += thread_cpu_ms() - t0;
   ++uploads_;
   return true;

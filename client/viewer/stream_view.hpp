@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "client/render/foam_memory.hpp"
 #include "client/viewer/network_thread.hpp"
 #include "client/viewer/view_scene.hpp"
 
@@ -36,7 +37,9 @@ class StreamView {
   ViewScene scene_;
   StreamShape shape_;
   client::RenderedFrame last_;
-  std::vector<float> height_, slope_x_, slope_z_;
+  client::FrameChannels channels_;
+  render::FoamMemory foam_;
+  double last_upload_s_ = 0.0;
   std::string error_;
   std::uint64_t uploads_ = 0, grid_changes_ = 0, held_ = 0;
   double upload_cpu_ms_ = 0.0;

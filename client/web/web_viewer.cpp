@@ -9,6 +9,7 @@
 
 #include "base64.hpp"
 #include "common/json_writer.hpp"
+#include "client/render/channel_upload.hpp"
 #include "height_hash.hpp"
 #include "profile.hpp"
 
@@ -113,7 +114,8 @@ void WebViewer::on_welcome(const protocol::Welcome& welcome) {
   ticks_per_frame_ = std::max(1.0, std::round(config.send_interval_s / config.tick_period_s));
   session_frames_ = 0;
   if (welcome.stream.grid != grid_) {
-    height_.clear(), slope_x_.clear(), slope_z_.clear();
+    channels_ = {};
+    foam_.clear();
     if (!renderer_.set_grid(welcome.stream.grid, static_cast<float>(welcome.stream.patch_x_m),
                             static_cast<float>(welcome.stream.patch_z_m))) {
       // Ended once on_tcp_message has returned: the session is still on the stack here.
@@ -162,10 +164,9 @@ void WebViewer::frame(double now_s, int width, int height) {
   const std::size_t samples = static_cast<std::size_t>(grid_) * grid_;
   const client::TimelineSample sample = timeline_.sample(now_s);
   if (sample.status != client::TimelineSample::Status::empty && samples > 0) {
-    client::FrameTimeline::blend(sample, height_, slope_x_, slope_z_);
-    if (height_.size() == samples) {
-      const bool slopes = slope_x_.size() == samples && slope_z_.size() == samples;
-      renderer_.upload_frame(height_.data(), slopes ? slope_x_.data() : nullptr, slopes ? slope_z_.data() : nullptr);
+    client::FrameTimeline::blend(sample, channels_);
+    if (channels_.height.size() == samples) {
+      render::upload_channels(renderer_, channels_, samples, foam_, dt);
       ++uploads_;
     }
   }

@@ -14,6 +14,7 @@
 #include "browser_socket.hpp"
 #include "client/render/camera.hpp"
 #include "client/render/camera_controls.hpp"
+#include "client/render/foam_memory.hpp"
 #include "client/render/hud_overlay.hpp"
 #include "client/render/renderer.hpp"
 #include "client/render/touch_controls.hpp"
@@ -74,7 +75,8 @@ class WebViewer {
   BrowserSocket socket_;
   std::unique_ptr<client::ClientSession> session_;
   client::FrameTimeline timeline_;
-  std::vector<float> height_, slope_x_, slope_z_;
+  client::FrameChannels channels_;
+  render::FoamMemory foam_;
   std::string state_ = "idle";  // idle, connecting, streaming, closed
   std::string close_reason_;
   std::string pending_end_;  // set inside a session callback; the session ends after it returns

@@ -1,6 +1,9 @@
 // The ground-truth checker and the on-time classification on real sim frames.
 #include <catch2/catch.hpp>
 
+#include <limits>
+#include <vector>
+
 #include "client_tally.hpp"
 #include "frame_verdict.hpp"
 #include "ground_truth.hpp"
@@ -16,6 +19,28 @@ ocean::protocol::SceneParams small_scene(double wind = 10.0) {
   s.patch_x_m = s.patch_z_m = 64.0;
   s.wind_speed_mps = wind;
   return s;
+}
+
+ocean::protocol::SceneParams choppy_scene() {
+  ocean::protocol::SceneParams s = small_scene();
+  s.choppiness = 1.2;
+  return s;
+}
+
+// desktop-choppy's bounds, as StreamFacts takes them from its Welcome.
+ErrorBounds choppy_bounds() {
+  ocean::protocol::Welcome w;
+  w.tick_period_s = 1.0 / 30;
+  w.stream.rate_hz = 30;
+  w.stream.height_step_m = 0.01f;
+  w.stream.slope_step = 1.0f / 256;
+  w.stream.disp_step_m = 0.01f;
+  w.stream.normals = w.stream.choppy = true;
+  return StreamFacts::from(w).bounds;
+}
+
+void add(std::vector<float>& field, float offset) {
+  for (float& v : field) v += offset;
 }
 
 }  // namespace
@@ -70,6 +95,105 @@ TEST_CASE("frame check: within the bound passes, beyond it is bad") {
   std::vector<float> nan_frame = t.height;
   nan_frame[5] = std::numeric_limits<float>::quiet_NaN();
   CHECK_FALSE(within_bounds(frame_error(nan_frame, {}, {}, t.height, t.slope_x, t.slope_z), bounds));
+}
+
+TEST_CASE("ground truth: a choppy stream's truth carries displacement and its derivatives") {
+  GroundTruth plain(30), choppy(30, true);
+  plain.set_scene(0, choppy_scene());
+  choppy.set_scene(0, choppy_scene());
+  CHECK(plain.at(30, 32)->disp_x.empty());
+  const ocean::sim::Frame& t = *choppy.at(30, 32);
+  const std::size_t n = 32u * 32u;
+  CHECK(t.disp_x.size() == n);
+  CHECK(t.disp_z.size() == n);
+  CHECK(t.disp_xx.size() == n);
+  CHECK(t.disp_zz.size() == n);
+  CHECK(t.disp_xz.size() == n);
+  CHECK(t.height == plain.at(30, 32)->height);  // the same sea, more channels
+}
+
+TEST_CASE("stream facts: a choppy stream bounds displacement by disp_step / 2, derivatives by slope_step / 2") {
+  const ErrorBounds b = choppy_bounds();
+  CHECK(b.height_m == Approx(0.005));
+  CHECK(b.slope == Approx(1.0 / 512));
+  CHECK(b.disp_m == Approx(0.005));
+  CHECK(b.disp_deriv == Approx(1.0 / 512));
+  ocean::protocol::Welcome plain;
+  plain.tick_period_s = 1.0 / 30;
+  plain.stream.height_step_m = 0.01f;
+  plain.stream.normals = true;
+  plain.stream.slope_step = 1.0f / 256;
+  plain.stream.disp_step_m = 0.01f;  // carried by every Welcome, checked only when choppy
+  const StreamFacts f = StreamFacts::from(plain);
+  CHECK_FALSE(f.choppy);
+  CHECK(f.bounds.disp_m == 0.0);
+  CHECK(f.bounds.disp_deriv == 0.0);
+}
+
+TEST_CASE("frame check: every choppy channel is held to its own bound") {
+  GroundTruth truth(30, true);
+  truth.set_scene(0, choppy_scene());
+  const ocean::sim::Frame& t = *truth.at(30, 32);
+  const ErrorBounds bounds = choppy_bounds();
+  REQUIRE(channels_of(t).disp_xz.size() == 32u * 32u);
+  CHECK(within_bounds(frame_error(channels_of(t), channels_of(t)), bounds));
+
+  // Within the bounds on every channel: passes, and each error is reported on its own.
+  ocean::sim::Frame f = t;
+  add(f.height, 0.0049f);
+  add(f.disp_x, 0.0049f);
+  add(f.disp_z, -0.0049f);
+  add(f.disp_zz, 0.0019f);
+  FrameError e = frame_error(channels_of(f), channels_of(t));
+  CHECK(e.height_m == Approx(0.0049).margin(1e-6));
+  CHECK(e.disp_m == Approx(0.0049).margin(1e-6));
+  CHECK(e.disp_deriv == Approx(0.0019).margin(1e-6));
+  CHECK(e.slope == 0.0);
+  CHECK(within_bounds(e, bounds));
+
+  // One sample of one channel beyond its bound, every other channel exact: bad. A derivative off
+  // by 0.003 is within the displacement bound (0.005) but not its own (slope_step / 2 = 0.00195).
+  auto bad_with = [&](std::vector<float> ocean::sim::Frame::*channel, float offset) {
+    ocean::sim::Frame g = t;
+    (g.*channel)[17] += offset;
+    return !within_bounds(frame_error(channels_of(g), channels_of(t)), bounds);
+  };
+  CHECK(bad_with(&ocean::sim::Frame::disp_x, 0.006f));
+  CHECK(bad_with(&ocean::sim::Frame::disp_z, -0.006f));
+  CHECK(bad_with(&ocean::sim::Frame::disp_xx, 0.003f));
+  CHECK(bad_with(&ocean::sim::Frame::disp_zz, -0.003f));
+  CHECK(bad_with(&ocean::sim::Frame::disp_xz, 0.003f));
+  CHECK(bad_with(&ocean::sim::Frame::disp_xz, std::numeric_limits<float>::quiet_NaN()));
+  CHECK_FALSE(bad_with(&ocean::sim::Frame::disp_xz, 0.0019f));
+
+  // The Jacobian is derived by the decoder, not streamed: not compared.
+  ocean::sim::Frame j = t;
+  add(j.jacobian, 1.0f);
+  CHECK(within_bounds(frame_error(channels_of(j), channels_of(t)), bounds));
+
+  // A choppy stream's frame without its displacement is wrong, not unchecked.
+  ocean::sim::Frame missing = t;
+  missing.disp_x.clear();
+  missing.disp_z.clear();
+  CHECK_FALSE(within_bounds(frame_error(channels_of(missing), channels_of(t)), bounds));
+  missing = t;
+  missing.disp_xz.clear();
+  CHECK_FALSE(within_bounds(frame_error(channels_of(missing), channels_of(t)), bounds));
+}
+
+TEST_CASE("frame check: a stream without choppy channels is not held to them") {
+  GroundTruth truth(30);
+  truth.set_scene(0, small_scene());
+  const ocean::sim::Frame& t = *truth.at(30, 32);
+  const ErrorBounds bounds{0.005, 1.0 / 512};  // disp bounds 0: not streamed
+  const FrameError e = frame_error(channels_of(t), channels_of(t));
+  CHECK(e.disp_m == 0.0);
+  CHECK(e.disp_deriv == 0.0);
+  CHECK(within_bounds(e, bounds));
+  // Whatever a frame carries beyond its stream's channels is not judged.
+  ocean::sim::Frame extra = t;
+  extra.disp_x.assign(t.height.size(), 9.0f);
+  CHECK(within_bounds(frame_error(channels_of(extra), channels_of(t)), bounds));
 }
 
 TEST_CASE("on time: arrival by offset + tick * period + interpolation delay") {
