@@ -14,12 +14,17 @@ uniform vec3 u_deep_colour;
 uniform vec3 u_scatter_colour;
 uniform float u_shininess;
 uniform vec3 u_foam_colour;
+uniform vec4 u_overcast;       // as in sky.frag.glsl: the reflection shows the same sky
 
 varying vec3 v_rel;
 varying vec2 v_slope;
 varying float v_foam;
 varying float v_height;
 varying vec4 v_haze;
+
+vec3 weathered(vec3 c) {
+  return mix(c, u_overcast.rgb * (0.6 + 0.4 * dot(c, vec3(0.3, 0.5, 0.2))), u_overcast.a);
+}
 
 void main() {
   vec3 n = normalize(vec3(-v_slope.x, 1.0, -v_slope.y));
@@ -31,7 +36,7 @@ void main() {
   float m2 = m * m;
   float fresnel = 0.02 + 0.98 * m2 * m2 * m;
 
-  vec3 sky = textureCube(u_sky, r).rgb;
+  vec3 sky = weathered(textureCube(u_sky, r).rgb);
   float lit = max(dot(n, u_sun_dir), 0.0);
   float crest = clamp(0.35 + 0.25 * v_height, 0.0, 1.0);
   vec3 water = u_deep_colour * (0.4 + 0.6 * lit) + u_scatter_colour * crest * (1.0 - facing);

@@ -11,8 +11,8 @@ namespace ocean::render {
 
 class FoamMemory {
  public:
-  // Jacobian units per second; the renderer's foam band is 0.25 wide, so 0.2 fades full foam
-  // in about 1.2 s.
+  // Jacobian units per second; the renderer's foam band is 0.2 wide, so 0.2 fades full foam in
+  // about a second.
   explicit FoamMemory(float recovery_per_s = 0.2f) : recovery_per_s_(recovery_per_s) {}
 
   // The Jacobian to shade with: min(J, remembered + rate * dt) per sample. A change of sample

@@ -11,6 +11,7 @@
 #include "client/render/gl_program.hpp"
 #include "client/render/grid_mesh.hpp"
 #include "client/render/lod.hpp"
+#include "client/render/weather_light.hpp"
 #include "client/render/periodic_field.hpp"
 #include "client/render/shader_sources.hpp"
 #include "client/render/sky_faces.hpp"
@@ -22,7 +23,7 @@ namespace ocean::render {
 namespace {
 
 // The Jacobian range over which foam goes from none to full (FoamMemory's rate is set against it).
-constexpr float kFoamBand = 0.25f;
+constexpr float kFoamBand = 0.2f;
 
 bool has_extension(const char* name) {
   const char* all = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
@@ -50,9 +51,10 @@ bool Renderer::init(const RendererDesc& in) {
   desc_.chunks_per_side = or_default(in.chunks_per_side, 2);
   desc_.far_block_tiles = std::max(0, in.far_block_tiles);  // resolved per patch size in set_grid
   desc_.choppiness = or_default(in.choppiness, 1.0f);
-  // A storm's streamed band (256 samples over 256 m) folds to J of about 0.45 at its crests: foam
-  // starts well above that and is full there, so whitecaps show where the surface compresses.
-  desc_.foam_threshold = or_default(in.foam_threshold, 0.7f);
+  // Foam where the surface compresses: from J 0.75, full at 0.55. On the streamed 256 m band this
+  // whitens about 5 % of a 20 m/s storm at choppiness 1.2 and well under 1 % of a 10 m/s sea at
+  // choppiness 1, near the whitecap cover observed at those winds (Monahan: 10 % and 1 %).
+  desc_.foam_threshold = or_default(in.foam_threshold, 0.75f);
   desc_.sun_colour = or_default(in.sun_colour, glm::vec3(2.6f, 2.35f, 1.9f));
   desc_.deep_colour = or_default(in.deep_colour, glm::vec3(0.01f, 0.06f, 0.10f));
   desc_.scatter_colour = or_default(in.scatter_colour, glm::vec3(0.02f, 0.12f, 0.11f));
@@ -76,9 +78,10 @@ bool Renderer::init(const RendererDesc& in) {
   ocean_u_ = {loc("u_clip_from_rel"), loc("u_tile_offset"), loc("u_eye_height"), loc("u_choppiness"),
               loc("u_detail_fade"), loc("u_far_roughness"), loc("u_foam"), loc("u_sky"),
               loc("u_sun_dir"), loc("u_sun_colour"), loc("u_deep_colour"), loc("u_scatter_colour"),
-              loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]")};
+              loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast")};
   sky_u_rel_from_clip_ = glGetUniformLocation(sky_program_, "u_rel_from_clip");
   sky_u_sky_ = glGetUniformLocation(sky_program_, "u_sky");
+  sky_u_overcast_ = glGetUniformLocation(sky_program_, "u_overcast");
 
   SkyFaces faces;
   if (!load_sky(in.sky_dir, faces, error_)) return false;
@@ -268,13 +271,20 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
   glUniform2f(ocean_u_.foam, desc_.foam_threshold, 1.0f / kFoamBand);
   glUniform1i(ocean_u_.sky, 0);
   glUniform3fv(ocean_u_.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
-  glUniform3fv(ocean_u_.sun_colour, 1, glm::value_ptr(desc_.sun_colour));
-  glUniform3fv(ocean_u_.deep_colour, 1, glm::value_ptr(desc_.deep_colour));
-  glUniform3fv(ocean_u_.scatter_colour, 1, glm::value_ptr(desc_.scatter_colour));
+  // Under a cloud deck the sun barely shows and the water turns a darker grey-green.
+  const glm::vec3 sun = desc_.sun_colour * (1.0f - 0.9f * overcast_);
+  const glm::vec3 deep = desc_.deep_colour * (1.0f - 0.3f * overcast_);
+  const glm::vec3 scatter = desc_.scatter_colour * (1.0f - 0.3f * overcast_);
+  glUniform3fv(ocean_u_.sun_colour, 1, glm::value_ptr(sun));
+  glUniform3fv(ocean_u_.deep_colour, 1, glm::value_ptr(deep));
+  glUniform3fv(ocean_u_.scatter_colour, 1, glm::value_ptr(scatter));
+  glUniform4f(ocean_u_.overcast, kOvercastDeck.r, kOvercastDeck.g, kOvercastDeck.b, overcast_);
   glUniform1f(ocean_u_.shininess, desc_.shininess);
   glUniform2f(ocean_u_.fog, desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m)));
   glUniform3f(ocean_u_.foam_colour, 0.92f, 0.95f, 0.97f);
-  glUniform3fv(ocean_u_.horizon, static_cast<GLsizei>(horizon_ring_.size()), glm::value_ptr(horizon_ring_[0]));
+  weathered_ring_.resize(horizon_ring_.size());
+  for (std::size_t i = 0; i < horizon_ring_.size(); ++i) weathered_ring_[i] = weathered(horizon_ring_[i], overcast_);
+  glUniform3fv(ocean_u_.horizon, static_cast<GLsizei>(weathered_ring_.size()), glm::value_ptr(weathered_ring_[0]));
 }
 
 void Renderer::draw_tiles(const TileSelection& tiles) {
@@ -314,6 +324,7 @@ void Renderer::draw_sky(const Camera& camera, const glm::mat4& clip_from_rel) {
   const glm::mat4 rel_from_clip = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / camera.far_m)) * glm::inverse(clip_from_rel);
   glUniformMatrix4fv(sky_u_rel_from_clip_, 1, GL_FALSE, glm::value_ptr(rel_from_clip));
   glUniform1i(sky_u_sky_, 0);
+  glUniform4f(sky_u_overcast_, kOvercastDeck.r, kOvercastDeck.g, kOvercastDeck.b, overcast_);
   glBindBuffer(GL_ARRAY_BUFFER, sky_triangle_);
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
   glEnableVertexAttribArray(0);

@@ -26,7 +26,7 @@ struct RendererDesc {
   int chunks_per_side = 0;            // 2 (1 for grids under 16): LOD granularity within a tile
   int far_block_tiles = 0;            // about view distance / 5 patches (1 = off): tiles per far draw
   float choppiness = 0.0f;            // 1: scale applied to the streamed displacement
-  float foam_threshold = 0.0f;        // 0.7: foam where the Jacobian is below this, full 0.25 lower
+  float foam_threshold = 0.0f;        // 0.75: foam where the Jacobian is below this, full 0.2 lower
   glm::vec3 sun_direction{0.0f};      // estimated from the sky's brightest spot
   glm::vec3 sun_colour{0.0f};         // (2.6, 2.35, 1.9): > 1 so the glitter saturates
   glm::vec3 deep_colour{0.0f};        // (0.01, 0.06, 0.10)
@@ -68,6 +68,9 @@ class Renderer {
   // The patch is n x n samples spanning patch_x_m x patch_z_m metres; builds the static grid VBO
   // and the LOD index buffers. Call again when the stream's grid changes.
   bool set_grid(int n, float patch_x_m, float patch_z_m);
+  // The weather's light (weather_light.hpp): 0 a clear sky .. 1 all cloud deck, which hides the
+  // sun and greys the sky, its reflection and the water.
+  void set_overcast(float overcast) { overcast_ = overcast; }
   // Uploads only the attribute streams of one frame (sizes from set_grid).
   bool upload_frame(const FrameStreams& frame);
   bool upload_frame(const float* height, const float* slope_x, const float* slope_z,
@@ -120,9 +123,11 @@ class Renderer {
 
   struct OceanUniforms {
     GLint clip_from_rel, tile_offset, eye_height, choppiness, detail_fade, far_roughness, foam;
-    GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon;
+    GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon, overcast;
   } ocean_u_{};
-  GLint sky_u_rel_from_clip_ = -1, sky_u_sky_ = -1;
+  GLint sky_u_rel_from_clip_ = -1, sky_u_sky_ = -1, sky_u_overcast_ = -1;
+  float overcast_ = 0.0f;
+  std::vector<glm::vec3> weathered_ring_;
 
   DrawStats stats_;
 };

@@ -33,6 +33,7 @@ struct StreamShape {
   std::string profile;
   double tick_period_s = 0.0;
   double send_interval_s = 0.0;
+  double wind_speed_mps = 0.0;  // of the newest scene announced: the weather's light follows it
 };
 
 struct NetworkStats {

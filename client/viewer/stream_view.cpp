@@ -27,6 +27,8 @@ bool StreamView::update(NetworkThread& net, double now) {
     }
     shape_ = shape;
   }
+  scene_.renderer.set_overcast(weather_.update(shape.wind_speed_mps, now - last_weather_s_));
+  last_weather_s_ = now;
   const double t0 = thread_cpu_ms();
   last_ = net.timeline().render(now, channels_);
   const std::size_t samples = static_cast<std::size_t>(shape_.grid) * shape_.grid;

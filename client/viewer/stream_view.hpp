@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "client/render/foam_memory.hpp"
+#include "client/render/weather_light.hpp"
 #include "client/viewer/network_thread.hpp"
 #include "client/viewer/view_scene.hpp"
 
@@ -39,6 +40,8 @@ class StreamView {
   client::RenderedFrame last_;
   client::FrameChannels channels_;
   render::FoamMemory foam_;
+  render::WeatherEase weather_;
+  double last_weather_s_ = 0.0;
   double last_upload_s_ = 0.0;
   std::string error_;
   std::uint64_t uploads_ = 0, grid_changes_ = 0, held_ = 0;

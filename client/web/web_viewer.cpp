@@ -170,6 +170,8 @@ void WebViewer::frame(double now_s, int width, int height) {
       ++uploads_;
     }
   }
+  if (session_ && session_->state() == client::ClientSession::State::streaming)
+    renderer_.set_overcast(weather_.update(session_->scene().wind_speed_mps, dt));
   renderer_.draw(camera_, width, height, now_s);
 
   fps_ = fps_meter_.tick(now_s);

@@ -15,6 +15,7 @@
 #include "client/render/camera.hpp"
 #include "client/render/camera_controls.hpp"
 #include "client/render/foam_memory.hpp"
+#include "client/render/weather_light.hpp"
 #include "client/render/hud_overlay.hpp"
 #include "client/render/renderer.hpp"
 #include "client/render/touch_controls.hpp"
@@ -77,6 +78,7 @@ class WebViewer {
   client::FrameTimeline timeline_;
   client::FrameChannels channels_;
   render::FoamMemory foam_;
+  render::WeatherEase weather_;
   std::string state_ = "idle";  // idle, connecting, streaming, closed
   std::string close_reason_;
   std::string pending_end_;  // set inside a session callback; the session ends after it returns

@@ -44,9 +44,9 @@ struct EncoderOptions {
 // A view of one sim frame (row-major z * n + x); slopes required when the stream has normals, the
 // displacement and its derivatives (choppiness applied) when it is choppy.
 struct TruthView {
-  std::span<const float> height;
-  std::span<const float> slope_x, slope_z;
-  std::span<const float> disp_x, disp_z, disp_xx, disp_zz, disp_xz;
+  std::span<const float> height = {};
+  std::span<const float> slope_x = {}, slope_z = {};
+  std::span<const float> disp_x = {}, disp_z = {}, disp_xx = {}, disp_zz = {}, disp_xz = {};
 };
 
 struct FrameStats {
