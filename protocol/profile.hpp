@@ -26,6 +26,9 @@ inline constexpr Profile kProfiles[] = {
     {2, "desktop",         256, 30,  true,   false,  0.01f,  1.0f / 256,  0.01f},
     {3, "desktop-choppy",  256, 30,  true,   true,   0.01f,  1.0f / 256,  0.01f},
     {4, "lite",            32,  15,  true,   false,  0.02f,  1.0f / 128,  0.02f},
+    // Choppy channels are predicted from the heights like the slopes (codec version 3), so a
+    // phone's storm costs what its calm sea costs on the wire; only the decode doubles.
+    {5, "mobile-choppy",   64,  30,  true,   true,   0.01f,  1.0f / 256,  0.01f},
 };
 
 inline std::span<const Profile> all_profiles() { return kProfiles; }

@@ -243,7 +243,7 @@ const ConfigOption kOptions[] = {
        return error;
      },
      [](const ServerConfig& c) { return std::to_string(c.epoch_unix_ms); }},
-    {"profiles", "LIST", "comma-separated stream profiles to offer (mobile, desktop, desktop-choppy, lite); each grid <= --size",
+    {"profiles", "LIST", "comma-separated stream profiles to offer (mobile, desktop, desktop-choppy, mobile-choppy, lite); each grid <= --size",
      ValueKind::text_list, false,
      [](ServerConfig& c, std::string_view v) {
        c.profiles = split_list(v);

@@ -188,7 +188,7 @@ int run_codec(int argc, char** argv) {
   double choppiness = 1.2;
   double wind_mps = -1.0;
   CLI::App app{"ocean-bench codec: stream codec vs raw / q16+zstd / delta+zstd on real sim frames"};
-  app.add_option("--profile", profiles_arg, "profile names, comma separated (mobile, desktop, desktop-choppy, lite)")->capture_default_str();
+  app.add_option("--profile", profiles_arg, "profile names, comma separated (mobile, desktop, desktop-choppy, mobile-choppy, lite)")->capture_default_str();
   app.add_option("--seconds", seconds, "simulated seconds per profile")->capture_default_str();
   app.add_option("--baseline-lag", lag, "ticks between a frame and its baseline (acks an RTT late); ours is also run at lag 4")
       ->capture_default_str();

@@ -94,12 +94,20 @@ def main():
     ap.add_argument("--clients", default="4")
     ap.add_argument("--duration", default="3")
     ap.add_argument("--sanitized", action="store_true", help="binaries built with a sanitizer: assert no timing")
+    ap.add_argument("--profile", help="stream this profile instead of the scenario's (the server offers only it)")
+    ap.add_argument("--sea", default="", help="more ocean-server flags for the scene, e.g. a storm's wind and choppiness")
     args = ap.parse_args()
 
     entry = local_server.scenario(args.loadtest_bin, args.scenario)
     with tempfile.TemporaryDirectory() as workdir:
         extra = local_server.scenario_server_args(entry, workdir, first_change_s=FIRST_CHANGE_S,
                                                   horizon_s=RAMP_S + float(args.duration) + 30)
+        if args.profile:
+            if "--profiles" in extra:
+                at = extra.index("--profiles")
+                del extra[at:at + 2]
+            extra += ["--profiles", args.profile]
+        extra += args.sea.split()
         port = local_server.free_port()
         try:
             # warn level: little output to buffer
@@ -111,7 +119,7 @@ def main():
         try:
             cmd = [args.loadtest_bin, "--server", f"127.0.0.1:{port}", "--scenario", args.scenario, "--clients",
                    args.clients, "--ramp", str(RAMP_S), "--duration", args.duration, "--json", "--quiet",
-                   "--server-pid", str(server.pid)]
+                   "--server-pid", str(server.pid)] + (["--profile", args.profile] if args.profile else [])
             print(" ".join(cmd), "# server:", " ".join(extra) or "defaults")
             run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                                  timeout=float(args.duration) + 40)

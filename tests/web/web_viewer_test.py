@@ -86,7 +86,7 @@ class Browser:
             self.session = self.start_session(chromium, profile_dir)
         except Exception:
             self.driver.kill()
-            subprocess.run(["pkill", "-KILL", "-f", f"--user-data-dir={profile_dir}"], check=False)
+            subprocess.run(["pkill", "-KILL", "-f", "--", f"--user-data-dir={profile_dir}"], check=False)
             raise
 
     def start_session(self, chromium, profile_dir):
@@ -125,7 +125,7 @@ class Browser:
             self.driver.kill()
         # A browser that did not quit (a busy page, a timed-out DELETE) would keep its software
         # rasterizer spinning beside the tests that run next: its processes all name our profile.
-        subprocess.run(["pkill", "-KILL", "-f", f"--user-data-dir={self.profile_dir}"], check=False)
+        subprocess.run(["pkill", "-KILL", "-f", "--", f"--user-data-dir={self.profile_dir}"], check=False)
 
 
 REPORT = ("return (typeof Module !== 'undefined' && Module.calledRun) ? "
