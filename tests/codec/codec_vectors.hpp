@@ -3,6 +3,8 @@
 // (make_codec_vectors.cpp) and the check (test_codec_vectors.cpp).
 #pragma once
 
+#include "frame_reconstruction.hpp"
+
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -17,7 +19,24 @@
 namespace ocean::codec::vectors {
 
 // The sequences the generator writes and the check reads: <name>.txt and <name>.f32.
-inline constexpr const char* kSequences[] = {"lite_modeled", "lite_explicit"};
+inline constexpr const char* kSequences[] = {"lite_modeled", "lite_explicit", "mobile_choppy"};
+
+// The channels of a frame's float block, in order: height, slope_x, slope_z, then for choppy
+// streams disp_x, disp_z, disp_xx, disp_zz, disp_xz and jacobian (non-choppy sequences stay as
+// codec version 2 wrote them), each grid^2 little-endian float32.
+inline std::vector<std::pair<const char*, const std::vector<float>*>> frame_channels(const ReconstructedFrame& f,
+                                                                                     bool choppy) {
+  std::vector<std::pair<const char*, const std::vector<float>*>> channels = {
+      {"height", &f.height}, {"slope_x", &f.slope_x}, {"slope_z", &f.slope_z}};
+  if (choppy)
+    channels.insert(channels.end(), {{"disp_x", &f.disp_x},
+                                     {"disp_z", &f.disp_z},
+                                     {"disp_xx", &f.disp_xx},
+                                     {"disp_zz", &f.disp_zz},
+                                     {"disp_xz", &f.disp_xz},
+                                     {"jacobian", &f.jacobian}});
+  return channels;
+}
 
 // Sample positions whose values every frame line repeats in decimal, for a quick look.
 inline constexpr std::uint32_t kSamplePositions[] = {0, 517, 1023};

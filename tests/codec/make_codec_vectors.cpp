@@ -1,9 +1,11 @@
 // Generator of the codec test vectors (CODEC.md section 12): two short streams of the lite profile
-// as ocean-server would send them to one client - the Welcome, a SceneUpdate, every chunk with
-// its envelope and its frames datagram, a few chunks a decoder must refuse, and what a decoder
-// shows once each frame completes. The truth is the scene model's own field with a few samples
+// and one of mobile-choppy (codec version 3's choppy channels) as ocean-server would send them to
+// one client - the Welcome, a SceneUpdate, every chunk with its envelope and its frames datagram,
+// a few chunks a decoder must refuse, and what a decoder shows once each frame completes. The truth is the scene model's own field with a few samples
 // pushed off by 0.6 step, so keys are modeled and frames carry height and slope corrections;
-// lite_explicit's truth comes from another seed, so its key falls back to explicit coefficients.
+// lite_explicit's truth comes from another seed, so its key falls back to explicit coefficients;
+// mobile_choppy's truth also has its displacement and derivatives pushed off (and one frame noisy
+// enough to need several chunks), and a SceneUpdate changes only the choppiness.
 //
 // Runs in memory on every test run (checking that the decoder shows exactly the encoder's
 // reconstruction); writes the files only when OCEAN_WRITE_CODEC_VECTORS names a folder:
@@ -27,6 +29,8 @@
 #include <cstring>
 #include <fstream>
 #include <random>
+#include <utility>
+#include <vector>
 
 using namespace ocean;
 using namespace ocean::codec;
@@ -67,13 +71,25 @@ protocol::SceneParams next_scene() {
   return s;
 }
 
-protocol::Welcome welcome_of(const protocol::SceneParams& scene) {
-  const Profile& lite = *find_profile(std::uint8_t{4});
+// mobile_choppy's sea: a JONSWAP storm of 15 m/s at choppiness 1.3 (its Jacobian falls to about 0.43).
+protocol::SceneParams choppy_scene() {
+  protocol::SceneParams s = base_scene();
+  s.spreading = wire::Spreading::cos2s;
+  s.wind_speed_mps = 15.0;
+  s.wind_dir_deg = -20.0;
+  s.choppiness = 1.3;
+  s.seed = 7;
+  return s;
+}
+
+protocol::Welcome welcome_of(const protocol::SceneParams& scene, std::uint8_t profile_id = 4,
+                             std::vector<std::uint8_t> offered = {1, 4}) {
+  const Profile& profile = *find_profile(profile_id);
   protocol::Welcome w;
   w.session_id = 0x1122334455667788ull;
-  w.stream = wire_stream(StreamConfig::from_profile(lite, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m));
+  w.stream = wire_stream(StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m));
   w.scene = scene;
-  w.offered_profiles = {1, 4};
+  w.offered_profiles = std::move(offered);
   w.epoch_unix_ms = 1'400'000'000'000;
   w.current_tick = kKeyTick - 5;
   w.tick_period_s = 1.0 / kTickRateHz;
@@ -99,14 +115,20 @@ EncoderOptions server_encoder_options() {
   return o;
 }
 
-// The scene model's field of `scene` at `tick`, as floats, with `pushed` samples moved off by
-// 0.6 step (heights) or 0.6 slope step (slopes), alternating in sign.
+// The scene model's field of `scene` at `tick` (the choppy channels with the scene's choppiness),
+// as floats, with `pushed` samples moved off by 0.6 step (heights, displacement) or 0.6 slope step
+// (slopes, displacement derivatives), alternating in sign; `noise` pushes more, by its own amounts.
 struct Push {
-  int channel;  // 0 height, 1 slope_x, 2 slope_z
+  int channel;  // 0 height, 1 slope_x, 2 slope_z, 3 disp_x, 4 disp_z, 5 disp_xx, 6 disp_zz, 7 disp_xz
   std::uint32_t pos;
 };
+struct Noise {
+  int channel;
+  std::uint32_t pos;
+  float steps;  // signed, in steps of the channel
+};
 TruthView model_truth(const StreamConfig& stream, const protocol::SceneParams& scene, Tick tick,
-                      const std::vector<Push>& pushed, ReconstructedFrame& storage) {
+                      const std::vector<Push>& pushed, ReconstructedFrame& storage, const std::vector<Noise>& noise = {}) {
   StreamConfig with_depth = stream;
   with_depth.depth_m = scene.depth_m;
   const SceneModel model(with_depth, scene_model_params(scene));
@@ -114,16 +136,21 @@ TruthView model_truth(const StreamConfig& stream, const protocol::SceneParams& s
   model.state_at(tick, state);
   ModalModel modal(with_depth);
   SampleFields fields;
-  modal.synthesize(state.cur, 0.0, fields);
+  modal.synthesize(state.cur, stream.choppy ? scene.choppiness : 0.0, fields);
   to_float(fields, stream, storage);
+  std::vector<float>* channels[8] = {&storage.height, &storage.slope_x, &storage.slope_z,  &storage.disp_x,
+                                     &storage.disp_z, &storage.disp_xx, &storage.disp_zz, &storage.disp_xz};
+  const auto step_of = [&](int ch) {
+    return ch == 0 ? stream.height_step_m : ch == 3 || ch == 4 ? stream.disp_step_m : stream.slope_step;
+  };
   float sign = 1.0f;
   for (const Push& p : pushed) {
-    std::vector<float>& channel = p.channel == 0 ? storage.height : p.channel == 1 ? storage.slope_x : storage.slope_z;
-    const float step = p.channel == 0 ? stream.height_step_m : stream.slope_step;
-    channel.at(p.pos) += sign * 0.6f * step;
+    channels[p.channel]->at(p.pos) += sign * 0.6f * step_of(p.channel);
     sign = -sign;
   }
-  return TruthView{storage.height, storage.slope_x, storage.slope_z};
+  for (const Noise& p : noise) channels[p.channel]->at(p.pos) += p.steps * step_of(p.channel);
+  return TruthView{storage.height, storage.slope_x, storage.slope_z, storage.disp_x, storage.disp_z,
+                   storage.disp_xx, storage.disp_zz, storage.disp_xz};
 }
 
 std::string scene_fields(const protocol::SceneParams& s) {
@@ -143,7 +170,7 @@ class Writer {
  public:
   Writer(std::string name, std::string title) : name_(std::move(name)) {
     text_ << "# " << name_ << ": " << title << "\n"
-          << "# Codec version 2 / protocol version 2 test vectors; the format is in protocol/codec/CODEC.md section 12.\n"
+          << "# Codec version 3 / protocol version 2 test vectors; the format is in protocol/codec/CODEC.md section 12.\n"
           << "# Generated by tests/codec/make_codec_vectors.cpp, checked by tests/codec/test_codec_vectors.cpp.\n";
   }
 
@@ -204,8 +231,15 @@ class Writer {
     REQUIRE(shown->height == frame.reconstruction.height);
     REQUIRE(shown->slope_x == frame.reconstruction.slope_x);
     REQUIRE(shown->slope_z == frame.reconstruction.slope_z);
+    REQUIRE(shown->disp_x == frame.reconstruction.disp_x);
+    REQUIRE(shown->disp_z == frame.reconstruction.disp_z);
+    REQUIRE(shown->disp_xx == frame.reconstruction.disp_xx);
+    REQUIRE(shown->disp_zz == frame.reconstruction.disp_zz);
+    REQUIRE(shown->disp_xz == frame.reconstruction.disp_xz);
+    REQUIRE(shown->jacobian == frame.reconstruction.jacobian);
+    const auto channels = frame_channels(*shown, config_.choppy);
     const std::size_t offset = floats_.size();
-    for (const std::vector<float>* channel : {&shown->height, &shown->slope_x, &shown->slope_z})
+    for (const auto& [label, channel] : channels)
       for (float v : *channel) {
         std::uint32_t bits;
         std::memcpy(&bits, &v, 4);
@@ -215,6 +249,7 @@ class Writer {
     text_ << "frame tick=" << shown->tick << " complete=1 offset=" << offset << " bytes=" << bytes.size()
           << " fnv1a64=" << hex64(fnv1a64(bytes)) << " state_hash=" << hex64(hash_state(*decoder_->state(shown->tick)))
           << " corrections=" << frame.stats.corrections_height << "," << frame.stats.corrections_slope;
+    if (config_.choppy) text_ << "," << frame.stats.corrections_choppy;
     auto samples = [&](const char* label, const std::vector<float>& v) {
       text_ << " " << label << "=";
       bool first = true;
@@ -229,9 +264,7 @@ class Writer {
       text_ << (first ? "" : ",") << p;
       first = false;
     }
-    samples("height", shown->height);
-    samples("slope_x", shown->slope_x);
-    samples("slope_z", shown->slope_z);
+    for (const auto& [label, channel] : channels) samples(label, *channel);
     text_ << "\n";
   }
 
@@ -376,6 +409,84 @@ void lite_explicit(Writer& w) {
   w.frame_in_order(*d4, "delta");
 }
 
+void mobile_choppy(Writer& w) {
+  const protocol::SceneParams scene0 = choppy_scene();
+  protocol::SceneParams scene1 = scene0;
+  scene1.choppiness = 0.6;  // the only change: same heights, other choppy factors G_j
+  const protocol::Welcome welcome = welcome_of(scene0, 5, {1, 5});
+  const Tick change = kKeyTick + 5;
+  w.comment("The mobile-choppy profile (profile 5: 64 x 64, 30 Hz, slopes, choppy channels) under 30 Hz server");
+  w.comment("ticks: a frame every tick. K = " + std::to_string(kKeyTick) + ", the key tick. Scene 0 (JONSWAP, cos-2s,");
+  w.comment("15 m/s towards -20 deg, choppiness 1.3) from the Welcome; scene 1, the same but choppiness 0.6,");
+  w.comment("from tick " + std::to_string(change) + " by a SceneUpdate. Each frame's floats are height, slope_x,");
+  w.comment("slope_z, disp_x, disp_z, disp_xx, disp_zz, disp_xz and jacobian; `corrections` counts");
+  w.comment("heights,slopes,choppy channels.");
+  w.welcome(welcome);
+  const StreamConfig& c = w.config();
+  REQUIRE(c.choppy);
+  REQUIRE(c.grid == 64);
+  Encoder enc(c, server_encoder_options());
+  enc.set_scene(0, 0, scene_model_params(scene0));
+  enc.set_scene(change, 1, scene_model_params(scene1));
+  const protocol::SceneUpdate update{0, change, scene1, 1};
+
+  // K+3's truth is noisy in disp_x and disp_xz (about half the samples each, 0.6 to 7.4 steps):
+  // too many corrections for one 1104-byte chunk. std::mt19937's raw output is the same everywhere.
+  std::vector<Noise> noise;
+  std::mt19937 rng(2026);
+  constexpr float kMagnitudes[] = {0.6f, 1.3f, 2.9f, 7.4f};
+  for (int ch : {3, 7})
+    for (std::uint32_t pos = 0; pos < 64u * 64u; ++pos) {
+      const std::uint32_t r = rng();
+      if (r & 1u) continue;
+      noise.push_back({ch, pos, (r & 2u ? -1.0f : 1.0f) * kMagnitudes[(r >> 2) & 3u]});
+    }
+  ReconstructedFrame truth;
+  for (Tick t = kKeyTick - 1; t <= kKeyTick + 6; ++t) {
+    std::vector<Push> pushed;
+    if (t == kKeyTick)
+      pushed = {{0, 100}, {0, 2000}, {1, 300}, {2, 3000}, {3, 41}, {4, 1234}, {5, 2222}, {6, 3333}, {7, 4000}, {7, 517}};
+    if (t == kKeyTick + 2) pushed = {{0, 700}, {4, 701}, {5, 9}};
+    if (t == kKeyTick + 6) pushed = {{6, 1500}, {3, 4095}};
+    enc.add_truth(t, model_truth(c, t < change ? scene0 : scene1, t, pushed, truth,
+                                 t == kKeyTick + 3 ? noise : std::vector<Noise>{}));
+  }
+
+  w.comment("The key: the scene model's state of its tick; its truth has 2 heights, 2 slopes and 6 samples");
+  w.comment("of the choppy channels (one or two in each) pushed off.");
+  w.model(kKeyTick);
+  const auto key = enc.encode_key(kKeyTick);
+  REQUIRE(key->chunks.size() == 1);
+  REQUIRE(key->stats.corrections_choppy >= 6);
+  w.comment("Refused first: the key re-signed with flag bit 4 (choppy) clear, and the key with flag bit 5 set.");
+  w.chunk(rebuilt(key->chunks[0], c.grid_log2(), [](ChunkHeader& h) { h.choppy = false; }), "not_choppy",
+          ChunkError::wrong_dimensions);
+  Chunk reserved = key->chunks[0];
+  reserved.payload.at(0) |= 0x20;
+  w.chunk(reserved, "reserved_flag", ChunkError::bad_flags);
+  w.frame_in_order(*key, "modeled_key");
+
+  w.comment("Delta K+2 from K (its truth has a height, disp_z and disp_xx pushed off; the key's height");
+  w.comment("corrections, folded into its state, also bump the slopes and choppy channels a little), then");
+  w.comment("K+3 from K+2, whose truth is noisy in disp_x and disp_xz: its chunks (item ranges) arrive last first.");
+  const auto d2 = enc.encode_delta(kKeyTick + 2, key->id);
+  w.frame_in_order(*d2, "delta");
+  const auto d3 = enc.encode_delta(kKeyTick + 3, d2->id);
+  REQUIRE(d3->chunks.size() >= 2);
+  for (auto it = d3->chunks.rbegin(); it != d3->chunks.rend(); ++it) w.chunk(*it, "delta");
+  w.frame(*d3);
+
+  w.comment("The SceneUpdate of scene 1: only the choppiness changes (1.3 to 0.6), at K+5.");
+  w.scene_update(update);
+  w.model(change);
+  w.comment("K+5 from K+3: the frame of the effective tick, scene 1's model state with the G_j of 0.6;");
+  w.comment("then K+6 from K+5 (its truth has disp_zz and disp_x pushed off).");
+  const auto d5 = enc.encode_delta(kKeyTick + 5, d3->id);
+  w.frame_in_order(*d5, "delta");
+  const auto d6 = enc.encode_delta(kKeyTick + 6, d5->id);
+  w.frame_in_order(*d6, "delta");
+}
+
 }  // namespace
 
 TEST_CASE("codec vectors: the generator's streams decode to the encoder's reconstructions", "[generate]") {
@@ -383,9 +494,12 @@ TEST_CASE("codec vectors: the generator's streams decode to the encoder's recons
   lite_modeled(modeled);
   Writer explicit_key("lite_explicit", "an explicit (coefficient) key in several chunks, then deltas");
   lite_explicit(explicit_key);
+  Writer choppy("mobile_choppy", "a choppy stream (codec version 3): a modeled key, deltas with choppy corrections, a change of choppiness");
+  mobile_choppy(choppy);
   if (const char* dir = std::getenv("OCEAN_WRITE_CODEC_VECTORS"); dir && *dir) {
     modeled.write(dir);
     explicit_key.write(dir);
+    choppy.write(dir);
     WARN("codec vectors written to " << dir);
   }
 }

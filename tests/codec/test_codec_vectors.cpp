@@ -16,6 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <utility>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -184,13 +185,16 @@ Counts run_sequence(const std::string& name) {
       CHECK(decoder->latest() == shown);  // delivered in order: the newest frame is on show
       REQUIRE(decoder->state(tick));
       CHECK(hex64(hash_state(*decoder->state(tick))) == line.at("state_hash"));
-      // Bit-exact floats: height, slope_x, slope_z, each grid^2 little-endian float32.
+      // Bit-exact floats, channel by channel (frame_channels).
+      const auto channels = frame_channels(*shown, decoder->config().choppy);
+      if (!decoder->config().choppy) CHECK(line.fields.count("jacobian") == 0);
       const std::size_t offset = line.u64("offset"), size = line.u64("bytes");
       REQUIRE(offset + size <= floats.size());
       const std::size_t nn = shown->height.size();
-      REQUIRE(size == 3 * nn * 4);
+      REQUIRE(size == channels.size() * nn * 4);
       std::vector<std::uint8_t> mine;
-      for (const std::vector<float>* channel : {&shown->height, &shown->slope_x, &shown->slope_z}) {
+      for (const auto& [label, channel] : channels) {
+        INFO(label);
         REQUIRE(channel->size() == nn);
         for (float v : *channel)
           for (int b = 0; b < 4; ++b) mine.push_back(static_cast<std::uint8_t>(bits_of(v) >> (8 * b)));
@@ -200,15 +204,14 @@ Counts run_sequence(const std::string& name) {
       CHECK(std::equal(mine.begin(), mine.end(), expected.begin(), expected.end()));
       // The decimal samples repeat values of the float file.
       const std::vector<std::string> positions = split_commas(line.at("samples"));
-      int c = 0;
-      for (const char* label : {"height", "slope_x", "slope_z"}) {
+      for (const auto& [label, channel] : channels) {
         const std::vector<std::string> values = split_commas(line.at(label));
         REQUIRE(values.size() == positions.size());
-        const std::vector<float>& channel = c == 0 ? shown->height : c == 1 ? shown->slope_x : shown->slope_z;
         for (std::size_t k = 0; k < positions.size(); ++k)
-          CHECK(bits_of(std::strtof(values[k].c_str(), nullptr)) == bits_of(channel.at(std::stoul(positions[k]))));
-        ++c;
+          CHECK(bits_of(std::strtof(values[k].c_str(), nullptr)) == bits_of(channel->at(std::stoul(positions[k]))));
       }
+      // heights,slopes, and for choppy streams the choppy channels' count (informative).
+      CHECK(split_commas(line.at("corrections")).size() == (decoder->config().choppy ? 3u : 2u));
       float_bytes_checked += size;
       ++counts.frames;
     } else {
@@ -233,4 +236,13 @@ TEST_CASE("codec vectors: lite_explicit decodes bit for bit (explicit key in sev
   const Counts counts = run_sequence("lite_explicit");
   CHECK(counts.frames == 3);
   CHECK(counts.chunks >= 4);
+}
+
+TEST_CASE("codec vectors: mobile_choppy decodes bit for bit (choppy channels, Jacobian, change of choppiness)") {
+  const Counts counts = run_sequence("mobile_choppy");
+  CHECK(counts.frames == 5);
+  CHECK(counts.refused == 2);
+  CHECK(counts.updates == 1);
+  CHECK(counts.models == 2);
+  CHECK(counts.chunks >= 9);  // K+3 comes in several chunks
 }

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-# A transcription of protocol/codec/CODEC.md (codec version 2) and of PROTOCOL.md 7.1 (frame
+# A transcription of protocol/codec/CODEC.md (codec version 3) and of PROTOCOL.md 7.1 (frame
 # records) into plain Python, written from the text alone (no FlatBuffers package: a few lines
 # read the Welcome and SceneUpdate tables). It checks that the two documents suffice to decode:
 # the function values of CODEC.md 12.1, the scene-model hashes of 12.2 and every chunk, refusal,
-# state hash and frame of the stream vectors beside this file (12.3), bit for bit.
+# state hash and frame of the stream vectors beside this file (12.3), bit for bit - the choppy
+# channels of version 3 and the float32 Jacobian included (float32 emulated by struct, per operation).
 # Informative; CTest runs it as codec_vectors_python when a Python 3 interpreter is found.
 # Usage: decode_from_docs.py [--big]   (--big adds the 256 x 256 hash of 12.2, about a second)
 import math, os, struct, sys, time
@@ -216,8 +217,9 @@ def parse_payload(env, p, max_payload, grid_log2):
     if len(p) > max_payload: raise Refused('oversized')
     if len(p) < 4: raise Refused('truncated')
     flags = p[0]
-    if flags & 0xF0: raise Refused('bad_flags')
-    h = dict(key=bool(flags & 1), normals=bool(flags & 2), modeled=bool(flags & 4), whole=bool(flags & 8), tag=p[3])
+    if flags & 0xE0: raise Refused('bad_flags')  # bits 5-7 reserved (bit 4 is choppy, version 3)
+    h = dict(key=bool(flags & 1), normals=bool(flags & 2), modeled=bool(flags & 4), whole=bool(flags & 8),
+             choppy=bool(flags & 16), tag=p[3])
     if h['key'] != key or (h['modeled'] and not h['key']): raise Refused('bad_flags')
     pos = 4
     if not h['whole']:
@@ -294,10 +296,15 @@ class SInt:
 def ctx(a, b):
     return min(31, (abs(a) + abs(b)).bit_length())
 
-def decode_body(S, samples, normals, begin, end, body):
+# Correction channels in coding order: 0 height, 1 slope_x, 2 slope_z, 3 disp_x, 4 disp_z, 5 disp_xx,
+# 6 disp_zz, 7 disp_xz.
+def channels_of(normals, choppy):
+    return [0] + ([1, 2] if normals else []) + ([3, 4, 5, 6, 7] if choppy else [])
+
+def decode_body(S, samples, normals, choppy, begin, end, body):
     rc = RangeDecoder(body)
     X = [SInt() for _ in range(32)]; V = [SInt() for _ in range(32)]
-    count = UInt(); gap = UInt(); value = [SInt(), SInt(), SInt()]
+    count = UInt(); gap = UInt(); value = [SInt() for _ in range(8)]
     key = []
     pr = pi = 0
     for i in range(begin, min(end, S)):
@@ -306,10 +313,10 @@ def decode_body(S, samples, normals, begin, end, body):
         c2 = ctx(xr, xi)
         vr = V[c2].decode(rc); vi = V[c2].decode(rc)
         key.append((xr, xi, vr, vi)); pr, pi = xr, xi
-    corr = [[], [], []]
+    corr = [[] for _ in range(8)]
     if end > S:
         rb = max(begin, S) - S; re_ = end - S
-        for ch in ([0, 1, 2] if normals else [0]):
+        for ch in channels_of(normals, choppy):
             n = count.decode(rc)
             if n > re_ - rb: raise Refused('bad_value')
             prev = rb - 1
@@ -327,10 +334,12 @@ def s_(i, n):
     return i if i < n // 2 else i - n
 
 class Stream:
-    def __init__(self, grid, patch_x, patch_z, gravity, R, hstep, sstep, normals):
+    def __init__(self, grid, patch_x, patch_z, gravity, R, hstep, sstep, normals, dstep=None, choppy=False):
         self.n = n = grid; self.L = n.bit_length() - 1; self.hc = n // 2 + 1
         self.patch_x, self.patch_z, self.g, self.R = patch_x, patch_z, gravity, R
         self.hstep, self.sstep, self.normals = hstep, sstep, normals
+        self.dstep, self.choppy = dstep, choppy
+        self.G = {}  # choppiness -> [G_0 .. G_4] (7.1)
         self.fft = FFT(n)
         f = (hstep / 65536) / (sstep / 4096)
         self.KX = [0] * self.hc; self.KZ = [0] * n
@@ -367,30 +376,71 @@ class Stream:
                 cur = st[key_c]; prev = st[key_p]
                 nxt = [wrap64(mul_sym(a[i], cur[i], 48) - prev[i]) for i in range(len(a))]
                 st[key_p] = cur; st[key_c] = nxt
-    def synthesize(self, cr, ci):
+    def choppy_factors(self, lam):
+        # 7.1: G_j per choppiness lambda, on modes r != n/2, c < n/2, k > 0 (else 0).
+        if lam not in self.G:
+            n, hc = self.n, self.hc
+            f = (self.hstep / 65536) / (self.sstep / 4096)
+            fd = (self.hstep / 65536) / (self.dstep / 65536)
+            G = [[0] * (n * hc) for _ in range(5)]
+            for r in range(n):
+                if r == n // 2: continue
+                kz = kTwoPi * s_(r, n) / self.patch_z
+                for c in range(n // 2):
+                    kx = kTwoPi * c / self.patch_x
+                    k = math.sqrt(kx * kx + kz * kz)
+                    if not (k > 0): continue
+                    q = (kx / k, kz / k, (kx * kx) / k, (kz * kz) / k, (kx * kz) / k)
+                    for j in range(5):
+                        G[j][r * hc + c] = to_fixed(lam * q[j] * (fd if j < 2 else f), 32)
+            self.G[lam] = G
+        return self.G[lam]
+    def synthesize(self, cr, ci, lam=0.0):
+        # 7.2: the channels present as half-spectra, in order, synthesized in consecutive pairs
+        # A + iB through one inverse FFT each. Returns 8 fields (None where absent).
         n, hc = self.n, self.hc
-        z1r = [[0] * n for _ in range(n)]; z1i = [[0] * n for _ in range(n)]
-        z2r = [[0] * n for _ in range(n)]; z2i = [[0] * n for _ in range(n)]
-        for r in range(n):
-            for c in range(hc):
-                hr = cr[r * hc + c]; hi = ci[r * hc + c]
-                sxr = -mul_sym(self.KX[c], hi, 32); sxi = mul_sym(self.KX[c], hr, 32)
-                szr = -mul_sym(self.KZ[r], hi, 32); szi = mul_sym(self.KZ[r], hr, 32)
-                z1r[r][c] = wrap64(hr - sxi); z1i[r][c] = wrap64(hi + sxr)
-                z2r[r][c] = szr; z2i[r][c] = szi
-                if 0 < c < n // 2:
-                    rr = (n - r) % n; cc = n - c
-                    z1r[rr][cc] = wrap64(hr + sxi); z1i[rr][cc] = wrap64(sxr - hi)
-                    z2r[rr][cc] = szr; z2i[rr][cc] = wrap64(-szi)
-        self.fft.two(z1r, z1i, True)
+        m = n * hc
+        specs = [(0, cr, ci)]
+        if self.normals:
+            sxr = [0] * m; sxi = [0] * m; szr = [0] * m; szi = [0] * m
+            for r in range(n):
+                for c in range(hc):
+                    i = r * hc + c; hr = cr[i]; hi = ci[i]
+                    sxr[i] = -mul_sym(self.KX[c], hi, 32); sxi[i] = mul_sym(self.KX[c], hr, 32)
+                    szr[i] = -mul_sym(self.KZ[r], hi, 32); szi[i] = mul_sym(self.KZ[r], hr, 32)
+            specs += [(1, sxr, sxi), (2, szr, szi)]
+        if self.choppy:
+            G = self.choppy_factors(lam)
+            for j in range(5):
+                g = G[j]
+                if j < 2:  # displacement: -i G H
+                    re = [mul_sym(g[i], ci[i], 32) for i in range(m)]
+                    im = [-mul_sym(g[i], cr[i], 32) for i in range(m)]
+                else:      # its derivatives: G H
+                    re = [mul_sym(g[i], cr[i], 32) for i in range(m)]
+                    im = [mul_sym(g[i], ci[i], 32) for i in range(m)]
+                specs.append((3 + j, re, im))
+        out = [None] * 8
         sh = 2 * self.L
-        height = [round_shift(z1r[r][c], sh) for r in range(n) for c in range(n)]
-        if not self.normals:
-            return [height, None, None]
-        self.fft.two(z2r, z2i, True)
-        sx = [round_shift(z1i[r][c], sh) for r in range(n) for c in range(n)]
-        sz = [round_shift(z2r[r][c], sh) for r in range(n) for c in range(n)]
-        return [height, sx, sz]
+        for p in range(0, len(specs), 2):
+            ach, ar, ai = specs[p]
+            if p + 1 < len(specs):
+                bch, br, bi = specs[p + 1]
+            else:
+                bch, br, bi = None, [0] * m, [0] * m
+            zr = [[0] * n for _ in range(n)]; zi = [[0] * n for _ in range(n)]
+            for r in range(n):
+                rr = (n - r) % n
+                for c in range(hc):
+                    i = r * hc + c
+                    zr[r][c] = wrap64(ar[i] - bi[i]); zi[r][c] = wrap64(ai[i] + br[i])
+                    if 0 < c < n // 2:
+                        zr[rr][n - c] = wrap64(ar[i] + bi[i]); zi[rr][n - c] = wrap64(br[i] - ai[i])
+            self.fft.two(zr, zi, True)
+            out[ach] = [round_shift(zr[r][c], sh) for r in range(n) for c in range(n)]
+            if bch is not None:
+                out[bch] = [round_shift(zi[r][c], sh) for r in range(n) for c in range(n)]
+        return out
     def spectrum_of(self, field):
         n, hc = self.n, self.hc
         re = [[field[r * n + c] for c in range(n)] for r in range(n)]; im = [[0] * n for _ in range(n)]
@@ -426,9 +476,21 @@ class Stream:
             st['pr'][at] = wrap64(st['cr'][at] - wrap64(vr << vs)); st['pi'][at] = wrap64(st['ci'][at] - wrap64(vi << vs))
         self.mirror(st)
         return st
-    def to_float(self, v, height):
-        unit = self.hstep / 65536 if height else self.sstep / 4096
-        return struct.unpack('<f', struct.pack('<f', float(v) * unit))[0]
+    def floats(self, fields):
+        # 7.4: the output floats of every channel present, then (choppy) the Jacobian in float32.
+        units = [self.hstep / 65536] + [self.sstep / 4096] * 2 + [self.dstep / 65536 if self.choppy else 0] * 2 + [self.sstep / 4096] * 3
+        out = [[f32v(float(v) * units[ch]) for v in fields[ch]] for ch in channels_of(self.normals, self.choppy)]
+        if self.choppy:
+            xx, zz, xz = out[-3], out[-2], out[-1]
+            jac = []
+            for i in range(len(xx)):
+                a = f32v(1.0 + xx[i]); b = f32v(1.0 + zz[i])
+                jac.append(f32v(f32v(a * b) - f32v(xz[i] * xz[i])))
+            out.append(jac)
+        return out
+
+def f32v(x):  # round a double to float32 (nearest even); exact for the double of a float32 op result
+    return struct.unpack('<f', struct.pack('<f', x))[0]
 
 # ---- 7.6 scene model
 def mix64(x):
@@ -573,6 +635,8 @@ def hash_state(st):
     return h
 
 # ---- 7.5 timeline + 9 decoder
+SHIFT = [14, 10, 10, 14, 14, 10, 10, 10]  # 7.4: heights and displacement in quarter steps << 14, the rest << 10
+
 class Decoder:
     def __init__(self, stream, max_payload, history, max_lag, max_pending=8):
         self.s = stream; self.max_payload = max_payload; self.history = history; self.max_lag = max_lag
@@ -592,6 +656,8 @@ class Decoder:
         return e[2]
     def model_state(self, t):
         return self.model(self.start_of(t)).state(self.s, t)
+    def choppiness(self, t):  # lambda of the scene in force at t (7.2)
+        return self.scenes[self.start_of(t)][1]['choppiness']
     def advance(self, st, frm, to):
         now = frm
         E = self.start_of(to)
@@ -608,7 +674,7 @@ class Decoder:
         total = S + s.n * s.n
         if h['whole']:
             h['begin'], h['end'] = 0, total
-        if h['normals'] != s.normals: raise Refused('wrong_dimensions')
+        if h['normals'] != s.normals or h['choppy'] != s.choppy: raise Refused('wrong_dimensions')
         if h['begin'] >= h['end'] or h['end'] > total: raise Refused('bad_range')
         if h['key'] and not h['modeled'] and (h['pos_shift'] > 40 or h['vel_shift'] > 40): raise Refused('bad_value')
         if count == 0 or count > 4096 or index >= count: raise Refused('bad_index')
@@ -632,32 +698,32 @@ class Decoder:
             if len(p['got']) + 1 == count and covered != total: raise Refused('coverage_mismatch')
         elif count == 1 and not h['whole']:
             raise Refused('coverage_mismatch')
-        keyc, corr = decode_body(S, s.n * s.n, s.normals, h['begin'], h['end'], h['body'])
+        keyc, corr = decode_body(S, s.n * s.n, s.normals, s.choppy, h['begin'], h['end'], h['body'])
         if p is None:
             p = {'key': key, 'modeled': h['modeled'], 'baseline': baseline, 'count': count, 'got': set(), 'ranges': [],
-                 'coefs': {}, 'corr': [[], [], []], 'ps': h.get('pos_shift'), 'vs': h.get('vel_shift')}
+                 'coefs': {}, 'corr': [[] for _ in range(8)], 'ps': h.get('pos_shift'), 'vs': h.get('vel_shift')}
             if not (key and not h['modeled']):
                 if key:
                     p['state'] = self.model_state(tick)
                 else:
                     st = {k: list(v) for k, v in self.states[baseline].items()}
                     p['state'] = self.advance(st, baseline, tick)
-                p['fields'] = s.synthesize(p['state']['cr'], p['state']['ci'])
+                p['fields'] = s.synthesize(p['state']['cr'], p['state']['ci'], self.choppiness(tick))
             self.pending[tick] = p
         p['got'].add(index); p['ranges'].append((h['begin'], h['end']))
         for i, k in enumerate(keyc): p['coefs'][h['begin'] + i] = k
-        for ch in range(3):
+        for ch in range(8):
             p['corr'][ch].extend(corr[ch])
             if 'fields' in p:
                 for pos, v in corr[ch]:
-                    p['fields'][ch][pos] = wrap64(p['fields'][ch][pos] + (v << (14 if ch == 0 else 10)))
+                    p['fields'][ch][pos] = wrap64(p['fields'][ch][pos] + (v << SHIFT[ch]))
         if len(p['got']) == count:
             if key and not p['modeled']:
                 p['state'] = s.key_state([p['coefs'][i] for i in range(len(s.key_modes))], p['ps'], p['vs'])
-                p['fields'] = s.synthesize(p['state']['cr'], p['state']['ci'])
-                for ch in range(3):
+                p['fields'] = s.synthesize(p['state']['cr'], p['state']['ci'], self.choppiness(tick))
+                for ch in range(8):
                     for pos, v in p['corr'][ch]:
-                        p['fields'][ch][pos] = wrap64(p['fields'][ch][pos] + (v << (14 if ch == 0 else 10)))
+                        p['fields'][ch][pos] = wrap64(p['fields'][ch][pos] + (v << SHIFT[ch]))
             if p['corr'][0]:
                 s.add_correction(p['state'], p['corr'][0])
             self.states[tick] = p['state']
@@ -779,7 +845,8 @@ def run(name):
             for k in ('patch_x_m', 'patch_z_m', 'gravity_mps2', 'depth_m'): assert float(f[k]) == st[k], k
             for k in ('height_step_m', 'slope_step', 'disp_step_m'): assert f32(f[k]) == st[k], k
             assert int(f['max_payload']) == max(1100, w['max_message_bytes'] - 96)
-            stream = Stream(st['grid'], st['patch_x_m'], st['patch_z_m'], st['gravity_mps2'], R, st['height_step_m'], st['slope_step'], bool(st['normals']))
+            stream = Stream(st['grid'], st['patch_x_m'], st['patch_z_m'], st['gravity_mps2'], R, st['height_step_m'], st['slope_step'], bool(st['normals']),
+                            st['disp_step_m'], bool(st['choppy']))
             dec = Decoder(stream, int(f['max_payload']), int(f['history_ticks']), int(f['max_lag']))
         elif kind == 'scene_update':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
@@ -820,7 +887,14 @@ def run(name):
             t = int(f['tick'])
             assert dec.completed and dec.completed[0] == t
             fields = dec.completed[1]
-            data = b''.join(struct.pack('<f', stream.to_float(v, ch == 0)) for ch in range(3) for v in fields[ch])
+            out = stream.floats(fields)
+            labels = ['height', 'slope_x', 'slope_z'] + (['disp_x', 'disp_z', 'disp_xx', 'disp_zz', 'disp_xz', 'jacobian'] if stream.choppy else [])
+            assert len(out) == len(labels)
+            data = b''.join(struct.pack('<%df' % len(v), *v) for v in out)
+            positions = [int(x) for x in f['samples'].split(',')]
+            for label, v in zip(labels, out):
+                assert [f32(x) for x in f[label].split(',')] == [v[i] for i in positions], (t, label)
+            assert len(f['corrections'].split(',')) == (3 if stream.choppy else 2)
             off, size = int(f['offset']), int(f['bytes'])
             assert data == floats[off:off + size], 'frame %d floats differ' % t
             assert '%016x' % fnv1a64(data) == f['fnv1a64']
@@ -857,6 +931,8 @@ def tables(big):
 
 
 if __name__ == '__main__':
-    for n in ['lite_modeled', 'lite_explicit']:
+    for n in ['lite_modeled', 'lite_explicit', 'mobile_choppy']:
+        t0 = time.time()
         run(n)
+        print('  ', round(time.time() - t0, 1), 's')
     tables('--big' in sys.argv)
