@@ -89,6 +89,7 @@ bool Renderer::init(const RendererDesc& in) {
   desc_.sun_direction = glm::normalize(desc_.sun_direction);
   const auto ring = horizon_ring(faces, 0.01f);  // matches the sky shader's below-horizon colour
   horizon_ring_.assign(ring.begin(), ring.end());
+  set_overcast(overcast_);  // the haze the ocean fades into, under the weather set so far
   sky_texture_ = create_sky_texture(faces);
 
   const float triangle[] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
@@ -221,6 +222,12 @@ bool Renderer::upload_frame(const FrameStreams& f) {
   return true;
 }
 
+void Renderer::set_overcast(float overcast) {
+  overcast_ = overcast;
+  weathered_ring_.resize(horizon_ring_.size());
+  for (std::size_t i = 0; i < horizon_ring_.size(); ++i) weathered_ring_[i] = weathered(horizon_ring_[i], overcast_);
+}
+
 void Renderer::draw(const Camera& camera, int width, int height, double /*time_s: the streams carry time*/) {
   stats_ = {};
   glViewport(0, 0, width, height);
@@ -282,8 +289,6 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
   glUniform1f(ocean_u_.shininess, desc_.shininess);
   glUniform2f(ocean_u_.fog, desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m)));
   glUniform3f(ocean_u_.foam_colour, 0.92f, 0.95f, 0.97f);
-  weathered_ring_.resize(horizon_ring_.size());
-  for (std::size_t i = 0; i < horizon_ring_.size(); ++i) weathered_ring_[i] = weathered(horizon_ring_[i], overcast_);
   glUniform3fv(ocean_u_.horizon, static_cast<GLsizei>(weathered_ring_.size()), glm::value_ptr(weathered_ring_[0]));
 }
 

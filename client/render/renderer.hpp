@@ -70,7 +70,7 @@ class Renderer {
   bool set_grid(int n, float patch_x_m, float patch_z_m);
   // The weather's light (weather_light.hpp): 0 a clear sky .. 1 all cloud deck, which hides the
   // sun and greys the sky, its reflection and the water.
-  void set_overcast(float overcast) { overcast_ = overcast; }
+  void set_overcast(float overcast);
   // Uploads only the attribute streams of one frame (sizes from set_grid).
   bool upload_frame(const FrameStreams& frame);
   bool upload_frame(const float* height, const float* slope_x, const float* slope_z,

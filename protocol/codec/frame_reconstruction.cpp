@@ -5,12 +5,21 @@
 
 namespace ocean::codec {
 
+namespace {
+
+// Per channel in coding order: quarter steps of height and displacement, quarter slope steps of
+// the slopes and the displacement's derivatives.
+constexpr int kQuantumShift[kCorrectionChannels] = {kHeightQuantumShift, kSlopeQuantumShift, kSlopeQuantumShift,
+                                                    kDispQuantumShift,   kDispQuantumShift,  kSlopeQuantumShift,
+                                                    kSlopeQuantumShift,  kSlopeQuantumShift};
+
+}  // namespace
+
 void apply_corrections(SampleFields& f, const Corrections& c) {
   std::vector<std::int64_t>* fields[kCorrectionChannels] = {&f.height, &f.slope_x, &f.slope_z,  &f.disp_x,
                                                             &f.disp_z, &f.disp_xx, &f.disp_zz, &f.disp_xz};
   for (int ch = 0; ch < kCorrectionChannels; ++ch) {
-    const int shift = ch == 0 || ch == 3 || ch == 4 ? kHeightQuantumShift : kSlopeQuantumShift;
-    static_assert(kDispQuantumShift == kHeightQuantumShift);
+    const int shift = kQuantumShift[ch];
     std::vector<std::int64_t>& field = *fields[ch];
     for (const Correction& k : channel(c, ch)) field[k.pos] = wadd(field[k.pos], wshl(k.value, shift));
   }
