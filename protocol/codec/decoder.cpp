@@ -93,6 +93,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
     p.key = c.key;
     p.modeled = h.modeled;
     p.count = c.count;
+    p.fields = std::move(spare_fields_);
     p.got.assign(c.count, false);
     if (c.key && options_.memo) p.key_payloads.resize(c.count);
     if (c.key && !h.modeled) {
@@ -128,6 +129,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
   if (predicted && (!shown_tick_ || c.tick >= *shown_tick_)) show(c.tick);
   if (p.received == p.count) {
     complete(c.tick, p, c.payload);
+    recycle(std::move(p.fields));  // still here when the memo took a copy of the frame
     pending_.erase(c.tick);
   }
   while (pending_.size() > options_.max_pending) drop_pending(pending_.begin());
@@ -189,9 +191,11 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
   }
   if (shown) {
     show(tick);
+    recycle(std::move(shown_fields_));
     shown_fields_ = std::move(p.fields);
     shown_complete_ = true;
   } else {
+    recycle(std::move(late_fields_));
     late_fields_ = std::move(p.fields);
   }
   hold(tick, state);
@@ -248,8 +252,11 @@ void Decoder::drop_pending(std::map<Tick, Pending>::iterator it) {
   // The frame on show keeps showing what it had, still marked incomplete.
   if (shown_tick_ && it->first == *shown_tick_) {
     show(it->first);
+    recycle(std::move(shown_fields_));
     shown_fields_ = std::move(it->second.fields);
     shown_complete_ = false;
+  } else {
+    recycle(std::move(it->second.fields));
   }
   pending_.erase(it);
 }

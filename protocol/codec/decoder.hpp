@@ -90,6 +90,9 @@ class Decoder {
   void hold(Tick tick, DecodeMemo::State state);
   void evict();
   void drop_pending(std::map<Tick, Pending>::iterator it);
+  void recycle(SampleFields&& fields) {
+    if (fields.height.capacity() > spare_fields_.height.capacity()) spare_fields_ = std::move(fields);
+  }
 
   StreamConfig config_;
   DecoderOptions options_;
@@ -110,6 +113,9 @@ class Decoder {
   DecodeMemo::Frame late_shared_;
   ReconstructedFrame late_;
   bool late_converted_ = false;
+  // The buffers of a frame no longer needed, taken by the next one: a 256 choppy frame is 4 MB,
+  // which allocated afresh would be faulted in page by page every frame.
+  SampleFields spare_fields_;
 };
 
 }  // namespace ocean::codec

@@ -1,7 +1,9 @@
 // Radix-2 decimation-in-time FFT in int64 with one rounding per twiddle product (CODEC.md 4).
 #include "fixed_fft.hpp"
 
+#include "bit_reversal.hpp"
 #include "det_math.hpp"
+#include "fixed_fft_avx2.hpp"
 #include "fixed_point.hpp"
 
 #include <stdexcept>
@@ -21,18 +23,28 @@ FixedFft::FixedFft(int n) : n_(n) {
     cos_[j] = to_fixed(det_cos(angle), kTwiddleBits);
     sin_[j] = to_fixed(det_sin(angle), kTwiddleBits);
   }
-  int bits = 0;
-  while ((1 << bits) < n) ++bits;
-  bitrev_.resize(n);
-  for (int i = 0; i < n; ++i) {
-    int r = 0;
-    for (int b = 0; b < bits; ++b)
-      if (i & (1 << b)) r |= 1 << (bits - 1 - b);
-    bitrev_[i] = r;
-  }
+  bitrev_ = bit_reversal(n);
   // The exact shortcuts in the butterflies rely on w(n/4) = (0, 1) exactly.
   if (n >= 4 && (cos_[n / 4] != 0 || sin_[n / 4] != (std::int64_t{1} << kTwiddleBits)))
     throw std::logic_error("FixedFft: twiddle table is not exact at a quarter turn");
+  if (kernel_available(FftKernel::avx2, n)) use_kernel(FftKernel::avx2);
+}
+
+bool FixedFft::kernel_available(FftKernel kernel, int n) {
+  switch (kernel) {
+    case FftKernel::scalar:
+      return true;
+    case FftKernel::avx2:
+      return n >= 4 && fft_avx2::available();  // four lanes need four rows and columns
+  }
+  return false;
+}
+
+void FixedFft::use_kernel(FftKernel kernel) {
+  if (!kernel_available(kernel, n_))
+    throw std::invalid_argument("FixedFft: this CPU or build cannot run the requested kernel at size " + std::to_string(n_));
+  kernel_ = kernel;
+  if (kernel == FftKernel::avx2) scratch_.resize(static_cast<std::size_t>(8) * n_);
 }
 
 namespace {
@@ -95,6 +107,10 @@ void FixedFft::transform_1d(std::int64_t* re, std::int64_t* im, bool inverse) co
 
 void FixedFft::transform_2d(std::int64_t* re, std::int64_t* im, bool inverse) {
   const int n = n_;
+  if (kernel_ == FftKernel::avx2) {
+    fft_avx2::transform_2d({n, cos_.data(), sin_.data(), bitrev_.data()}, re, im, inverse, scratch_.data());
+    return;
+  }
   for (int r = 0; r < n; ++r) transform_1d(re + r * n, im + r * n, inverse);
   // Columns: the same butterflies with whole rows as the unit, so memory is walked contiguously.
   for (int i = 0; i < n; ++i) {

@@ -20,7 +20,8 @@ inline std::int64_t wshl(std::int64_t a, int s) {
 inline std::int64_t round_shift(__int128 p, int s) {
   return static_cast<std::int64_t>((p + (static_cast<__int128>(1) << (s - 1))) >> s);
 }
-inline std::int64_t round_shift64(std::int64_t p, int s) { return round_shift(static_cast<__int128>(p), s); }
+// The same bits in 64-bit arithmetic: adding half and flooring carries exactly bit s - 1 of p.
+inline std::int64_t round_shift64(std::int64_t p, int s) { return wadd(p >> s, (p >> (s - 1)) & 1); }
 
 // round_shift(a * x + b * y, 30) for |x|, |y| <= 2^30 (the FFT's twiddles), in 64-bit products
 // only: the same bits, since a = ah * 2^32 + al splits the exact sum into 4 * (ah x + bh y) +
@@ -34,12 +35,13 @@ inline std::int64_t dot_round30(std::int64_t a, std::int64_t x, std::int64_t b, 
 
 // round(a * b / 2^s) with ties away from zero, so that x and -x give exactly opposite results
 // (keeps Hermitian pairs exact).
+// For p < 0, -floor((-p + h) / 2^s) = floor((p + h - 1) / 2^s) with h = 2^(s-1): one add and one
+// shift instead of negating the 128-bit product twice (the decoder does this for every mode of
+// every channel).
 inline std::int64_t mul_round_sym(std::int64_t a, std::int64_t b, int s) {
   const __int128 p = static_cast<__int128>(a) * b;
   const __int128 neg = p >> 127;  // 0 or -1; branch-free because signs are random here
-  const __int128 mag = (p ^ neg) - neg;
-  const __int128 r = (mag + (static_cast<__int128>(1) << (s - 1))) >> s;
-  return static_cast<std::int64_t>((r ^ neg) - neg);
+  return static_cast<std::int64_t>((p + (static_cast<__int128>(1) << (s - 1)) + neg) >> s);
 }
 
 }  // namespace ocean::codec

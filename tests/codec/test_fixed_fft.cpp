@@ -110,3 +110,73 @@ TEST_CASE("dot_round30 gives the 128-bit product's bits for any int64 inputs and
   }
   CHECK(checked > 200000);
 }
+
+TEST_CASE("the AVX2 kernel gives the scalar butterflies' bits, wrapping included") {
+  for (int n : {4, 8, 16, 64, 256}) {
+    if (!FixedFft::kernel_available(FftKernel::avx2, n)) {
+      WARN("no AVX2 on this CPU or build: only the scalar kernel is tested");
+      return;
+    }
+    FixedFft simd(n), scalar(n);
+    simd.use_kernel(FftKernel::avx2);
+    scalar.use_kernel(FftKernel::scalar);
+    std::mt19937_64 rng(n);
+    // Decoder-sized values, then any int64 (hostile streams wrap; they must wrap alike).
+    for (int bits : {40, 64}) {
+      std::vector<std::int64_t> re(n * n), im(n * n);
+      for (auto* v : {&re, &im})
+        for (auto& x : *v) x = bits == 64 ? static_cast<std::int64_t>(rng()) : static_cast<std::int64_t>(rng() >> 24) - (std::int64_t{1} << 39);
+      if (bits == 64) {
+        re[0] = std::numeric_limits<std::int64_t>::min();
+        im[1] = std::numeric_limits<std::int64_t>::max();
+      }
+      for (bool inverse : {false, true}) {
+        auto ar = re, ai = im, br = re, bi = im;
+        if (inverse) {
+          simd.inverse_2d(ar.data(), ai.data());
+          scalar.inverse_2d(br.data(), bi.data());
+        } else {
+          simd.forward_2d(ar.data(), ai.data());
+          scalar.forward_2d(br.data(), bi.data());
+        }
+        INFO("n " << n << " bits " << bits << " inverse " << inverse);
+        CHECK(ar == br);
+        CHECK(ai == bi);
+      }
+    }
+  }
+}
+
+TEST_CASE("a kernel the CPU cannot run is refused by name") {
+  FixedFft fft(2);
+  CHECK_FALSE(FixedFft::kernel_available(FftKernel::avx2, 2));
+  CHECK_THROWS_AS(fft.use_kernel(FftKernel::avx2), std::invalid_argument);
+  fft.use_kernel(FftKernel::scalar);
+  CHECK(fft.kernel() == FftKernel::scalar);
+}
+
+TEST_CASE("mul_round_sym and round_shift64 give their 128-bit definitions' bits for any int64 inputs") {
+  // CODEC.md 4 and 7: round(a b / 2^s), ties away from zero; floor(p / 2^s + 1/2).
+  const auto sym = [](std::int64_t a, std::int64_t b, int s) {
+    const __int128 p = static_cast<__int128>(a) * b;
+    const __int128 mag = p < 0 ? -p : p;
+    const __int128 r = (mag + (static_cast<__int128>(1) << (s - 1))) >> s;
+    return static_cast<std::int64_t>(p < 0 ? -r : r);
+  };
+  constexpr std::int64_t kMin = std::numeric_limits<std::int64_t>::min(), kMax = std::numeric_limits<std::int64_t>::max();
+  std::vector<std::int64_t> values = {0, 1, -1, 2, -2, 3, -3, kMin, kMax, kMin + 1, kMax - 1, std::int64_t{1} << 31,
+                                      -(std::int64_t{1} << 31), std::int64_t{1} << 47, -(std::int64_t{1} << 47),
+                                      (std::int64_t{1} << 48) + 1, -(std::int64_t{1} << 48) - 1};
+  std::mt19937_64 random(7);
+  for (int i = 0; i < 400; ++i) values.push_back(static_cast<std::int64_t>(random()) >> (random() % 64));
+  int checked = 0;
+  for (const int s : {1, 12, 16, 24, 32, 48, 62})
+    for (const std::int64_t a : values) {
+      REQUIRE(round_shift64(a, s) == round_shift(static_cast<__int128>(a), s));
+      for (const std::int64_t b : values) {
+        REQUIRE(mul_round_sym(a, b, s) == sym(a, b, s));
+        ++checked;
+      }
+    }
+  CHECK(checked > 1000000);
+}
