@@ -9,7 +9,11 @@ constexpr std::uint8_t kFlagNormals = 1u << 1;
 constexpr std::uint8_t kFlagModeled = 1u << 2;
 constexpr std::uint8_t kFlagWhole = 1u << 3;
 constexpr std::uint8_t kFlagChoppy = 1u << 4;  // codec version 3
-constexpr std::uint8_t kKnownFlags = kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole | kFlagChoppy;
+// Codec version 4 synthesizes in binary32 (CODEC.md 7.2), so its predictions differ from version
+// 3's in the last bits: every chunk says so, and a version 3 decoder refuses it (bad_flags) rather
+// than decode it against the wrong prediction.
+constexpr std::uint8_t kFlagBinary32 = 1u << 5;
+constexpr std::uint8_t kKnownFlags = kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole | kFlagChoppy | kFlagBinary32;
 constexpr std::size_t kCrcOffset = 1;
 constexpr std::size_t kFixedHeaderBytes = 4;  // flags, CRC (2), scene tag
 
@@ -100,7 +104,7 @@ std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& e
   const bool explicit_key = h.key && !h.modeled;
   out.push_back(static_cast<std::uint8_t>((h.key ? kFlagKey : 0) | (h.normals ? kFlagNormals : 0) |
                                           (h.key && h.modeled ? kFlagModeled : 0) | (h.whole ? kFlagWhole : 0) |
-                                          (h.choppy ? kFlagChoppy : 0)));
+                                          (h.choppy ? kFlagChoppy : 0) | kFlagBinary32));
   out.push_back(0);
   out.push_back(0);  // CRC placeholder
   out.push_back(h.scene_tag);
@@ -126,6 +130,7 @@ ChunkError parse_payload(const ChunkView& c, std::size_t max_payload, int grid_l
   if (p.size() < kFixedHeaderBytes) return ChunkError::truncated;
   const std::uint8_t flags = p[0];
   if (flags & ~kKnownFlags) return ChunkError::bad_flags;
+  if (!(flags & kFlagBinary32)) return ChunkError::unknown_version;  // a version 2 or 3 chunk
   h.key = (flags & kFlagKey) != 0;
   h.normals = (flags & kFlagNormals) != 0;
   h.modeled = (flags & kFlagModeled) != 0;

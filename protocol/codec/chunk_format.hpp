@@ -12,7 +12,7 @@
 
 namespace ocean::codec {
 
-inline constexpr std::uint8_t kCodecVersion = 3;
+inline constexpr std::uint8_t kCodecVersion = 4;
 inline constexpr std::size_t kDefaultMaxPayload = 1100;
 // Bytes a frame record adds around the payload in a lean UDP datagram (PROTOCOL.md 7): lag,
 // count, length and its share of the datagram's kind byte and tick; the bench charges this per
@@ -45,7 +45,7 @@ enum class ChunkError : std::uint8_t {
   ok = 0,
   truncated,           // payload shorter than its header
   oversized,           // payload longer than max_payload
-  unknown_version,     // not produced by this codec version (the version is the stream's, not per chunk)
+  unknown_version,     // flag bit 5 clear: a chunk of codec version 2 or 3 (CODEC.md 9)
   bad_flags,           // reserved flag bits set, or key flag differs from the envelope
   wrong_dimensions,    // grid or channel set differs from the stream configuration
   bad_range,           // item range empty or outside the frame

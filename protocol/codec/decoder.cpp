@@ -107,6 +107,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
         if (options_.memo) {
           options_.memo->advance(states_.at(c.baseline), c.baseline, c.tick, scenes_, p.predicted);
         } else {
+          p.predicted = std::move(spare_state_);  // its buffers, if any: the copy then allocates nothing
           p.predicted = *states_.at(c.baseline);
           scenes_.advance(p.predicted, c.baseline, c.tick);
         }
@@ -173,7 +174,7 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
   if (!p.corrections.height.empty())
     model_.add_correction(p.predicted, height_correction_field(model_.n(), p.corrections.height));
   const DecodeMemo::State state = memo ? memo->intern(tick, std::move(p.predicted))
-                                       : std::make_shared<const ModalState>(std::move(p.predicted));
+                                       : DecodeMemo::State(std::make_shared<ModalState>(std::move(p.predicted)));
   const bool shown = !shown_tick_ || tick >= *shown_tick_;
   completed_tick_ = tick;
   late_shared_.reset();
@@ -242,10 +243,18 @@ void Decoder::evict() {
   const Tick oldest = *newest - options_.history_ticks;
   while (!states_.empty() && states_.begin()->first < oldest) {
     window_ = window_->without(states_.begin()->first);
+    recycle(std::move(states_.begin()->second));
     states_.erase(states_.begin());
   }
   while (!pending_.empty() && pending_.begin()->first < oldest) drop_pending(pending_.begin());
   scenes_.forget_before(states_.empty() ? oldest : std::min(oldest, states_.begin()->first));
+}
+
+// Without a memo every held state was made by complete() as a (non-const) ModalState; the last
+// reference to one may give its buffers to the next delta's copy of its baseline.
+void Decoder::recycle(DecodeMemo::State&& state) {
+  if (options_.memo || !state || state.use_count() != 1) return;
+  spare_state_ = std::move(const_cast<ModalState&>(*state));
 }
 
 void Decoder::drop_pending(std::map<Tick, Pending>::iterator it) {

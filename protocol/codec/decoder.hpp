@@ -90,6 +90,7 @@ class Decoder {
   void hold(Tick tick, DecodeMemo::State state);
   void evict();
   void drop_pending(std::map<Tick, Pending>::iterator it);
+  void recycle(DecodeMemo::State&& state);
   void recycle(SampleFields&& fields) {
     if (fields.height.capacity() > spare_fields_.height.capacity()) spare_fields_ = std::move(fields);
   }
@@ -116,6 +117,7 @@ class Decoder {
   // The buffers of a frame no longer needed, taken by the next one: a 256 choppy frame is 4 MB,
   // which allocated afresh would be faulted in page by page every frame.
   SampleFields spare_fields_;
+  ModalState spare_state_;  // likewise the buffers of an evicted state (1 MB at 256)
 };
 
 }  // namespace ocean::codec

@@ -35,51 +35,81 @@ namespace {
 
 constexpr int kBlockRows = 16;
 
+struct Twiddle {
+  float re, im;
+};
+
+// w = e^{+2 pi i j / len}, exactly 1 and i where the tables are not exact (CODEC.md 4.2 multiplies
+// by those too: the products decide zeros' signs and what an infinity gives).
+Twiddle twiddle(int n, const float* cos, const float* sin, int len, int j) {
+  if (j == 0) return {1.0f, 0.0f};
+  if (4 * j == len) return {0.0f, 1.0f};
+  return {cos[j * (n / len)], sin[j * (n / len)]};
+}
+
 // Every stage along the first axis of an n x width block whose rows are `stride` apart, input in
-// bit-reversed order. j = 0 (w = 1) and 4j = len (w = i) are exact by definition, not by product.
+// bit-reversed order. Stages go in pairs (len, 2 len): the four rows start + j + {0, 1, 2, 3} len/2
+// meet only each other in both, so each is loaded and stored once per pair (the column pass is
+// memory-bound).
 OCEAN_FLOAT_FFT_CLONES
 void stages(int n, const float* cos, const float* sin, float* re, float* im, std::size_t stride, int width) {
-  for (int len = 2; len <= n; len <<= 1) {
-    const int half = len >> 1;
-    const int step = n / len;
-    for (int j = 0; j < half; ++j) {
-      const float wr = cos[j * step], wi = sin[j * step];
-      for (int start = 0; start < n; start += len) {
-        float* __restrict ar = re + static_cast<std::size_t>(start + j) * stride;
-        float* __restrict ai = im + static_cast<std::size_t>(start + j) * stride;
-        float* __restrict br = ar + static_cast<std::size_t>(half) * stride;
-        float* __restrict bi = ai + static_cast<std::size_t>(half) * stride;
-        if (j == 0) {
-OCEAN_IVDEP
-          for (int x = 0; x < width; ++x) {
-            const float tr = br[x], ti = bi[x], xr = ar[x], xi = ai[x];
-            br[x] = xr - tr;
-            bi[x] = xi - ti;
-            ar[x] = xr + tr;
-            ai[x] = xi + ti;
-          }
-        } else if (4 * j == len) {
-OCEAN_IVDEP
-          for (int x = 0; x < width; ++x) {
-            const float tr = -bi[x], ti = br[x], xr = ar[x], xi = ai[x];
-            br[x] = xr - tr;
-            bi[x] = xi - ti;
-            ar[x] = xr + tr;
-            ai[x] = xi + ti;
-          }
-        } else {
-OCEAN_IVDEP
-          for (int x = 0; x < width; ++x) {
-            const float yr = br[x], yi = bi[x], xr = ar[x], xi = ai[x];
-            const float pr = yr * wr, qr = yi * wi, pi = yr * wi, qi = yi * wr;
-            const float tr = pr - qr, ti = pi + qi;
-            br[x] = xr - tr;
-            bi[x] = xi - ti;
-            ar[x] = xr + tr;
-            ai[x] = xi + ti;
-          }
+  int len = 2;
+  for (; 2 * len <= n; len <<= 2) {
+    const int h = len >> 1;
+    for (int j = 0; j < h; ++j) {
+      const Twiddle w1 = twiddle(n, cos, sin, len, j);
+      const Twiddle w2 = twiddle(n, cos, sin, 2 * len, j);
+      const Twiddle w3 = twiddle(n, cos, sin, 2 * len, j + h);
+      for (int start = 0; start < n; start += 2 * len) {
+        float* __restrict r0 = re + static_cast<std::size_t>(start + j) * stride;
+        float* __restrict i0 = im + static_cast<std::size_t>(start + j) * stride;
+        float* __restrict r1 = r0 + static_cast<std::size_t>(h) * stride;
+        float* __restrict i1 = i0 + static_cast<std::size_t>(h) * stride;
+        float* __restrict r2 = r1 + static_cast<std::size_t>(h) * stride;
+        float* __restrict i2 = i1 + static_cast<std::size_t>(h) * stride;
+        float* __restrict r3 = r2 + static_cast<std::size_t>(h) * stride;
+        float* __restrict i3 = i2 + static_cast<std::size_t>(h) * stride;
+        OCEAN_IVDEP
+        for (int x = 0; x < width; ++x) {
+          // Stage len: (0, 1) and (2, 3), both by w1.
+          float tr = r1[x] * w1.re - i1[x] * w1.im, ti = r1[x] * w1.im + i1[x] * w1.re;
+          const float b0r = r0[x] + tr, b0i = i0[x] + ti, b1r = r0[x] - tr, b1i = i0[x] - ti;
+          tr = r3[x] * w1.re - i3[x] * w1.im;
+          ti = r3[x] * w1.im + i3[x] * w1.re;
+          const float b2r = r2[x] + tr, b2i = i2[x] + ti, b3r = r2[x] - tr, b3i = i2[x] - ti;
+          // Stage 2 len: (0, 2) by w2, (1, 3) by w3.
+          tr = b2r * w2.re - b2i * w2.im;
+          ti = b2r * w2.im + b2i * w2.re;
+          r0[x] = b0r + tr;
+          i0[x] = b0i + ti;
+          r2[x] = b0r - tr;
+          i2[x] = b0i - ti;
+          tr = b3r * w3.re - b3i * w3.im;
+          ti = b3r * w3.im + b3i * w3.re;
+          r1[x] = b1r + tr;
+          i1[x] = b1i + ti;
+          r3[x] = b1r - tr;
+          i3[x] = b1i - ti;
         }
       }
+    }
+  }
+  if (len > n) return;
+  const int h = len >> 1;  // an odd number of stages: the last one alone
+  for (int j = 0; j < h; ++j) {
+    const Twiddle w = twiddle(n, cos, sin, len, j);
+    float* __restrict r0 = re + static_cast<std::size_t>(j) * stride;
+    float* __restrict i0 = im + static_cast<std::size_t>(j) * stride;
+    float* __restrict r1 = r0 + static_cast<std::size_t>(h) * stride;
+    float* __restrict i1 = i0 + static_cast<std::size_t>(h) * stride;
+    OCEAN_IVDEP
+    for (int x = 0; x < width; ++x) {
+      const float tr = r1[x] * w.re - i1[x] * w.im, ti = r1[x] * w.im + i1[x] * w.re;
+      const float ar = r0[x], ai = i0[x];
+      r1[x] = ar - tr;
+      i1[x] = ai - ti;
+      r0[x] = ar + tr;
+      i0[x] = ai + ti;
     }
   }
 }

@@ -2,7 +2,7 @@
 // subtract and multiply are correctly rounded on every CPU a client runs on (x86 SSE/AVX, ARM,
 // WebAssembly), so with the order of operations fixed and nothing fused or reassociated (the codec
 // builds with -ffp-contract=off) every implementation gives the same bits, four or eight lanes at a
-// time: about six times the speed of the int64 transform it replaces in codec version 4.
+// time: several times the speed of the int64 transform it replaces in codec version 4.
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,7 @@
 // Shared reconstruction steps (CODEC.md 7).
 #include "frame_reconstruction.hpp"
 
+#include "field_conversion.hpp"
 #include "fixed_point.hpp"
 
 namespace ocean::codec {
@@ -52,7 +53,7 @@ namespace {
 
 void convert(const std::vector<std::int64_t>& from, double scale, std::vector<float>& to) {
   to.resize(from.size());
-  for (std::size_t i = 0; i < from.size(); ++i) to[i] = static_cast<float>(static_cast<double>(from[i]) * scale);
+  scale_fields(from.data(), from.size(), scale, to.data());
 }
 
 }  // namespace

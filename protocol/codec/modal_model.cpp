@@ -3,6 +3,7 @@
 #include "modal_model.hpp"
 
 #include "det_math.hpp"
+#include "field_conversion.hpp"
 #include "fixed_point.hpp"
 
 #include <cmath>
@@ -21,6 +22,9 @@ const StreamConfig& require_valid(const StreamConfig& config) {
   return config;
 }
 
+// A state value as binary32 (CODEC.md 7.2): through double, as every language can.
+float to_binary32(std::int64_t v) { return static_cast<float>(static_cast<double>(v)); }
+
 }  // namespace
 
 ModalModel::ModalModel(const StreamConfig& config)
@@ -30,7 +34,8 @@ ModalModel::ModalModel(const StreamConfig& config)
       choppy_(config.choppy),
       patch_x_m_(config.patch_x_m),
       patch_z_m_(config.patch_z_m),
-      fft_(config.grid) {
+      fft_(config.grid),
+      float_fft_(config.grid) {
   const int n = n_, hc = n / 2 + 1;
   const double dt = config.dt_s();  // one tick step: deltas advance (tick - baseline) steps
   a_.resize(static_cast<std::size_t>(n) * hc);
@@ -48,12 +53,12 @@ ModalModel::ModalModel(const StreamConfig& config)
                         (static_cast<double>(config.slope_step) / 4096.0);
   disp_factor_ = (static_cast<double>(config.height_step_m) / 65536.0) / (static_cast<double>(config.disp_step_m) / 65536.0);
   jac_factor_ = factor;
-  kx_coef_.assign(hc, 0);
-  kz_coef_.assign(n, 0);
+  kx_.assign(hc, 0.0f);
+  kz_.assign(n, 0.0f);
   if (normals_) {
-    for (int c = 0; c < n / 2; ++c) kx_coef_[c] = to_fixed(kTwoPi * c / config.patch_x_m * factor, kSlopeCoefBits);
+    for (int c = 0; c < n / 2; ++c) kx_[c] = static_cast<float>(kTwoPi * c / config.patch_x_m * factor);
     for (int r = 0; r < n; ++r)
-      if (r != n / 2) kz_coef_[r] = to_fixed(kTwoPi * signed_index(r, n) / config.patch_z_m * factor, kSlopeCoefBits);
+      if (r != n / 2) kz_[r] = static_cast<float>(kTwoPi * signed_index(r, n) / config.patch_z_m * factor);
   }
   for (int r = 0; r < n; ++r) {
     if (r == n / 2) continue;
@@ -65,6 +70,8 @@ ModalModel::ModalModel(const StreamConfig& config)
   const std::size_t nn = static_cast<std::size_t>(n) * n;
   z_re_.resize(nn);
   z_im_.resize(nn);
+  zf_re_.resize(nn);
+  zf_im_.resize(nn);
 }
 
 ModalState ModalModel::zero_state() const {
@@ -89,7 +96,7 @@ void ModalModel::advance(ModalState& s, std::uint64_t steps) const {
   for (std::uint64_t i = 0; i < steps; ++i) advance(s);
 }
 
-void ModalModel::build_choppy_coefficients(double choppiness) {
+void ModalModel::build_choppy_factors(double choppiness) {
   const int n = n_, hc = n / 2 + 1;
   const std::size_t m = static_cast<std::size_t>(n) * hc;
   if (ratio_[0].empty()) {
@@ -112,65 +119,76 @@ void ModalModel::build_choppy_coefficients(double choppiness) {
   }
   for (int j = 0; j < 5; ++j) {
     const double factor = j < 2 ? disp_factor_ : jac_factor_;
-    choppy_coef_[j].resize(m);
-    for (std::size_t i = 0; i < m; ++i) choppy_coef_[j][i] = to_fixed(choppiness * ratio_[j][i] * factor, kChoppyCoefBits);
+    choppy_factor_[j].resize(m);
+    for (std::size_t i = 0; i < m; ++i) choppy_factor_[j][i] = static_cast<float>(choppiness * ratio_[j][i] * factor);
   }
-  coef_choppiness_ = choppiness;
+  factor_choppiness_ = choppiness;
 }
 
-void ModalModel::synthesize_pair(const std::int64_t* ar, const std::int64_t* ai, const std::int64_t* br,
-                                 const std::int64_t* bi, std::vector<std::int64_t>& a, std::vector<std::int64_t>* b) {
-  const int n = n_, hc = n / 2 + 1, shift = 2 * log2n_;
+void ModalModel::synthesize_pair(const float* ar, const float* ai, const float* br, const float* bi,
+                                 std::vector<std::int64_t>& a, std::vector<std::int64_t>* b) {
+  const int n = n_, hc = n / 2 + 1;
   const std::size_t nn = static_cast<std::size_t>(n) * n;
+  const double scale = std::ldexp(1.0, -2 * log2n_);
   for (int r = 0; r < n; ++r) {
     const int rm = (n - r) % n;
     for (int c = 0; c < hc; ++c) {
       const std::size_t h = static_cast<std::size_t>(r) * hc + c;
       // Z = A + iB: one inverse FFT gives A (real part) and B (imaginary part).
-      const std::int64_t xr = ar[h], xi = ai[h], yr = br ? br[h] : 0, yi = bi ? bi[h] : 0;
+      const float xr = ar[h], xi = ai[h], yr = br ? br[h] : 0.0f, yi = bi ? bi[h] : 0.0f;
       const std::size_t at = static_cast<std::size_t>(r) * n + c;
-      z_re_[at] = wsub(xr, yi);
-      z_im_[at] = wadd(xi, yr);
+      zf_re_[at] = xr - yi;
+      zf_im_[at] = xi + yr;
       if (c > 0 && c < n / 2) {  // the conjugate partner -k
         const std::size_t mat = static_cast<std::size_t>(rm) * n + (n - c);
-        z_re_[mat] = wadd(xr, yi);
-        z_im_[mat] = wsub(yr, xi);
+        zf_re_[mat] = xr + yi;
+        zf_im_[mat] = yr - xi;
       }
     }
   }
-  fft_.inverse_2d(z_re_.data(), z_im_.data());
+  float_fft_.inverse_2d(zf_re_.data(), zf_im_.data());
   a.resize(nn);
-  for (std::size_t i = 0; i < nn; ++i) a[i] = round_shift64(z_re_[i], shift);
+  round_fields(zf_re_.data(), nn, scale, a.data());
   if (!b) return;
   b->resize(nn);
-  for (std::size_t i = 0; i < nn; ++i) (*b)[i] = round_shift64(z_im_[i], shift);
+  round_fields(zf_im_.data(), nn, scale, b->data());
 }
 
 void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out) {
   const int n = n_, hc = n / 2 + 1;
   const std::size_t m = static_cast<std::size_t>(half_size());
   const std::size_t nn = static_cast<std::size_t>(n) * n;
+  h_re_.resize(m);
+  h_im_.resize(m);
+  for (std::size_t h = 0; h < m; ++h) {
+    h_re_[h] = to_binary32(cur.re[h]);
+    h_im_[h] = to_binary32(cur.im[h]);
+  }
+  const float* hre = h_re_.data();
+  const float* him = h_im_.data();
   // The channels in order - height, [slope_x, slope_z], [disp_x, disp_z, disp_xx, disp_zz,
   // disp_xz] - as half-spectra, synthesized in consecutive pairs (CODEC.md 7.2).
   struct Channel {
-    const std::int64_t *re, *im;
+    const float *re, *im;
     std::vector<std::int64_t>* out;
   };
   Channel channels[8];
   int count = 0;
-  channels[count++] = {cur.re.data(), cur.im.data(), &out.height};
+  channels[count++] = {hre, him, &out.height};
   if (normals_) {
     for (int j = 0; j < 4; ++j) spec_[j].resize(m);
-    std::int64_t *sxr = spec_[0].data(), *sxi = spec_[1].data(), *szr = spec_[2].data(), *szi = spec_[3].data();
-    for (int r = 0; r < n; ++r)
+    float *sxr = spec_[0].data(), *sxi = spec_[1].data(), *szr = spec_[2].data(), *szi = spec_[3].data();
+    for (int r = 0; r < n; ++r) {
+      const float kz = kz_[r];
       for (int c = 0; c < hc; ++c) {
         const std::size_t h = static_cast<std::size_t>(r) * hc + c;
-        const std::int64_t hr = cur.re[h], hi = cur.im[h];
-        sxr[h] = -mul_round_sym(kx_coef_[c], hi, kSlopeCoefBits);  // i kx H
-        sxi[h] = mul_round_sym(kx_coef_[c], hr, kSlopeCoefBits);
-        szr[h] = -mul_round_sym(kz_coef_[r], hi, kSlopeCoefBits);
-        szi[h] = mul_round_sym(kz_coef_[r], hr, kSlopeCoefBits);
+        const float kx = kx_[c];
+        sxr[h] = -(kx * him[h]);  // i kx H
+        sxi[h] = kx * hre[h];
+        szr[h] = -(kz * him[h]);
+        szi[h] = kz * hre[h];
       }
+    }
     channels[count++] = {sxr, sxi, &out.slope_x};
     channels[count++] = {szr, szi, &out.slope_z};
   } else {
@@ -182,21 +200,22 @@ void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFi
     // Every factor is 0, so every field is exactly 0: no transforms needed.
     for (auto* f : choppy_out) f->assign(nn, 0);
   } else if (choppy_) {
-    if (choppiness != coef_choppiness_) build_choppy_coefficients(choppiness);
+    if (choppiness != factor_choppiness_) build_choppy_factors(choppiness);
     for (int j = 0; j < 5; ++j) {
       spec_[4 + 2 * j].resize(m);
       spec_[5 + 2 * j].resize(m);
-      std::int64_t* re = spec_[4 + 2 * j].data();
-      std::int64_t* im = spec_[5 + 2 * j].data();
-      const std::int64_t* g = choppy_coef_[j].data();
-      for (std::size_t h = 0; h < m; ++h) {
-        const std::int64_t hr = cur.re[h], hi = cur.im[h];
-        if (j < 2) {  // displacement: -i G H
-          re[h] = mul_round_sym(g[h], hi, kChoppyCoefBits);
-          im[h] = -mul_round_sym(g[h], hr, kChoppyCoefBits);
-        } else {  // its derivatives: G H
-          re[h] = mul_round_sym(g[h], hr, kChoppyCoefBits);
-          im[h] = mul_round_sym(g[h], hi, kChoppyCoefBits);
+      float* re = spec_[4 + 2 * j].data();
+      float* im = spec_[5 + 2 * j].data();
+      const float* g = choppy_factor_[j].data();
+      if (j < 2) {  // displacement: -i G H
+        for (std::size_t h = 0; h < m; ++h) {
+          re[h] = g[h] * him[h];
+          im[h] = -(g[h] * hre[h]);
+        }
+      } else {  // its derivatives: G H
+        for (std::size_t h = 0; h < m; ++h) {
+          re[h] = g[h] * hre[h];
+          im[h] = g[h] * him[h];
         }
       }
       channels[count++] = {re, im, choppy_out[j]};

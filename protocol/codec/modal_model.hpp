@@ -1,9 +1,11 @@
 // ModalModel: the decoder's physics. The state is the pair (X(t-1), X(t)) of half-spectra of the
 // height field in fixed point; every mode advances by X(t+1) = a(k) X(t) - X(t-1), a = 2 cos(w dt).
-// Also synthesizes heights, spectral slopes and the choppy channels from X(t) and folds spatial corrections back in.
+// Also synthesizes heights, spectral slopes and the choppy channels from X(t) (in binary32 since
+// codec version 4: CODEC.md 7.2) and folds spatial corrections back in.
 #pragma once
 
 #include "fixed_fft.hpp"
+#include "float_fft.hpp"
 #include "stream_config.hpp"
 
 #include <cstdint>
@@ -16,14 +18,12 @@ namespace ocean::codec {
 inline constexpr int kHeightFracBits = 16;
 inline constexpr int kSlopeFracBits = 12;
 inline constexpr int kRecurrenceBits = 48;   // a(k) in Q48
-inline constexpr int kSlopeCoefBits = 32;    // k-to-slope factors in Q32
 inline constexpr int kHeightQuantumShift = 14;  // height corrections count step / 4 = 2^14 units
 inline constexpr int kSlopeQuantumShift = 10;   // slope corrections count slope_step / 4 = 2^10 units
 // Choppy channels (codec version 3): displacement in disp_step / 2^16 units, corrected in quarter
 // steps like heights; the Jacobian's inputs in slope units, corrected like slopes.
 inline constexpr int kDispFracBits = 16;
 inline constexpr int kDispQuantumShift = 14;
-inline constexpr int kChoppyCoefBits = 32;  // per-mode choppy factors in Q32
 
 // n rows x (n/2 + 1) columns (kx >= 0 half), row-major; the rest follows by X(-k) = conj X(k).
 struct HalfSpectrum {
@@ -82,11 +82,11 @@ class ModalModel {
   std::int64_t recurrence_coef(int index) const { return a_[index]; }
 
  private:
-  void build_choppy_coefficients(double choppiness);
+  void build_choppy_factors(double choppiness);
   // One inverse FFT of two real fields packed as A + iB, each given by its half-spectrum (re, im)
-  // arrays over the half-spectrum index; rounded into a and b (b may be null).
-  void synthesize_pair(const std::int64_t* ar, const std::int64_t* ai, const std::int64_t* br,
-                       const std::int64_t* bi, std::vector<std::int64_t>& a, std::vector<std::int64_t>* b);
+  // over the half-spectrum index; rounded into a and b (b may be null, then B = 0).
+  void synthesize_pair(const float* ar, const float* ai, const float* br, const float* bi,
+                       std::vector<std::int64_t>& a, std::vector<std::int64_t>* b);
 
   int n_;
   int log2n_;
@@ -94,18 +94,21 @@ class ModalModel {
   bool choppy_;
   double patch_x_m_, patch_z_m_;
   double disp_factor_ = 0.0, jac_factor_ = 0.0;  // height units to displacement / slope units
-  std::vector<std::int64_t> a_;       // Q48, per half-spectrum mode
-  std::vector<std::int64_t> kx_coef_; // Q32 per column c in [0, n/2]
-  std::vector<std::int64_t> kz_coef_; // Q32 per row r in [0, n)
+  std::vector<std::int64_t> a_;  // Q48, per half-spectrum mode
+  std::vector<float> kx_;        // i kx to slope units per column c in [0, n/2]
+  std::vector<float> kz_;        // likewise per row r in [0, n)
   std::vector<std::int32_t> key_modes_;
   // Choppy: kx/k, kz/k, kx^2/k, kz^2/k, kx kz/k per half-spectrum mode (0 at DC and Nyquist), and
-  // their Q32 factors for the choppiness they were last built for.
+  // their float factors for the choppiness they were last built for.
   std::vector<double> ratio_[5];
-  std::vector<std::int64_t> choppy_coef_[5];
-  double coef_choppiness_ = -1.0;
-  std::vector<std::int64_t> spec_[14];  // derived half-spectra (re, im): two slopes, five choppy channels
-  FixedFft fft_;
+  std::vector<float> choppy_factor_[5];
+  double factor_choppiness_ = -1.0;
+  std::vector<float> h_re_, h_im_;  // X(t) in binary32
+  std::vector<float> spec_[14];     // derived half-spectra (re, im): two slopes, five choppy channels
+  FixedFft fft_;                    // spectrum_of: corrections enter the integer state exactly
   std::vector<std::int64_t> z_re_, z_im_;  // n x n scratch
+  FloatFft float_fft_;
+  std::vector<float> zf_re_, zf_im_;       // n x n scratch
 };
 
 }  // namespace ocean::codec

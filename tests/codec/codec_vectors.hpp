@@ -23,7 +23,7 @@ inline constexpr const char* kSequences[] = {"lite_modeled", "lite_explicit", "m
 
 // The channels of a frame's float block, in order: height, slope_x, slope_z, then for choppy
 // streams disp_x, disp_z, disp_xx, disp_zz, disp_xz and jacobian (non-choppy sequences stay as
-// codec version 2 wrote them), each grid^2 little-endian float32.
+// in the layout codec version 2 wrote), each grid^2 little-endian float32.
 inline std::vector<std::pair<const char*, const std::vector<float>*>> frame_channels(const ReconstructedFrame& f,
                                                                                      bool choppy) {
   std::vector<std::pair<const char*, const std::vector<float>*>> channels = {

@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-# A transcription of protocol/codec/CODEC.md (codec version 3) and of PROTOCOL.md 7.1 (frame
+# A transcription of protocol/codec/CODEC.md (codec version 4) and of PROTOCOL.md 7.1 (frame
 # records) into plain Python, written from the text alone (no FlatBuffers package: a few lines
 # read the Welcome and SceneUpdate tables). It checks that the two documents suffice to decode:
 # the function values of CODEC.md 12.1, the scene-model hashes of 12.2 and every chunk, refusal,
 # state hash and frame of the stream vectors beside this file (12.3), bit for bit - the choppy
-# channels of version 3 and the float32 Jacobian included (float32 emulated by struct, per operation).
+# channels of version 3, the binary32 synthesis of version 4 and the float32 Jacobian included
+# (float32 emulated by struct, per operation).
 # Informative; CTest runs it as codec_vectors_python when a Python 3 interpreter is found.
 # Usage: decode_from_docs.py [--big]   (--big adds the 256 x 256 hash of 12.2, about a second)
 import math, os, struct, sys, time
@@ -152,15 +153,10 @@ def det_cosh(x):
     e = det_exp(abs(x))
     return (e + 1 / e) * 0.5
 
-# ---- 4. FFT
-class FFT:
+# ---- 4. FFTs: radix-2 stages after a bit reversal; rows, then columns
+class Radix2:
     def __init__(self, n):
-        self.n = n
-        self.C = []; self.S = []
-        for j in range(n // 2):
-            angle = (kTwoPi * j) / n
-            self.C.append(to_fixed(det_cos(angle), 30)); self.S.append(to_fixed(det_sin(angle), 30))
-        self.bits = n.bit_length() - 1
+        self.n = n; self.bits = n.bit_length() - 1
     def one(self, re, im, inverse):
         n = self.n
         for i in range(n):
@@ -172,14 +168,9 @@ class FFT:
             half = length // 2; stride = n // length
             for start in range(0, n, length):
                 for j in range(half):
-                    a = start + j; b = a + half
-                    wr = self.C[j * stride]; wi = self.S[j * stride] if inverse else -self.S[j * stride]
-                    tr = round_shift(re[b] * wr - im[b] * wi, 30)
-                    ti = round_shift(re[b] * wi + im[b] * wr, 30)
-                    re[b] = wrap64(re[a] - tr); im[b] = wrap64(im[a] - ti)
-                    re[a] = wrap64(re[a] + tr); im[a] = wrap64(im[a] + ti)
+                    self.butterfly(re, im, start + j, start + j + half, j, stride, length, inverse)
             length *= 2
-    def two(self, re, im, inverse):  # re, im: lists of rows
+    def two(self, re, im, inverse=True):  # re, im: lists of rows
         n = self.n
         for r in range(n):
             self.one(re[r], im[r], inverse)
@@ -188,6 +179,36 @@ class FFT:
             self.one(cr, ci, inverse)
             for r in range(n):
                 re[r][c] = cr[r]; im[r][c] = ci[r]
+
+# ---- 4.1 fixed point
+class FFT(Radix2):
+    def __init__(self, n):
+        super().__init__(n)
+        self.C = []; self.S = []
+        for j in range(n // 2):
+            angle = (kTwoPi * j) / n
+            self.C.append(to_fixed(det_cos(angle), 30)); self.S.append(to_fixed(det_sin(angle), 30))
+    def butterfly(self, re, im, a, b, j, stride, length, inverse):
+        wr = self.C[j * stride]; wi = self.S[j * stride] if inverse else -self.S[j * stride]
+        tr = round_shift(re[b] * wr - im[b] * wi, 30)
+        ti = round_shift(re[b] * wi + im[b] * wr, 30)
+        re[b] = wrap64(re[a] - tr); im[b] = wrap64(im[a] - ti)
+        re[a] = wrap64(re[a] + tr); im[a] = wrap64(im[a] + ti)
+
+# ---- 4.2 binary32 inverse FFT (synthesis): each operation rounded to float32 (f32v)
+class FloatFFT(Radix2):
+    def __init__(self, n):
+        super().__init__(n)
+        self.C = [f32v(det_cos((kTwoPi * j) / n)) for j in range(n // 2)]
+        self.S = [f32v(det_sin((kTwoPi * j) / n)) for j in range(n // 2)]
+    def butterfly(self, re, im, a, b, j, stride, length, inverse):
+        if j == 0: wr, wi = 1.0, 0.0
+        elif 4 * j == length: wr, wi = 0.0, 1.0
+        else: wr = self.C[j * stride]; wi = self.S[j * stride]
+        tr = f32v(f32v(re[b] * wr) - f32v(im[b] * wi))
+        ti = f32v(f32v(re[b] * wi) + f32v(im[b] * wr))
+        re[b] = f32v(re[a] - tr); im[b] = f32v(im[a] - ti)
+        re[a] = f32v(re[a] + tr); im[a] = f32v(im[a] + ti)
 
 # ---- 5. payload
 def crc16(data, crc=0xFFFF):
@@ -217,7 +238,8 @@ def parse_payload(env, p, max_payload, grid_log2):
     if len(p) > max_payload: raise Refused('oversized')
     if len(p) < 4: raise Refused('truncated')
     flags = p[0]
-    if flags & 0xE0: raise Refused('bad_flags')  # bits 5-7 reserved (bit 4 is choppy, version 3)
+    if flags & 0xC0: raise Refused('bad_flags')  # bits 6-7 reserved (bit 4 is choppy, version 3)
+    if not flags & 0x20: raise Refused('unknown_version')  # bit 5: binary32 synthesis, version 4
     h = dict(key=bool(flags & 1), normals=bool(flags & 2), modeled=bool(flags & 4), whole=bool(flags & 8),
              choppy=bool(flags & 16), tag=p[3])
     if h['key'] != key or (h['modeled'] and not h['key']): raise Refused('bad_flags')
@@ -340,13 +362,13 @@ class Stream:
         self.hstep, self.sstep, self.normals = hstep, sstep, normals
         self.dstep, self.choppy = dstep, choppy
         self.G = {}  # choppiness -> [G_0 .. G_4] (7.1)
-        self.fft = FFT(n)
+        self.fft = FFT(n); self.ffft = FloatFFT(n)
         f = (hstep / 65536) / (sstep / 4096)
-        self.KX = [0] * self.hc; self.KZ = [0] * n
+        self.KX = [0.0] * self.hc; self.KZ = [0.0] * n
         if normals:
-            for c in range(n // 2): self.KX[c] = to_fixed(kTwoPi * c / patch_x * f, 32)
+            for c in range(n // 2): self.KX[c] = f32v(kTwoPi * c / patch_x * f)
             for r in range(n):
-                if r != n // 2: self.KZ[r] = to_fixed(kTwoPi * s_(r, n) / patch_z * f, 32)
+                if r != n // 2: self.KZ[r] = f32v(kTwoPi * s_(r, n) / patch_z * f)
         self.key_modes = []
         for r in range(n):
             if r == n // 2: continue
@@ -382,7 +404,7 @@ class Stream:
             n, hc = self.n, self.hc
             f = (self.hstep / 65536) / (self.sstep / 4096)
             fd = (self.hstep / 65536) / (self.dstep / 65536)
-            G = [[0] * (n * hc) for _ in range(5)]
+            G = [[0.0] * (n * hc) for _ in range(5)]
             for r in range(n):
                 if r == n // 2: continue
                 kz = kTwoPi * s_(r, n) / self.patch_z
@@ -392,54 +414,61 @@ class Stream:
                     if not (k > 0): continue
                     q = (kx / k, kz / k, (kx * kx) / k, (kz * kz) / k, (kx * kz) / k)
                     for j in range(5):
-                        G[j][r * hc + c] = to_fixed(lam * q[j] * (fd if j < 2 else f), 32)
+                        G[j][r * hc + c] = f32v(lam * q[j] * (fd if j < 2 else f))
             self.G[lam] = G
         return self.G[lam]
     def synthesize(self, cr, ci, lam=0.0):
-        # 7.2: the channels present as half-spectra, in order, synthesized in consecutive pairs
-        # A + iB through one inverse FFT each. Returns 8 fields (None where absent).
+        # 7.2: the state as binary32, the channels present as half-spectra in binary32, in order,
+        # synthesized in consecutive pairs A + iB through one binary32 inverse FFT each, then
+        # rounded to integers. Returns 8 fields (None where absent).
         n, hc = self.n, self.hc
         m = n * hc
-        specs = [(0, cr, ci)]
+        hr = [f32v(float(v)) for v in cr]; hi = [f32v(float(v)) for v in ci]
+        specs = [(0, hr, hi)]
         if self.normals:
-            sxr = [0] * m; sxi = [0] * m; szr = [0] * m; szi = [0] * m
+            sxr = [0.0] * m; sxi = [0.0] * m; szr = [0.0] * m; szi = [0.0] * m
             for r in range(n):
                 for c in range(hc):
-                    i = r * hc + c; hr = cr[i]; hi = ci[i]
-                    sxr[i] = -mul_sym(self.KX[c], hi, 32); sxi[i] = mul_sym(self.KX[c], hr, 32)
-                    szr[i] = -mul_sym(self.KZ[r], hi, 32); szi[i] = mul_sym(self.KZ[r], hr, 32)
+                    i = r * hc + c; kx = self.KX[c]; kz = self.KZ[r]
+                    sxr[i] = -f32v(kx * hi[i]); sxi[i] = f32v(kx * hr[i])
+                    szr[i] = -f32v(kz * hi[i]); szi[i] = f32v(kz * hr[i])
             specs += [(1, sxr, sxi), (2, szr, szi)]
         if self.choppy:
             G = self.choppy_factors(lam)
             for j in range(5):
                 g = G[j]
                 if j < 2:  # displacement: -i G H
-                    re = [mul_sym(g[i], ci[i], 32) for i in range(m)]
-                    im = [-mul_sym(g[i], cr[i], 32) for i in range(m)]
+                    re = [f32v(g[i] * hi[i]) for i in range(m)]
+                    im = [-f32v(g[i] * hr[i]) for i in range(m)]
                 else:      # its derivatives: G H
-                    re = [mul_sym(g[i], cr[i], 32) for i in range(m)]
-                    im = [mul_sym(g[i], ci[i], 32) for i in range(m)]
+                    re = [f32v(g[i] * hr[i]) for i in range(m)]
+                    im = [f32v(g[i] * hi[i]) for i in range(m)]
                 specs.append((3 + j, re, im))
         out = [None] * 8
-        sh = 2 * self.L
+        scale = 2.0 ** (-2 * self.L)
+        limit = 2.0 ** 51 - 1
+        def field(x):  # nearest integer to x * 2^-2L, ties to even; saturated; NaN 0
+            y = x * scale
+            if y != y: return 0
+            return int(round(max(-limit, min(limit, y))))
         for p in range(0, len(specs), 2):
             ach, ar, ai = specs[p]
             if p + 1 < len(specs):
                 bch, br, bi = specs[p + 1]
             else:
-                bch, br, bi = None, [0] * m, [0] * m
-            zr = [[0] * n for _ in range(n)]; zi = [[0] * n for _ in range(n)]
+                bch, br, bi = None, [0.0] * m, [0.0] * m
+            zr = [[0.0] * n for _ in range(n)]; zi = [[0.0] * n for _ in range(n)]
             for r in range(n):
                 rr = (n - r) % n
                 for c in range(hc):
                     i = r * hc + c
-                    zr[r][c] = wrap64(ar[i] - bi[i]); zi[r][c] = wrap64(ai[i] + br[i])
+                    zr[r][c] = f32v(ar[i] - bi[i]); zi[r][c] = f32v(ai[i] + br[i])
                     if 0 < c < n // 2:
-                        zr[rr][n - c] = wrap64(ar[i] + bi[i]); zi[rr][n - c] = wrap64(br[i] - ai[i])
-            self.fft.two(zr, zi, True)
-            out[ach] = [round_shift(zr[r][c], sh) for r in range(n) for c in range(n)]
+                        zr[rr][n - c] = f32v(ar[i] + bi[i]); zi[rr][n - c] = f32v(br[i] - ai[i])
+            self.ffft.two(zr, zi)
+            out[ach] = [field(zr[r][c]) for r in range(n) for c in range(n)]
             if bch is not None:
-                out[bch] = [round_shift(zi[r][c], sh) for r in range(n) for c in range(n)]
+                out[bch] = [field(zi[r][c]) for r in range(n) for c in range(n)]
         return out
     def spectrum_of(self, field):
         n, hc = self.n, self.hc
