@@ -15,11 +15,10 @@
 #include <algorithm>
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__EMSCRIPTEN__)
-// AVX2 where the CPU has it (eight lanes), SSE2 otherwise; never FMA, which would fuse b.re * w.re
-// - b.im * w.im into one rounding.
-#define OCEAN_FLOAT_FFT_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define OCEAN_FLOAT_FFT_CLONES
+// The butterflies are compiled twice: for AVX2 (eight lanes) and for the baseline (SSE2), chosen
+// at run time; never with FMA, which would fuse b.re * w.re - b.im * w.im into one rounding.
+// Not target_clones: its ifunc resolver runs before ThreadSanitizer's runtime and crashes it.
+#define OCEAN_FLOAT_FFT_AVX2 1
 #endif
 
 // The rows a butterfly loop reads and writes are distinct: no alias checks around every loop.
@@ -51,8 +50,8 @@ Twiddle twiddle(int n, const float* cos, const float* sin, int len, int j) {
 // bit-reversed order. Stages go in pairs (len, 2 len): the four rows start + j + {0, 1, 2, 3} len/2
 // meet only each other in both, so each is loaded and stored once per pair (the column pass is
 // memory-bound).
-OCEAN_FLOAT_FFT_CLONES
-void stages(int n, const float* cos, const float* sin, float* re, float* im, std::size_t stride, int width) {
+__attribute__((always_inline)) inline void stages_body(int n, const float* cos, const float* sin, float* re, float* im,
+                                                      std::size_t stride, int width) {
   int len = 2;
   for (; 2 * len <= n; len <<= 2) {
     const int h = len >> 1;
@@ -112,6 +111,24 @@ void stages(int n, const float* cos, const float* sin, float* re, float* im, std
       i0[x] = ai + ti;
     }
   }
+}
+
+#if defined(OCEAN_FLOAT_FFT_AVX2)
+__attribute__((target("avx2"))) void stages_avx2(int n, const float* cos, const float* sin, float* re, float* im,
+                                                 std::size_t stride, int width) {
+  stages_body(n, cos, sin, re, im, stride, width);
+}
+#endif
+
+void stages(int n, const float* cos, const float* sin, float* re, float* im, std::size_t stride, int width) {
+#if defined(OCEAN_FLOAT_FFT_AVX2)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) {
+    stages_avx2(n, cos, sin, re, im, stride, width);
+    return;
+  }
+#endif
+  stages_body(n, cos, sin, re, im, stride, width);
 }
 
 // Rows 0..rows-1 of src (n values each) into block[bitrev(c) * rows + l], four rows and four
