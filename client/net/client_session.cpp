@@ -169,6 +169,7 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   options.max_payload = std::max(codec::kDefaultMaxPayload, protocol::max_chunk_payload(welcome.max_message_bytes));
   options.history_ticks = protocol::kMaxBaselineGap;
   if (config_.decode_memo) options.memo = config_.decode_memo(config);
+  options.parallel = config_.decode_parallel;
   try {
     decoder_ = std::make_unique<codec::Decoder>(config, options);
   } catch (const std::invalid_argument& e) {

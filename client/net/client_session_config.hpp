@@ -7,6 +7,7 @@
 #include <string>
 
 #include "decode_memo.hpp"
+#include "parallel_for.hpp"
 
 #include "ocean_generated.h"
 
@@ -42,6 +43,9 @@ struct ClientSessionConfig {
   // Many clients of one process (a load test) may share decoding work: given the Welcome's stream,
   // return a memo for it (or nullptr). Results are identical either way.
   std::function<codec::DecodeMemo*(const codec::StreamConfig&)> decode_memo;
+  // Threads the decoder may spread each frame's transforms over (a WorkerPool's run); results are
+  // identical either way. Used from the session's thread only, one frame at a time.
+  codec::ParallelFor decode_parallel;
 };
 
 }  // namespace ocean::client

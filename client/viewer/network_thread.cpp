@@ -12,6 +12,7 @@
 #include "client/viewer/thread_cpu_clock.hpp"
 #include "frame_recorder.hpp"
 #include "profile.hpp"
+#include "worker_pool.hpp"
 
 namespace ocean::viewer {
 
@@ -68,9 +69,17 @@ bool NetworkThread::wait_for_first_frame(double timeout_s) const {
 void NetworkThread::run() {
   cpu_start_ms_ = thread_cpu_ms();
   recording_ = std::make_unique<Recording>();
+  // Cores the renderer does not need decode each frame's transforms side by side (up to four:
+  // desktop-choppy has four); the helpers' CPU shows in the process's time, not in cpu_ms.
+  WorkerPool decode_pool(WorkerPool::spare_cores(3));
+  client::ClientConnectionConfig connection_config = config_.connection;
+  if (decode_pool.helpers() > 0)
+    connection_config.session.decode_parallel = [&decode_pool](int count, const std::function<void(int)>& job) {
+      decode_pool.run(count, job);
+    };
   asio::io_context io;
   auto connection = client::ClientConnection::create(
-      io, config_.connection,
+      io, connection_config,
       [this](const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
         timeline_.push(frame, tick, arrival_s);
         on_frame(frame, tick);

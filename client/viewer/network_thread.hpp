@@ -45,7 +45,7 @@ struct NetworkStats {
   std::uint64_t connects = 0;
   bool connected = false;
   std::string path;                   // "tcp", "udp", "udp-proving"
-  double cpu_ms = 0.0;                // network thread CPU (receive, verify, decode), recording excluded
+  double cpu_ms = 0.0;                // network thread CPU (receive, verify, decode), recording and decode helpers excluded
   double record_ms = 0.0;             // network thread CPU spent writing the recording
   std::uint64_t frames_recorded = 0;
   std::uint64_t frames_not_recorded = 0;  // a later session's grid differed from the recording's

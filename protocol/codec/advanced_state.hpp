@@ -15,12 +15,11 @@ class AdvancedState {
   // `baseline` (the state of tick `from`) advanced to `to` >= from; starts again from the
   // baseline when `to` is behind what was reached. Valid until the next call.
   const ModalState& advance(const ModalState& baseline, Tick from, Tick to, const SceneTimeline& scenes) {
-    if (!started_ || reached_ > to) {
-      state_ = baseline;
-      reached_ = from;
-      started_ = true;
-    }
-    scenes.advance(state_, reached_, to);
+    if (!started_ || reached_ > to)
+      scenes.advance(baseline, from, to, state_);
+    else
+      scenes.advance(state_, reached_, to);
+    started_ = true;
     reached_ = to;
     return state_;
   }

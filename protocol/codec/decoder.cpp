@@ -13,6 +13,9 @@ Decoder::Decoder(const StreamConfig& config, DecoderOptions options)
   if (options.memo && !(options.memo->config() == config))
     throw std::invalid_argument("DecoderOptions: the memo belongs to another stream configuration");
   if (options.memo) scenes_.share_models(&options.memo->models());
+  // Below 128 x 128 a frame's pieces take less than waking a thread: one thread does them.
+  if (config.grid >= 128) parallel_ = options_.parallel;
+  if (parallel_) model_.set_parallel(parallel_);
 }
 
 std::optional<Tick> Decoder::newest_complete() const {
@@ -107,9 +110,8 @@ ChunkError Decoder::accept(const ChunkView& c) {
         if (options_.memo) {
           options_.memo->advance(states_.at(c.baseline), c.baseline, c.tick, scenes_, p.predicted);
         } else {
-          p.predicted = std::move(spare_state_);  // its buffers, if any: the copy then allocates nothing
-          p.predicted = *states_.at(c.baseline);
-          scenes_.advance(p.predicted, c.baseline, c.tick);
+          p.predicted = std::move(spare_state_);  // its buffers, if any: advancing then allocates nothing
+          scenes_.advance(*states_.at(c.baseline), c.baseline, c.tick, p.predicted, parallel_);
         }
       }
       model_.synthesize(p.predicted.cur, scenes_.at(c.tick)->scene.choppiness, p.fields);
@@ -181,7 +183,7 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
   late_converted_ = false;
   if (memo && (p.key || p.count == 1)) {
     ReconstructedFrame frame;
-    to_float(p.fields, config_, frame);
+    to_float(p.fields, config_, frame, parallel_);
     frame.tick = tick;
     frame.complete = true;
     const DecodeMemo::Result& r =
@@ -223,7 +225,7 @@ const ReconstructedFrame* Decoder::just_completed() {
   if (shown_tick_ && *completed_tick_ == *shown_tick_) return latest();
   if (late_shared_) return late_shared_.get();
   if (!late_converted_) {
-    to_float(late_fields_, config_, late_);
+    to_float(late_fields_, config_, late_, parallel_);
     late_.tick = *completed_tick_;
     late_.complete = true;
     late_.shared_id = 0;
@@ -276,7 +278,7 @@ const ReconstructedFrame* Decoder::latest() {
   if (shown_dirty_) {
     auto it = pending_.find(*shown_tick_);
     const bool held = it == pending_.end();
-    to_float(held ? shown_fields_ : it->second.fields, config_, shown_);
+    to_float(held ? shown_fields_ : it->second.fields, config_, shown_, parallel_);
     shown_.tick = *shown_tick_;
     shown_.complete = held && shown_complete_;
     shown_dirty_ = false;

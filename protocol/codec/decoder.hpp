@@ -8,6 +8,7 @@
 #include "chunk_format.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
+#include "parallel_for.hpp"
 #include "ack_window.hpp"
 #include "scene_timeline.hpp"
 #include "stream_config.hpp"
@@ -28,6 +29,9 @@ struct DecoderOptions {
   std::uint32_t max_lag = 1024;
   std::size_t max_pending = 8;       // incomplete frames kept; the oldest is dropped beyond this
   DecodeMemo* memo = nullptr;        // shared with other decoders of the same stream (same thread)
+  // Threads lent by the client for grids of 128 and more: the recurrence, the transforms and the
+  // output conversion of a frame run in parts side by side; the bits are the same.
+  ParallelFor parallel;
 };
 
 class Decoder {
@@ -97,6 +101,7 @@ class Decoder {
 
   StreamConfig config_;
   DecoderOptions options_;
+  ParallelFor parallel_;  // options_.parallel where the grid is worth it
   ModalModel model_;
   SceneTimeline scenes_;
   std::map<Tick, DecodeMemo::State> states_;  // complete frames (interned when memo is set)

@@ -49,35 +49,37 @@ ModalState key_state(const ModalModel& model, std::span<const KeyCoefficient> co
   return s;
 }
 
-namespace {
-
-void convert(const std::vector<std::int64_t>& from, double scale, std::vector<float>& to) {
-  to.resize(from.size());
-  scale_fields(from.data(), from.size(), scale, to.data());
-}
-
-}  // namespace
-
-void to_float(const SampleFields& f, const StreamConfig& config, ReconstructedFrame& out) {
+void to_float(const SampleFields& f, const StreamConfig& config, ReconstructedFrame& out, const ParallelFor& parallel) {
   const double hscale = static_cast<double>(config.height_step_m) / 65536.0;
   const double sscale = static_cast<double>(config.slope_step) / 4096.0;
   const double dscale = static_cast<double>(config.disp_step_m) / 65536.0;
-  convert(f.height, hscale, out.height);
-  convert(f.slope_x, sscale, out.slope_x);
-  convert(f.slope_z, sscale, out.slope_z);
-  convert(f.disp_x, dscale, out.disp_x);
-  convert(f.disp_z, dscale, out.disp_z);
-  convert(f.disp_xx, sscale, out.disp_xx);
-  convert(f.disp_zz, sscale, out.disp_zz);
-  convert(f.disp_xz, sscale, out.disp_xz);
+  struct Conversion {
+    const std::vector<std::int64_t>& from;
+    double scale;
+    std::vector<float>& to;
+  };
+  const Conversion conversions[] = {{f.height, hscale, out.height},   {f.slope_x, sscale, out.slope_x},
+                                    {f.slope_z, sscale, out.slope_z}, {f.disp_x, dscale, out.disp_x},
+                                    {f.disp_z, dscale, out.disp_z},   {f.disp_xx, sscale, out.disp_xx},
+                                    {f.disp_zz, sscale, out.disp_zz}, {f.disp_xz, sscale, out.disp_xz}};
+  for (const Conversion& c : conversions) c.to.resize(c.from.size());
   out.jacobian.resize(out.disp_xx.size());
-  for (std::size_t i = 0; i < out.jacobian.size(); ++i) {
-    // The sim's formula in float: the same operations on (nearly) the same inputs.
-    const float xx = out.disp_xx[i], zz = out.disp_zz[i], xz = out.disp_xz[i];
-    const float a = 1.0f + xx, b = 1.0f + zz, c = xz * xz;
-    const float ab = a * b;
-    out.jacobian[i] = ab - c;
-  }
+  // Sample by sample, so any split of the samples gives the same floats.
+  const std::size_t samples = f.height.size();
+  const int parts = parallel ? 4 : 1;
+  run_jobs(parallel, parts, [&](int part) {
+    const std::size_t begin = samples * part / parts, end = samples * (part + 1) / parts;
+    for (const Conversion& c : conversions)
+      if (!c.from.empty()) scale_fields(c.from.data() + begin, end - begin, c.scale, c.to.data() + begin);
+    if (out.jacobian.empty()) return;
+    for (std::size_t i = begin; i < end; ++i) {
+      // The sim's formula in float: the same operations on (nearly) the same inputs.
+      const float xx = out.disp_xx[i], zz = out.disp_zz[i], xz = out.disp_xz[i];
+      const float a = 1.0f + xx, b = 1.0f + zz, c = xz * xz;
+      const float ab = a * b;
+      out.jacobian[i] = ab - c;
+    }
+  });
 }
 
 }  // namespace ocean::codec

@@ -39,7 +39,9 @@ ModalState key_state(const ModalModel& model, std::span<const KeyCoefficient> co
                      int pos_shift, int vel_shift);
 
 // Exact output conversion: float(double(v) * step / 2^16), float(double(s) * slope_step / 2^12),
-// displacement as heights with disp_step; the Jacobian in float from the float derivatives.
-void to_float(const SampleFields& fields, const StreamConfig& config, ReconstructedFrame& out);
+// displacement as heights with disp_step; the Jacobian in float from the float derivatives. With
+// `parallel`, parts of the samples side by side (the same floats).
+void to_float(const SampleFields& fields, const StreamConfig& config, ReconstructedFrame& out,
+              const ParallelFor& parallel = {});
 
 }  // namespace ocean::codec

@@ -2,6 +2,7 @@
 // correction folding.
 #include "modal_model.hpp"
 
+#include "channel_pair.hpp"
 #include "det_math.hpp"
 #include "field_conversion.hpp"
 #include "fixed_point.hpp"
@@ -34,8 +35,7 @@ ModalModel::ModalModel(const StreamConfig& config)
       choppy_(config.choppy),
       patch_x_m_(config.patch_x_m),
       patch_z_m_(config.patch_z_m),
-      fft_(config.grid),
-      float_fft_(config.grid) {
+      fft_(config.grid) {
   const int n = n_, hc = n / 2 + 1;
   const double dt = config.dt_s();  // one tick step: deltas advance (tick - baseline) steps
   a_.resize(static_cast<std::size_t>(n) * hc);
@@ -70,8 +70,14 @@ ModalModel::ModalModel(const StreamConfig& config)
   const std::size_t nn = static_cast<std::size_t>(n) * n;
   z_re_.resize(nn);
   z_im_.resize(nn);
-  zf_re_.resize(nn);
-  zf_im_.resize(nn);
+  pair_scratch_.push_back(std::make_unique<PairScratch>(n));
+}
+
+void ModalModel::set_parallel(ParallelFor parallel) {
+  parallel_ = std::move(parallel);
+  const std::size_t slots = parallel_ ? 4 : 1;  // at most four pairs: eight channels
+  while (pair_scratch_.size() < slots) pair_scratch_.push_back(std::make_unique<PairScratch>(n_));
+  pair_scratch_.resize(slots);
 }
 
 ModalState ModalModel::zero_state() const {
@@ -94,6 +100,41 @@ void ModalModel::advance(ModalState& s) const {
 
 void ModalModel::advance(ModalState& s, std::uint64_t steps) const {
   for (std::uint64_t i = 0; i < steps; ++i) advance(s);
+}
+
+void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t steps, const ParallelFor& parallel) const {
+  const std::size_t m = a_.size();
+  for (auto* v : {&out.prev.re, &out.prev.im, &out.cur.re, &out.cur.im}) v->resize(m);
+  // Mode by mode, every step: each mode's recurrence is its own, so any split of the modes gives
+  // the same integers.
+  const auto modes = [&](const std::vector<std::int64_t>& prev, const std::vector<std::int64_t>& cur,
+                         std::vector<std::int64_t>& out_prev, std::vector<std::int64_t>& out_cur, std::size_t begin,
+                         std::size_t end) {
+    const std::int64_t* a = a_.data();
+    if (steps == 1) {  // nearly every delta: one step, straight through
+      for (std::size_t i = begin; i < end; ++i) {
+        out_prev[i] = cur[i];
+        out_cur[i] = wsub(mul_round_sym(a[i], cur[i], kRecurrenceBits), prev[i]);
+      }
+      return;
+    }
+    for (std::size_t i = begin; i < end; ++i) {
+      std::int64_t p = prev[i], c = cur[i];
+      for (std::uint64_t step = 0; step < steps; ++step) {
+        const std::int64_t next = wsub(mul_round_sym(a[i], c, kRecurrenceBits), p);
+        p = c;
+        c = next;
+      }
+      out_prev[i] = p;
+      out_cur[i] = c;
+    }
+  };
+  const int parts = parallel ? 4 : 1;
+  run_jobs(parallel, parts, [&](int part) {
+    const std::size_t begin = m * part / parts, end = m * (part + 1) / parts;
+    modes(from.prev.re, from.cur.re, out.prev.re, out.cur.re, begin, end);
+    modes(from.prev.im, from.cur.im, out.prev.im, out.cur.im, begin, end);
+  });
 }
 
 void ModalModel::build_choppy_factors(double choppiness) {
@@ -125,72 +166,41 @@ void ModalModel::build_choppy_factors(double choppiness) {
   factor_choppiness_ = choppiness;
 }
 
-void ModalModel::synthesize_pair(const float* ar, const float* ai, const float* br, const float* bi,
-                                 std::vector<std::int64_t>& a, std::vector<std::int64_t>* b) {
-  const int n = n_, hc = n / 2 + 1;
-  const std::size_t nn = static_cast<std::size_t>(n) * n;
+void ModalModel::synthesize_pair(PairScratch& scratch, const FloatSpectrum& x, ChannelSource a, ChannelSource b,
+                                 std::vector<std::int64_t>& a_out, std::vector<std::int64_t>* b_out) const {
+  const std::size_t nn = static_cast<std::size_t>(n_) * n_;
   const double scale = std::ldexp(1.0, -2 * log2n_);
-  for (int r = 0; r < n; ++r) {
-    const int rm = (n - r) % n;
-    for (int c = 0; c < hc; ++c) {
-      const std::size_t h = static_cast<std::size_t>(r) * hc + c;
-      // Z = A + iB: one inverse FFT gives A (real part) and B (imaginary part).
-      const float xr = ar[h], xi = ai[h], yr = br ? br[h] : 0.0f, yi = bi ? bi[h] : 0.0f;
-      const std::size_t at = static_cast<std::size_t>(r) * n + c;
-      zf_re_[at] = xr - yi;
-      zf_im_[at] = xi + yr;
-      if (c > 0 && c < n / 2) {  // the conjugate partner -k
-        const std::size_t mat = static_cast<std::size_t>(rm) * n + (n - c);
-        zf_re_[mat] = xr + yi;
-        zf_im_[mat] = yr - xi;
-      }
-    }
-  }
-  float_fft_.inverse_2d(zf_re_.data(), zf_im_.data());
-  a.resize(nn);
-  round_fields(zf_re_.data(), nn, scale, a.data());
-  if (!b) return;
-  b->resize(nn);
-  round_fields(zf_im_.data(), nn, scale, b->data());
+  pack_channel_pair(x, a, b, scratch.re.data(), scratch.im.data());
+  scratch.fft.inverse_2d(scratch.re.data(), scratch.im.data());
+  a_out.resize(nn);
+  round_fields(scratch.re.data(), nn, scale, a_out.data());
+  if (!b_out) return;
+  b_out->resize(nn);
+  round_fields(scratch.im.data(), nn, scale, b_out->data());
 }
 
 void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out) {
-  const int n = n_, hc = n / 2 + 1;
   const std::size_t m = static_cast<std::size_t>(half_size());
-  const std::size_t nn = static_cast<std::size_t>(n) * n;
+  const std::size_t nn = static_cast<std::size_t>(n_) * n_;
   h_re_.resize(m);
   h_im_.resize(m);
   for (std::size_t h = 0; h < m; ++h) {
     h_re_[h] = to_binary32(cur.re[h]);
     h_im_[h] = to_binary32(cur.im[h]);
   }
-  const float* hre = h_re_.data();
-  const float* him = h_im_.data();
+  const FloatSpectrum x{n_, h_re_.data(), h_im_.data(), kx_.data(), kz_.data()};
   // The channels in order - height, [slope_x, slope_z], [disp_x, disp_z, disp_xx, disp_zz,
-  // disp_xz] - as half-spectra, synthesized in consecutive pairs (CODEC.md 7.2).
+  // disp_xz] - synthesized in consecutive pairs (CODEC.md 7.2).
   struct Channel {
-    const float *re, *im;
+    ChannelSource source;
     std::vector<std::int64_t>* out;
   };
   Channel channels[8];
   int count = 0;
-  channels[count++] = {hre, him, &out.height};
+  channels[count++] = {{ChannelKind::height}, &out.height};
   if (normals_) {
-    for (int j = 0; j < 4; ++j) spec_[j].resize(m);
-    float *sxr = spec_[0].data(), *sxi = spec_[1].data(), *szr = spec_[2].data(), *szi = spec_[3].data();
-    for (int r = 0; r < n; ++r) {
-      const float kz = kz_[r];
-      for (int c = 0; c < hc; ++c) {
-        const std::size_t h = static_cast<std::size_t>(r) * hc + c;
-        const float kx = kx_[c];
-        sxr[h] = -(kx * him[h]);  // i kx H
-        sxi[h] = kx * hre[h];
-        szr[h] = -(kz * him[h]);
-        szi[h] = kz * hre[h];
-      }
-    }
-    channels[count++] = {sxr, sxi, &out.slope_x};
-    channels[count++] = {szr, szi, &out.slope_z};
+    channels[count++] = {{ChannelKind::slope_x}, &out.slope_x};
+    channels[count++] = {{ChannelKind::slope_z}, &out.slope_z};
   } else {
     out.slope_x.clear();
     out.slope_z.clear();
@@ -201,32 +211,18 @@ void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFi
     for (auto* f : choppy_out) f->assign(nn, 0);
   } else if (choppy_) {
     if (choppiness != factor_choppiness_) build_choppy_factors(choppiness);
-    for (int j = 0; j < 5; ++j) {
-      spec_[4 + 2 * j].resize(m);
-      spec_[5 + 2 * j].resize(m);
-      float* re = spec_[4 + 2 * j].data();
-      float* im = spec_[5 + 2 * j].data();
-      const float* g = choppy_factor_[j].data();
-      if (j < 2) {  // displacement: -i G H
-        for (std::size_t h = 0; h < m; ++h) {
-          re[h] = g[h] * him[h];
-          im[h] = -(g[h] * hre[h]);
-        }
-      } else {  // its derivatives: G H
-        for (std::size_t h = 0; h < m; ++h) {
-          re[h] = g[h] * hre[h];
-          im[h] = g[h] * him[h];
-        }
-      }
-      channels[count++] = {re, im, choppy_out[j]};
-    }
+    for (int j = 0; j < 5; ++j)
+      channels[count++] = {{j < 2 ? ChannelKind::disp : ChannelKind::derivative, choppy_factor_[j].data()}, choppy_out[j]};
   } else {
     for (auto* f : choppy_out) f->clear();
   }
-  for (int i = 0; i < count; i += 2)
-    synthesize_pair(channels[i].re, channels[i].im, i + 1 < count ? channels[i + 1].re : nullptr,
-                    i + 1 < count ? channels[i + 1].im : nullptr, *channels[i].out,
-                    i + 1 < count ? channels[i + 1].out : nullptr);
+  const bool spread = pair_scratch_.size() > 1;
+  run_jobs(spread ? parallel_ : ParallelFor{}, (count + 1) / 2, [&](int pair) {
+    const Channel& a = channels[2 * pair];
+    const Channel* b = 2 * pair + 1 < count ? &channels[2 * pair + 1] : nullptr;
+    synthesize_pair(*pair_scratch_[spread ? pair : 0], x, a.source, b ? b->source : ChannelSource{}, *a.out,
+                    b ? b->out : nullptr);
+  });
 }
 
 void ModalModel::spectrum_of(const std::int64_t* field, HalfSpectrum& out) {

@@ -4,11 +4,14 @@
 // codec version 4: CODEC.md 7.2) and folds spatial corrections back in.
 #pragma once
 
+#include "channel_pair.hpp"
 #include "fixed_fft.hpp"
 #include "float_fft.hpp"
+#include "parallel_for.hpp"
 #include "stream_config.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace ocean::codec {
@@ -58,9 +61,17 @@ class ModalModel {
 
   ModalState zero_state() const;
 
+  // Synthesis runs its transforms (one per pair of channels: up to four) through `parallel`, each
+  // with scratch of its own; without one, one after the other.
+  void set_parallel(ParallelFor parallel);
+
   // One tick forward, and `steps` ticks forward.
   void advance(ModalState& state) const;
   void advance(ModalState& state, std::uint64_t steps) const;
+  // `from` advanced by `steps` ticks into `out` (another state): the same bits as a copy advanced
+  // in place, without the copy's trip through memory; parts of the modes side by side with
+  // `parallel`.
+  void advance(const ModalState& from, ModalState& out, std::uint64_t steps, const ParallelFor& parallel = {}) const;
 
   // Heights (and slopes, displacement and its derivatives when streamed) of the field whose
   // spectrum is `cur`; `choppiness` is the lambda of the scene in force at the frame's tick.
@@ -83,10 +94,11 @@ class ModalModel {
 
  private:
   void build_choppy_factors(double choppiness);
-  // One inverse FFT of two real fields packed as A + iB, each given by its half-spectrum (re, im)
-  // over the half-spectrum index; rounded into a and b (b may be null, then B = 0).
-  void synthesize_pair(const float* ar, const float* ai, const float* br, const float* bi,
-                       std::vector<std::int64_t>& a, std::vector<std::int64_t>* b);
+  // One inverse FFT of two channels packed as A + iB (channel_pair.hpp), rounded into their
+  // fields (b_out null when B is none).
+  struct PairScratch;
+  void synthesize_pair(PairScratch& scratch, const FloatSpectrum& x, ChannelSource a, ChannelSource b,
+                       std::vector<std::int64_t>& a_out, std::vector<std::int64_t>* b_out) const;
 
   int n_;
   int log2n_;
@@ -104,11 +116,16 @@ class ModalModel {
   std::vector<float> choppy_factor_[5];
   double factor_choppiness_ = -1.0;
   std::vector<float> h_re_, h_im_;  // X(t) in binary32
-  std::vector<float> spec_[14];     // derived half-spectra (re, im): two slopes, five choppy channels
   FixedFft fft_;                    // spectrum_of: corrections enter the integer state exactly
   std::vector<std::int64_t> z_re_, z_im_;  // n x n scratch
-  FloatFft float_fft_;
-  std::vector<float> zf_re_, zf_im_;       // n x n scratch
+  // What one transform of synthesis works in: its FFT's blocks and the n x n complex array.
+  struct PairScratch {
+    explicit PairScratch(int n) : fft(n), re(static_cast<std::size_t>(n) * n), im(re.size()) {}
+    FloatFft fft;
+    std::vector<float> re, im;
+  };
+  ParallelFor parallel_;
+  std::vector<std::unique_ptr<PairScratch>> pair_scratch_;  // one, or one per pair with parallel_
 };
 
 }  // namespace ocean::codec

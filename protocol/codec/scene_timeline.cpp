@@ -80,10 +80,22 @@ void SceneTimeline::advance(ModalState& state, Tick from, Tick to) const {
     model_state(start, state);
     now = start;
   }
-  const Held& held = held_at(now);
+  recurrence_of(held_at(now)).advance(state, to - now);
+}
+
+const ModalModel& SceneTimeline::recurrence_of(const Held& held) const {
   if (!held.recurrence)
     held.recurrence = cache_ ? cache_->recurrence(with_depth(held)) : std::make_shared<const ModalModel>(with_depth(held));
-  held.recurrence->advance(state, to - now);
+  return *held.recurrence;
+}
+
+void SceneTimeline::advance(const ModalState& state, Tick from, Tick to, ModalState& out,
+                            const ParallelFor& parallel) const {
+  if (start_of(to) > from) {
+    advance(out, from, to);  // starts from the scene model's state: `state` plays no part
+    return;
+  }
+  recurrence_of(held_at(from)).advance(state, out, to - from, parallel);
 }
 
 void SceneTimeline::forget_before(Tick tick) {

@@ -41,6 +41,9 @@ class SceneTimeline {
   // `state` of tick `from` becomes the state of tick `to` (>= from): replaced by the model state
   // at the last effective tick in (from, to], then advanced by the recurrence of that scene.
   void advance(ModalState& state, Tick from, Tick to) const;
+  // The same, from `state` into `out` (another state), which need not be a copy of it first; the
+  // recurrence's modes side by side with `parallel`.
+  void advance(const ModalState& state, Tick from, Tick to, ModalState& out, const ParallelFor& parallel = {}) const;
   // Builds what model_state(to) (key) or advance(from, to) (delta) will need; false when the scene
   // model cannot be built (a scene that does not describe this stream). Afterwards those calls
   // cannot throw, so a decoder checks this before it changes anything.
@@ -58,6 +61,7 @@ class SceneTimeline {
   struct Held;
   const Held& held_at(Tick tick) const;
   const SceneModel& model_of(const Held& held) const;
+  const ModalModel& recurrence_of(const Held& held) const;
   StreamConfig with_depth(const Held& held) const;
 
   StreamConfig config_;

@@ -16,6 +16,7 @@
 #include <zstd.h>
 
 #include "common/json_writer.hpp"
+#include "common/worker_pool.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -36,6 +37,7 @@ using codec::StreamConfig;
 struct Tally {
   std::string method;
   int lag = 0;
+  int decode_threads = 0;  // ours: threads per decoder
   double bytes = 0;          // steady-state bytes counted for kbps (payload + envelope)
   double frames = 0;
   double max_err = 0, sum_sq = 0, count = 0, max_slope_err = 0;
@@ -70,6 +72,7 @@ common::JsonWriter common_json(const Tally& t, const Profile& p, int n) {
   common::JsonWriter json(common::JsonWriter::Style::compact);
   json.text("bench", "codec").text("profile", p.name).text("method", t.method);
   if (t.lag) json.integer("lag", t.lag);
+  if (t.decode_threads) json.integer("decode_threads", t.decode_threads);
   json.integer("grid", n).integer("rate_hz", p.rate_hz).number("frames", t.frames).number("kbps", kbps);
   json.number("bits_per_sample", t.bytes * 8.0 / (t.frames * n * n)).number("max_err_m", t.max_err);
   json.number("rms_err_m", std::sqrt(t.sum_sq / std::max(1.0, t.count))).number("max_slope_err", t.max_slope_err);
@@ -197,6 +200,11 @@ int run_codec(int argc, char** argv) {
   app.add_option("--choppiness", choppiness, "the scene's lambda for choppy profiles (others stream no displacement)")
       ->capture_default_str()->check(CLI::Range(0.0, 100.0));
   app.add_option("--wind", wind_mps, "wind speed m/s (default: the sim's default scene)")->check(CLI::Range(0.0, 100.0));
+  int decode_threads = 1;
+  app.add_option("--decode-threads", decode_threads,
+                 "threads each decoder spreads a frame's transforms over (the caller's and helpers, as ocean-viewer "
+                 "does with cores to spare); the same bits")
+      ->capture_default_str()->check(CLI::Range(1, 8));
   app.add_flag("--json", json, "JSON lines (the only output format)");
   try {
     app.parse(argc, argv);
@@ -207,6 +215,7 @@ int run_codec(int argc, char** argv) {
     std::fprintf(stderr, "ocean-bench codec: --baseline-lag must be in [1, 60]\n");
     return 2;
   }
+  WorkerPool pool(decode_threads - 1);
   std::vector<int> lags{lag};
   if (lag != 4) lags.push_back(4);
 
@@ -243,11 +252,15 @@ int run_codec(int argc, char** argv) {
       eo.key_velocity_extra_bits = vel_bits;
       eo.history_ticks = 64;
       ours[i].enc = std::make_unique<codec::Encoder>(config, eo);
-      ours[i].dec = std::make_unique<codec::Decoder>(config);
+      codec::DecoderOptions options;
+      if (pool.helpers() > 0)
+        options.parallel = [&pool](int count, const std::function<void(int)>& job) { pool.run(count, job); };
+      ours[i].dec = std::make_unique<codec::Decoder>(config, options);
       ours[i].enc->set_scene(0, 0, model);
       ours[i].dec->add_scene(0, 0, model);
       ours[i].tally.method = "ours";
       ours[i].tally.lag = lags[i];
+      ours[i].tally.decode_threads = decode_threads;
     }
 
     sim::Frame f;
