@@ -66,7 +66,7 @@ void to_float(const SampleFields& f, const StreamConfig& config, ReconstructedFr
   out.jacobian.resize(out.disp_xx.size());
   // Sample by sample, so any split of the samples gives the same floats.
   const std::size_t samples = f.height.size();
-  const int parts = parallel ? 4 : 1;
+  const int parts = parallel ? kParallelParts : 1;
   run_jobs(parallel, parts, [&](int part) {
     const std::size_t begin = samples * part / parts, end = samples * (part + 1) / parts;
     for (const Conversion& c : conversions)

@@ -75,7 +75,7 @@ ModalModel::ModalModel(const StreamConfig& config)
 
 void ModalModel::set_parallel(ParallelFor parallel) {
   parallel_ = std::move(parallel);
-  const std::size_t slots = parallel_ ? 4 : 1;  // at most four pairs: eight channels
+  const std::size_t slots = parallel_ ? 4 : 1;  // one per pair: at most eight channels
   while (pair_scratch_.size() < slots) pair_scratch_.push_back(std::make_unique<PairScratch>(n_));
   pair_scratch_.resize(slots);
 }
@@ -89,32 +89,24 @@ ModalState ModalModel::zero_state() const {
   return s;
 }
 
-void ModalModel::advance(ModalState& s) const {
-  const std::size_t m = a_.size();
-  for (std::size_t i = 0; i < m; ++i) {
-    s.prev.re[i] = wsub(mul_round_sym(a_[i], s.cur.re[i], kRecurrenceBits), s.prev.re[i]);
-    s.prev.im[i] = wsub(mul_round_sym(a_[i], s.cur.im[i], kRecurrenceBits), s.prev.im[i]);
-  }
-  std::swap(s.prev, s.cur);
-}
+void ModalModel::advance(ModalState& s) const { advance(s, s, 1); }
 
-void ModalModel::advance(ModalState& s, std::uint64_t steps) const {
-  for (std::uint64_t i = 0; i < steps; ++i) advance(s);
-}
+void ModalModel::advance(ModalState& s, std::uint64_t steps) const { advance(s, s, steps); }
 
 void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t steps, const ParallelFor& parallel) const {
   const std::size_t m = a_.size();
   for (auto* v : {&out.prev.re, &out.prev.im, &out.cur.re, &out.cur.im}) v->resize(m);
   // Mode by mode, every step: each mode's recurrence is its own, so any split of the modes gives
-  // the same integers.
+  // the same integers. Each mode is read before it is written, so `out` may be `from`.
+  const std::int64_t* a = a_.data();
   const auto modes = [&](const std::vector<std::int64_t>& prev, const std::vector<std::int64_t>& cur,
                          std::vector<std::int64_t>& out_prev, std::vector<std::int64_t>& out_cur, std::size_t begin,
                          std::size_t end) {
-    const std::int64_t* a = a_.data();
     if (steps == 1) {  // nearly every delta: one step, straight through
       for (std::size_t i = begin; i < end; ++i) {
-        out_prev[i] = cur[i];
-        out_cur[i] = wsub(mul_round_sym(a[i], cur[i], kRecurrenceBits), prev[i]);
+        const std::int64_t p = prev[i], c = cur[i];
+        out_prev[i] = c;
+        out_cur[i] = wsub(mul_round_sym(a[i], c, kRecurrenceBits), p);
       }
       return;
     }
@@ -129,7 +121,7 @@ void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t 
       out_cur[i] = c;
     }
   };
-  const int parts = parallel ? 4 : 1;
+  const int parts = parallel ? kParallelParts : 1;
   run_jobs(parallel, parts, [&](int part) {
     const std::size_t begin = m * part / parts, end = m * (part + 1) / parts;
     modes(from.prev.re, from.cur.re, out.prev.re, out.cur.re, begin, end);

@@ -68,9 +68,8 @@ class ModalModel {
   // One tick forward, and `steps` ticks forward.
   void advance(ModalState& state) const;
   void advance(ModalState& state, std::uint64_t steps) const;
-  // `from` advanced by `steps` ticks into `out` (another state): the same bits as a copy advanced
-  // in place, without the copy's trip through memory; parts of the modes side by side with
-  // `parallel`.
+  // `from` advanced by `steps` ticks into `out` (another state, or `from` itself): a delta's state
+  // needs no copy of its baseline first; parts of the modes side by side with `parallel`.
   void advance(const ModalState& from, ModalState& out, std::uint64_t steps, const ParallelFor& parallel = {}) const;
 
   // Heights (and slopes, displacement and its derivatives when streamed) of the field whose

@@ -11,6 +11,10 @@ namespace ocean::codec {
 // when all have returned. The jobs do not throw. Empty: in order on the calling thread.
 using ParallelFor = std::function<void(int count, const std::function<void(int)>& job)>;
 
+// How many parts work that splits evenly (modes, samples) is cut into when threads are lent: as
+// many as a client lends at most (its caller and three helpers).
+inline constexpr int kParallelParts = 4;
+
 inline void run_jobs(const ParallelFor& parallel, int count, const std::function<void(int)>& job) {
   if (parallel && count > 1) {
     parallel(count, job);
