@@ -9,7 +9,7 @@
 namespace ocean::sim {
 
 std::complex<double> initial_amplitude(const SceneParams& p, const Spectrum& spectrum, int kx, int kz) {
-  if (kx == 0 && kz == 0) return {};
+  if ((kx == 0 && kz == 0) || !p.band.keeps(kx, kz)) return {};
   const double dkx = wavenumber(1, p.patch_x_m);
   const double dkz = wavenumber(1, p.patch_z_m);
   const double variance = spectrum.density(kx * dkx, kz * dkz) * dkx * dkz;

@@ -95,7 +95,7 @@ double Ocean::expected_variance() const {
   double sum = 0.0;
   for (int kz = -p.size_z / 2 + 1; kz < p.size_z / 2; ++kz)
     for (int kx = -p.size_x / 2 + 1; kx < p.size_x / 2; ++kx)
-      sum += impl_->spectrum.density(wavenumber(kx, p.patch_x_m), wavenumber(kz, p.patch_z_m));
+      if (p.band.keeps(kx, kz)) sum += impl_->spectrum.density(wavenumber(kx, p.patch_x_m), wavenumber(kz, p.patch_z_m));
   return sum * dk2;
 }
 

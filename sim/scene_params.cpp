@@ -49,6 +49,10 @@ std::string validate(const SceneParams& p) {
     return bad_param("choppiness", p.choppiness, "[0, 100]");
   if (!(std::isfinite(p.gravity_mps2) && p.gravity_mps2 >= 0.01 && p.gravity_mps2 <= 1000.0))
     return bad_param("gravity_mps2", p.gravity_mps2, "[0.01, 1000] m/s^2");
+  if (!p.band.valid())
+    return "band: [" + std::to_string(p.band.min_cycles) + ", " + std::to_string(p.band.max_cycles) +
+           ") cycles per patch: must be radii in [0, " + std::to_string(WaveBand::kMaxCycles) +
+           "], the upper one 0 (none) or above the lower one";
   return {};
 }
 

@@ -2,6 +2,8 @@
 // A frame is a pure function of (SceneParams, t): nothing else may influence it.
 #pragma once
 
+#include "common/wave_band.hpp"
+
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -31,6 +33,10 @@ struct SceneParams {
   double choppiness = 0.0;       // lambda for horizontal displacement, [0, 100]
   double gravity_mps2 = 9.81;    // [0.01, 1000]
   std::uint64_t seed = 1;
+  // The waves this realization keeps (cascade.hpp); whole by default. Not a weather parameter:
+  // nobody sets it, a cascade derives it, and no message carries it.
+  WaveBand band;
+  bool operator==(const SceneParams&) const = default;
 };
 
 // Thrown for any parameter out of range; what() names the parameter, its value and the allowed range.

@@ -11,14 +11,13 @@ namespace ocean::sim {
 namespace {
 
 constexpr double jonswap_gamma = 3.3;
+}  // namespace
 
 double default_small_wave(const SceneParams& p) {
   // Half the coarser grid spacing: at the Nyquist wavenumber pi/dx the filter exp(-k^2 l^2) is
   // exp(-pi^2/4) = 0.085 in energy, which tames aliasing of the slopes without flattening the grid.
   return 0.5 * std::max(p.patch_x_m / p.size_x, p.patch_z_m / p.size_z);
 }
-
-}  // namespace
 
 Spectrum::Spectrum(const SceneParams& p)
     : kind_(p.spectrum),

@@ -49,4 +49,7 @@ class Spectrum {
   Spreading spreading_;
 };
 
+// Tessendorf's suppression length l when the scene leaves it 0: half the coarser grid spacing.
+double default_small_wave(const SceneParams& p);
+
 }  // namespace ocean::sim

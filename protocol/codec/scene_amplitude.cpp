@@ -21,7 +21,7 @@ SceneComplex scene_gaussian(std::uint64_t seed, int kx, int kz) {
 }
 
 SceneComplex scene_initial_amplitude(const SceneModelParams& p, const SceneSpectrum& spectrum, int kx, int kz) {
-  if (kx == 0 && kz == 0) return {};
+  if ((kx == 0 && kz == 0) || !p.band.keeps(kx, kz)) return {};
   const double dkx = kTwoPi / p.patch_x_m;
   const double dkz = kTwoPi / p.patch_z_m;
   const double wx = kx * dkx, wz = kz * dkz;

@@ -44,6 +44,9 @@ std::string validate(const SceneModelParams& p) {
     m << "gravity_mps2 = " << p.gravity_mps2 << ": must be in [0.01, 1000]";
   else if (!in_range(p.choppiness, 0.0, 100.0))
     m << "choppiness = " << p.choppiness << ": must be in [0, 100]";
+  else if (!p.band.valid())
+    m << "band = [" << p.band.min_cycles << ", " << p.band.max_cycles << ") cycles per patch: must be radii in [0, "
+      << WaveBand::kMaxCycles << "], the upper one 0 (none) or above the lower one";
   return m.str();
 }
 

@@ -3,6 +3,8 @@
 // clients never link it. Choppiness moves samples but not heights: only the choppy channels use it.
 #pragma once
 
+#include "common/wave_band.hpp"
+
 #include <cstdint>
 #include <string>
 
@@ -22,6 +24,8 @@ struct SceneModelParams {
   std::uint64_t seed = 1;
   // Scales the choppy channels (codec version 3), not the heights: scene models ignore it.
   double choppiness = 0.0;
+  // The waves this realization keeps, as the sim's SceneParams::band: a cascade's (cascade_model.hpp).
+  WaveBand band;
   bool operator==(const SceneModelParams&) const = default;
 };
 

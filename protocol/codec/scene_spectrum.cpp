@@ -13,12 +13,11 @@ namespace {
 constexpr double kJonswapGamma = 3.3;
 // Beyond k D = 20 tanh(k D) is 1 in double, as in the sim's dispersion.
 constexpr double kDeepKd = 20.0;
+}  // namespace
 
 double default_small_wave(const SceneModelParams& p) {
   return 0.5 * std::max(p.patch_x_m / p.size_x, p.patch_z_m / p.size_z);
 }
-
-}  // namespace
 
 SceneSpectrum::SceneSpectrum(const SceneModelParams& p)
     : kind_(p.spectrum),

@@ -41,4 +41,7 @@ class SceneSpectrum {
   SceneSpreading spreading_;
 };
 
+// The suppression length of a scene whose small_wave_m is 0, as the sim's default_small_wave.
+double default_small_wave(const SceneModelParams& p);
+
 }  // namespace ocean::codec

@@ -26,6 +26,7 @@ inline ocean::sim::SceneParams to_sim(const SceneModelParams& s) {
   p.gravity_mps2 = s.gravity_mps2;
   p.seed = s.seed;
   p.choppiness = s.choppiness;
+  p.band = s.band;
   return p;
 }
 

@@ -3,6 +3,7 @@
 // corrections after its modeled key; every channel of every frame is within half its step of the
 // sim, and the Jacobian the decoder forms from them matches the sim's where foam is decided. A
 // change of choppiness is a scene change: no key, and the next frames already show the new lambda.
+#include "cascade_scene_model.hpp"
 #include "decoder.hpp"
 #include "encoder.hpp"
 #include "ocean.hpp"
@@ -75,7 +76,7 @@ void compare(const ReconstructedFrame& got, const ocean::sim::Frame& truth, cons
 // `scene_at`, announced to both sides before its frames.
 struct Run {
   ChannelErrors errors;
-  std::size_t choppy_corrections = 0, other_corrections = 0, choppy_samples = 0, delta_payload = 0;
+  std::size_t choppy_corrections = 0, other_corrections = 0, choppy_samples = 0, delta_payload = 0, key_payload = 0;
   int deltas = 0;
 };
 
@@ -111,6 +112,7 @@ Run stream(const StreamConfig& config, std::uint64_t first, std::uint64_t last, 
                          shown->disp_xz == encoded->reconstruction.disp_xz &&
                          shown->jacobian == encoded->reconstruction.jacobian;
     compare(*shown, frame, config, run.errors);
+    if (tick == first) run.key_payload = encoded->stats.payload_bytes;
     if (tick != first) {
       ++run.deltas;
       run.choppy_corrections += encoded->stats.corrections_choppy;
@@ -147,6 +149,29 @@ TEST_CASE("a storm's choppy channels stream within half a step of the sim, predi
     if (grid == 256) CHECK(run.errors.min_jacobian < 0.6f);
     // The prediction is the sim's own linear map of the heights: corrections are the exception.
     CHECK(static_cast<double>(run.choppy_corrections) <= 1e-3 * static_cast<double>(run.choppy_samples));
+  }
+}
+
+TEST_CASE("each cascade of a storm streams like a scene of its own", "[choppy][cascade]") {
+  // The scene model knows a cascade's lattice, band and draws: its key is modeled like a plain
+  // scene's, and its frames are the band-limited sim's within half a step.
+  const StreamConfig plain = choppy_stream(64);
+  const std::uint64_t first = 3000, last = first + 20;
+  const Run base = stream(plain, first, last, 0, [](std::uint64_t) { return storm(1.2); });
+  for (const auto& [cascade, index] : {std::pair{ocean::Cascade{8, 64, {0, 32}}, 1}, std::pair{ocean::Cascade{1, 64, {4, 0}}, 0}}) {
+    const SceneModelParams scene = cascade_scene_model(storm(1.2), cascade, index);
+    StreamConfig config = plain;
+    config.patch_x_m = scene.patch_x_m;
+    config.patch_z_m = scene.patch_z_m;
+    const Run run = stream(config, first, last, 0, [&](std::uint64_t) { return scene; });
+    std::printf("cascade %d (%.0f m, band [%d, %d)): key %zu bytes (plain storm %zu), delta bytes %zu (%zu), "
+                "corrections %zu + %zu choppy\n",
+                index, scene.patch_x_m, cascade.band.min_cycles, cascade.band.max_cycles, run.key_payload,
+                base.key_payload, run.delta_payload, base.delta_payload, run.other_corrections, run.choppy_corrections);
+    INFO("cascade " << index);
+    check_bounds(run, config);
+    CHECK(run.key_payload <= 2 * base.key_payload);
+    CHECK(run.delta_payload <= 2 * base.delta_payload);
   }
 }
 

@@ -2,6 +2,8 @@
 // band frame at the tick's time, for several spectra, depths, winds, seeds and ticks up to ten
 // years at 240 Hz; the predicted state agrees with the decoder's own recurrence; it is
 // deterministic; and it is cheap enough to run per key frame.
+#include "cascade_scene.hpp"
+#include "cascade_scene_model.hpp"
 #include "modal_model.hpp"
 #include "ocean.hpp"
 #include "scene_model.hpp"
@@ -82,6 +84,15 @@ std::vector<NamedScene> test_scenes() {
     s.fetch_m = 5e6;  // light wind, long fetch: narrow spreading, large s
     s.wind_dir_deg = -120.0;
     v.push_back({"jonswap light wind long fetch seed 2^63+5", s});
+  }
+  {
+    // A storm's two cascades: 2048 m keeping waves longer than 64 m, 256 m keeping the shorter.
+    SceneModelParams storm;
+    storm.spectrum = ModelSpectrum::jonswap;
+    storm.wind_speed_mps = 20.0;
+    storm.wind_dir_deg = 20.0;
+    v.push_back({"jonswap storm coarse cascade", cascade_scene_model(storm, {8, 64, {0, 32}}, 1)});
+    v.push_back({"jonswap storm fine cascade", cascade_scene_model(storm, {1, 64, {4, 0}}, 0)});
   }
   return v;
 }
@@ -170,6 +181,33 @@ TEST_CASE("scene model heights match the sim's band frames", "[scene_model]") {
     }
   }
   std::printf("scene model vs sim: worst max |dh| %.2e m, worst max |dslope| %.2e\n", worst_height, worst_slope);
+}
+
+TEST_CASE("a cascade's scene is derived alike by the sim and the codec", "[scene_model][cascade]") {
+  SceneModelParams scene;
+  scene.spectrum = ModelSpectrum::jonswap;
+  scene.patch_x_m = 300.0;
+  scene.patch_z_m = 200.0;
+  scene.size_x = 512;
+  scene.seed = 77;
+  for (double small_wave : {0.0, 0.7}) {
+    scene.small_wave_m = small_wave;
+    for (int index : {0, 1, 2}) {
+      const ocean::Cascade cascade{index == 0 ? 1 : 4 * index, 128, {index == 0 ? 8 : 0, index == 0 ? 0 : 32 * index}};
+      const SceneModelParams model = cascade_scene_model(scene, cascade, index);
+      const ocean::sim::SceneParams sim = ocean::sim::cascade_scene(to_sim(scene), cascade, index);
+      INFO("cascade " << index << " small_wave_m " << small_wave);
+      CHECK(to_sim(model) == sim);
+      CHECK(model.patch_x_m == 300.0 * cascade.patch_scale);
+      CHECK(model.size_x == 128);
+      CHECK(model.band == cascade.band);
+      CHECK(model.small_wave_m == (small_wave > 0.0 ? small_wave : 0.5 * 200.0 / 256));
+      CHECK((model.seed == scene.seed) == (index == 0));
+    }
+  }
+  CHECK_THROWS_WITH(cascade_scene_model(scene, {0, 64, {}}, 1), Catch::Contains("patch_scale"));
+  CHECK_THROWS_WITH(cascade_scene_model(scene, {2, 64, {8, 8}}, 1), Catch::Contains("band"));
+  CHECK_THROWS_AS(ocean::sim::cascade_scene(to_sim(scene), {2, 48, {}}, 1), ocean::sim::ParamError);
 }
 
 TEST_CASE("every mode matches the sim's double-precision h(k, t)", "[scene_model]") {

@@ -1,0 +1,14 @@
+// The scene one cascade realizes (common/cascade.hpp): the scene's weather on the cascade's own
+// lattice, band and seed, with the scene's suppression length so that every cascade filters the
+// small waves alike. An Ocean built from it evaluates that cascade.
+#pragma once
+
+#include "common/cascade.hpp"
+#include "scene_params.hpp"
+
+namespace ocean::sim {
+
+// Throws ParamError when the cascade or the scene it makes is unusable.
+SceneParams cascade_scene(const SceneParams& scene, const Cascade& cascade, int index);
+
+}  // namespace ocean::sim
