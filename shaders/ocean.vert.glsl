@@ -1,6 +1,9 @@
 #version 100
 // Ocean surface vertex stage: the static patch grid (a_grid) displaced by the per-frame streams.
 // Positions are camera-relative so tiles far from the origin keep float precision.
+// Built with COARSE_CASCADE defined, it adds a coarse cascade (a larger lattice of the same sea,
+// common/cascade.hpp) sampled from textures at the vertex's place in that lattice, so that the
+// sum repeats only every coarse patch.
 
 attribute vec2 a_grid;       // metres inside the patch (static VBO)
 attribute float a_height;    // metres (streamed)
@@ -17,6 +20,23 @@ uniform float u_far_roughness;
 uniform vec2 u_foam;          // threshold, 1 / softness
 uniform vec2 u_fog;           // density per metre, 1 / (1 - exp(-density * view distance))
 uniform vec3 u_horizon[16];   // sky colour 0.01 rad above the horizon, azimuth 2 pi (i / 16 - 0.5)
+#ifdef COARSE_CASCADE
+uniform sampler2D u_coarse_shape;  // height, dh/dx, dh/dz, 0 per coarse sample (nearest, repeat)
+uniform sampler2D u_coarse_chop;   // displacement x, z, J - 1, 0 per coarse sample
+uniform vec3 u_coarse_scale;       // 1 / coarse patch x, 1 / coarse patch z, samples per side
+uniform vec2 u_coarse_origin;      // the tile origin's place in the coarse patch, in [0, 1)
+
+// Bilinear between the four nearest samples: float textures need not filter (GLES 2).
+vec4 coarse_sample(sampler2D field, vec2 uv) {
+  vec2 t = uv * u_coarse_scale.z - 0.5;
+  vec2 f = fract(t);
+  vec2 a = (floor(t) + 0.5) / u_coarse_scale.z;
+  vec2 b = a + 1.0 / u_coarse_scale.z;
+  vec4 lo = mix(texture2D(field, a), texture2D(field, vec2(b.x, a.y)), f.x);
+  vec4 hi = mix(texture2D(field, vec2(a.x, b.y)), texture2D(field, b), f.x);
+  return mix(lo, hi, f.y);
+}
+#endif
 
 varying vec3 v_rel;      // surface point minus eye
 varying vec2 v_slope;    // slopes, flattened with distance to keep far tiles from sparkling
@@ -25,13 +45,28 @@ varying float v_height;
 varying vec4 v_haze;     // horizon colour in this direction, fog amount
 
 void main() {
-  vec2 xz = u_tile_offset + a_grid + u_choppiness * a_disp;
-  vec3 rel = vec3(xz.x, a_height - u_eye_height, xz.y);
+  float height = a_height;
+  vec2 disp = a_disp;
+  vec2 coarse_slope = vec2(0.0);
+  float jacobian = a_jacobian;
+#ifdef COARSE_CASCADE
+  vec2 uv = u_coarse_origin + a_grid * u_coarse_scale.xy;
+  vec4 shape = coarse_sample(u_coarse_shape, uv);
+  vec4 chop = coarse_sample(u_coarse_chop, uv);
+  height += shape.x;
+  coarse_slope = shape.yz;
+  disp += chop.xy;
+  // First order in the coarse derivatives (a few hundredths for long waves): J0 + (J1 - 1).
+  jacobian += chop.z;
+#endif
+  vec2 xz = u_tile_offset + a_grid + u_choppiness * disp;
+  vec3 rel = vec3(xz.x, height - u_eye_height, xz.y);
   float detail = mix(1.0, u_far_roughness, clamp(length(xz) * u_detail_fade, 0.0, 1.0));
   v_rel = rel;
-  v_slope = a_slope * detail;
-  v_foam = clamp((u_foam.x - a_jacobian) * u_foam.y, 0.0, 1.0) * detail;
-  v_height = a_height;
+  // Only the tile's short waves fade with distance (they would sparkle); the long ones stay.
+  v_slope = a_slope * detail + coarse_slope;
+  v_foam = clamp((u_foam.x - jacobian) * u_foam.y, 0.0, 1.0) * detail;
+  v_height = height;
   // Fog per vertex: smooth over a triangle, and it keeps the fragment stage to one texture fetch.
   // Normalised to reach exactly 1 at the view distance, where the tiles end and the sky below
   // the horizon (drawn in the horizon colour) takes over without a visible edge.

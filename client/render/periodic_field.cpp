@@ -35,4 +35,12 @@ void central_difference_slopes(int n, float patch_x_m, float patch_z_m, const fl
   }
 }
 
+SlopePointers slopes_or_differences(int n, float patch_x_m, float patch_z_m, const float* height,
+                                    const float* slope_x, const float* slope_z, std::vector<float>& scratch_x,
+                                    std::vector<float>& scratch_z) {
+  if (slope_x && slope_z) return {slope_x, slope_z};
+  central_difference_slopes(n, patch_x_m, patch_z_m, height, scratch_x, scratch_z);
+  return {scratch_x.data(), scratch_z.data()};
+}
+
 }  // namespace ocean::render

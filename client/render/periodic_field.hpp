@@ -21,4 +21,14 @@ void expand_periodic_strided(int n, int stride, int repeats, std::initializer_li
 void central_difference_slopes(int n, float patch_x_m, float patch_z_m, const float* height,
                                std::vector<float>& slope_x, std::vector<float>& slope_z);
 
+// The slopes to draw: slope_x and slope_z when both are given, else central differences of the
+// heights made in scratch_x, scratch_z (a stream without normals still shades).
+struct SlopePointers {
+  const float* x;
+  const float* z;
+};
+SlopePointers slopes_or_differences(int n, float patch_x_m, float patch_z_m, const float* height,
+                                    const float* slope_x, const float* slope_z, std::vector<float>& scratch_x,
+                                    std::vector<float>& scratch_z);
+
 }  // namespace ocean::render

@@ -37,6 +37,25 @@ T or_default(T value, T fallback) {
 
 }  // namespace
 
+bool Renderer::build_ocean_program(OceanProgram& program, bool coarse) {
+  namespace src = shader_source;
+  std::string vertex = src::ocean_vert;
+  // The define goes right after the "#version 100" line, which must stay first.
+  if (coarse) vertex.insert(vertex.find('\n') + 1, "#define COARSE_CASCADE\n");
+  program.id = build_program(coarse ? "ocean (coarse cascade)" : "ocean", vertex.c_str(), src::ocean_frag,
+                             {{kGrid, "a_grid"}, {kHeight, "a_height"}, {kSlope, "a_slope"},
+                              {kDisp, "a_disp"}, {kJacobian, "a_jacobian"}},
+                             error_);
+  if (!program.id) return false;
+  const auto loc = [&](const char* name) { return glGetUniformLocation(program.id, name); };
+  program.u = {loc("u_clip_from_rel"), loc("u_tile_offset"), loc("u_eye_height"), loc("u_choppiness"),
+               loc("u_detail_fade"), loc("u_far_roughness"), loc("u_foam"), loc("u_sky"),
+               loc("u_sun_dir"), loc("u_sun_colour"), loc("u_deep_colour"), loc("u_scatter_colour"),
+               loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast"),
+               loc("u_coarse_shape"), loc("u_coarse_chop"), loc("u_coarse_scale"), loc("u_coarse_origin")};
+  return true;
+}
+
 bool Renderer::fail(std::string reason) {
   error_ = std::move(reason);
   return false;
@@ -65,20 +84,18 @@ bool Renderer::init(const RendererDesc& in) {
   if (desc_.chunks_per_side < 1 || desc_.chunks_per_side > 8)
     return fail("RendererDesc: chunks_per_side must be 1..8, got " + std::to_string(desc_.chunks_per_side));
 
+  if (!build_ocean_program(plain_program_, false)) return false;
+  // The coarse variant is optional: a GL that cannot build it still draws the tile alone.
+  coarse_unsupported_ = "this GL has no vertex texture fetch (2 units) or no GL_OES_texture_float";
+  if (CoarseCascade::supported()) {
+    if (build_ocean_program(coarse_program_, true)) coarse_unsupported_.clear();
+    else coarse_unsupported_ = error_;
+    error_.clear();
+  }
   namespace src = shader_source;
-  ocean_program_ = build_program("ocean", src::ocean_vert, src::ocean_frag,
-                                 {{kGrid, "a_grid"}, {kHeight, "a_height"}, {kSlope, "a_slope"},
-                                  {kDisp, "a_disp"}, {kJacobian, "a_jacobian"}},
-                                 error_);
-  if (!ocean_program_) return false;
   sky_program_ = build_program("sky", src::sky_vert, src::sky_frag, {{0, "a_ndc"}}, error_);
   if (!sky_program_) return false;
 
-  const auto loc = [&](const char* name) { return glGetUniformLocation(ocean_program_, name); };
-  ocean_u_ = {loc("u_clip_from_rel"), loc("u_tile_offset"), loc("u_eye_height"), loc("u_choppiness"),
-              loc("u_detail_fade"), loc("u_far_roughness"), loc("u_foam"), loc("u_sky"),
-              loc("u_sun_dir"), loc("u_sun_colour"), loc("u_deep_colour"), loc("u_scatter_colour"),
-              loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast")};
   sky_u_rel_from_clip_ = glGetUniformLocation(sky_program_, "u_rel_from_clip");
   sky_u_sky_ = glGetUniformLocation(sky_program_, "u_sky");
   sky_u_overcast_ = glGetUniformLocation(sky_program_, "u_overcast");
@@ -189,13 +206,8 @@ bool Renderer::upload_frame(const FrameStreams& f) {
   float max_h = 0.0f;
   for (std::size_t i = 0; i < count; ++i) max_h = std::max(max_h, std::abs(f.height[i]));
   max_height_ = max_h;
-  const float* sx = f.slope_x;
-  const float* sz = f.slope_z;
-  if (!sx || !sz) {
-    central_difference_slopes(n, patch_x_, patch_z_, f.height, scratch_slope_x_, scratch_slope_z_);
-    sx = sx ? sx : scratch_slope_x_.data();
-    sz = sz ? sz : scratch_slope_z_.data();
-  }
+  const auto [sx, sz] = slopes_or_differences(n, patch_x_, patch_z_, f.height, f.slope_x, f.slope_z, scratch_slope_x_,
+                                              scratch_slope_z_);
   has_disp_ = f.disp_x != nullptr;
   max_disp_ = 0.0f;
   if (has_disp_) {
@@ -220,6 +232,25 @@ bool Renderer::upload_frame(const FrameStreams& f) {
   if (has_jacobian_) stream(tile_.jacobian, far_.jacobian, {f.jacobian});
   has_frame_ = true;
   return true;
+}
+
+bool Renderer::set_coarse_grid(int n, float patch_x_m, float patch_z_m) {
+  if (!ready_) return fail("Renderer::set_coarse_grid called before a successful init");
+  coarse_.destroy();
+  if (n == 0) return true;
+  if (!coarse_cascade_supported()) return fail("set_coarse_grid: " + coarse_unsupported_);
+  return coarse_.create(n, patch_x_m, patch_z_m, error_);
+}
+
+bool Renderer::upload_coarse_frame(const FrameStreams& frame) { return coarse_.upload(frame, error_); }
+
+glm::vec2 Renderer::coarse_origin(int ix, int iz) const {
+  // In double: tile indices times the patch reach millions of metres far from the origin.
+  const auto place = [](int index, float patch, float coarse) {
+    const double at = static_cast<double>(index) * patch / coarse;
+    return static_cast<float>(at - std::floor(at));
+  };
+  return {place(ix, patch_x_, coarse_.patch_x()), place(iz, patch_z_, coarse_.patch_z())};
 }
 
 void Renderer::set_overcast(float overcast) {
@@ -259,8 +290,8 @@ TileSelection Renderer::visible_tiles(const Camera& camera, const glm::mat4& cli
   sel.patch_x_m = patch_x_;
   sel.patch_z_m = patch_z_;
   sel.view_distance_m = desc_.view_distance_m;
-  sel.max_height_m = max_height_;
-  sel.max_displacement_m = max_disp_;
+  sel.max_height_m = max_height_ + coarse_.max_height();
+  sel.max_displacement_m = max_disp_ + coarse_.max_displacement() * desc_.choppiness;
   sel.lod.lod0_distance_m = desc_.lod0_distance_m > 0.0f ? desc_.lod0_distance_m : 0.5f * std::max(patch_x_, patch_z_);
   sel.lod.max_level = lod_levels_;
   sel.chunks_per_side = chunks_per_side_;
@@ -269,36 +300,47 @@ TileSelection Renderer::visible_tiles(const Camera& camera, const glm::mat4& cli
 }
 
 void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_from_rel) {
-  glUseProgram(ocean_program_);
-  glUniformMatrix4fv(ocean_u_.clip_from_rel, 1, GL_FALSE, glm::value_ptr(clip_from_rel));
-  glUniform1f(ocean_u_.eye_height, static_cast<float>(camera.position.y));
-  glUniform1f(ocean_u_.choppiness, desc_.choppiness);
-  glUniform1f(ocean_u_.detail_fade, 2.0f / desc_.view_distance_m);
-  glUniform1f(ocean_u_.far_roughness, 0.35f);
-  glUniform2f(ocean_u_.foam, desc_.foam_threshold, 1.0f / kFoamBand);
-  glUniform1i(ocean_u_.sky, 0);
-  glUniform3fv(ocean_u_.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
+  const OceanProgram& program = ocean_program();
+  const OceanUniforms& u = program.u;
+  glUseProgram(program.id);
+  glUniformMatrix4fv(u.clip_from_rel, 1, GL_FALSE, glm::value_ptr(clip_from_rel));
+  glUniform1f(u.eye_height, static_cast<float>(camera.position.y));
+  glUniform1f(u.choppiness, desc_.choppiness);
+  glUniform1f(u.detail_fade, 2.0f / desc_.view_distance_m);
+  glUniform1f(u.far_roughness, 0.35f);
+  glUniform2f(u.foam, desc_.foam_threshold, 1.0f / kFoamBand);
+  glUniform1i(u.sky, 0);
+  glUniform3fv(u.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
   // Under a cloud deck the sun barely shows and the water turns a darker grey-green.
   const glm::vec3 sun = desc_.sun_colour * (1.0f - 0.9f * overcast_);
   const glm::vec3 deep = desc_.deep_colour * (1.0f - 0.3f * overcast_);
   const glm::vec3 scatter = desc_.scatter_colour * (1.0f - 0.3f * overcast_);
-  glUniform3fv(ocean_u_.sun_colour, 1, glm::value_ptr(sun));
-  glUniform3fv(ocean_u_.deep_colour, 1, glm::value_ptr(deep));
-  glUniform3fv(ocean_u_.scatter_colour, 1, glm::value_ptr(scatter));
-  glUniform4f(ocean_u_.overcast, kOvercastDeck.r, kOvercastDeck.g, kOvercastDeck.b, overcast_);
-  glUniform1f(ocean_u_.shininess, desc_.shininess);
-  glUniform2f(ocean_u_.fog, desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m)));
-  glUniform3f(ocean_u_.foam_colour, 0.92f, 0.95f, 0.97f);
-  glUniform3fv(ocean_u_.horizon, static_cast<GLsizei>(weathered_ring_.size()), glm::value_ptr(weathered_ring_[0]));
+  glUniform3fv(u.sun_colour, 1, glm::value_ptr(sun));
+  glUniform3fv(u.deep_colour, 1, glm::value_ptr(deep));
+  glUniform3fv(u.scatter_colour, 1, glm::value_ptr(scatter));
+  glUniform4f(u.overcast, kOvercastDeck.r, kOvercastDeck.g, kOvercastDeck.b, overcast_);
+  glUniform1f(u.shininess, desc_.shininess);
+  glUniform2f(u.fog, desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m)));
+  glUniform3f(u.foam_colour, 0.92f, 0.95f, 0.97f);
+  glUniform3fv(u.horizon, static_cast<GLsizei>(weathered_ring_.size()), glm::value_ptr(weathered_ring_[0]));
+  if (coarse_.active()) {
+    coarse_.bind(GL_TEXTURE1);
+    glUniform1i(u.coarse_shape, 1);
+    glUniform1i(u.coarse_chop, 2);
+    glUniform3f(u.coarse_scale, 1.0f / coarse_.patch_x(), 1.0f / coarse_.patch_z(), static_cast<float>(coarse_.n()));
+  }
 }
 
 void Renderer::draw_tiles(const TileSelection& tiles) {
   // Tiles and chunks first (nearest first), then the far blocks with their own buffers.
+  const OceanUniforms& u = ocean_program().u;
+  const bool coarse = coarse_.active();
   tile_.bind(has_disp_, has_jacobian_);
   for (const TileDraw& t : tiles.draws) {
     if (t.span > 1) continue;
     const IndexRange& range = index_ranges_[((t.chunk + 1) * (lod_levels_ + 1) + t.level) * kEdgeMaskCount + t.coarser_edges];
-    glUniform2f(ocean_u_.tile_offset, t.offset_relative.x, t.offset_relative.y);
+    glUniform2f(u.tile_offset, t.offset_relative.x, t.offset_relative.y);
+    if (coarse) glUniform2fv(u.coarse_origin, 1, glm::value_ptr(coarse_origin(t.ix, t.iz)));
     glDrawElements(GL_TRIANGLES, range.count, index_type_, reinterpret_cast<const void*>(range.byte_offset));
     stats_.triangles += range.count / 3;
     ++stats_.tiles_per_level[std::min(t.level, 5)];
@@ -310,7 +352,8 @@ void Renderer::draw_tiles(const TileSelection& tiles) {
     if (t.span == 1) continue;
     if (!far_bound) far_.bind(has_disp_, has_jacobian_);
     far_bound = true;
-    glUniform2f(ocean_u_.tile_offset, t.offset_relative.x, t.offset_relative.y);
+    glUniform2f(u.tile_offset, t.offset_relative.x, t.offset_relative.y);
+    if (coarse) glUniform2fv(u.coarse_origin, 1, glm::value_ptr(coarse_origin(t.ix, t.iz)));
     glDrawElements(GL_TRIANGLES, far_index_count_, far_index_type_, nullptr);
     stats_.triangles += far_index_count_ / 3;
     stats_.tiles_per_level[std::min(t.level, 5)] += t.span * t.span;
@@ -340,13 +383,17 @@ void Renderer::draw_sky(const Camera& camera, const glm::mat4& clip_from_rel) {
 }
 
 void Renderer::shutdown() {
-  if (!ready_ && !ocean_program_ && !sky_program_) return;
+  if (!ready_ && !plain_program_.id && !sky_program_) return;
   release_grid();
-  if (ocean_program_) glDeleteProgram(ocean_program_);
+  coarse_.destroy();
+  for (OceanProgram* p : {&plain_program_, &coarse_program_}) {
+    if (p->id) glDeleteProgram(p->id);
+    *p = {};
+  }
   if (sky_program_) glDeleteProgram(sky_program_);
   if (sky_texture_) glDeleteTextures(1, &sky_texture_);
   if (sky_triangle_) glDeleteBuffers(1, &sky_triangle_);
-  ocean_program_ = sky_program_ = sky_texture_ = sky_triangle_ = 0;
+  sky_program_ = sky_texture_ = sky_triangle_ = 0;
   ready_ = false;
 }
 

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "client/render/camera.hpp"
+#include "client/render/coarse_cascade.hpp"
 #include "client/render/patch_buffers.hpp"
 #include "client/render/tile_selection.hpp"
 
@@ -68,6 +69,13 @@ class Renderer {
   // The patch is n x n samples spanning patch_x_m x patch_z_m metres; builds the static grid VBO
   // and the LOD index buffers. Call again when the stream's grid changes.
   bool set_grid(int n, float patch_x_m, float patch_z_m);
+  // A coarse cascade (common/cascade.hpp): a larger lattice of the same sea, n x n samples over
+  // patch_x_m x patch_z_m, added at every vertex to the tile, which then carries only the short
+  // waves; the sum repeats every coarse patch instead of every tile. Needs vertex texture fetch
+  // and float textures (coarse_cascade_supported(), after init); n = 0 removes it.
+  bool coarse_cascade_supported() const { return coarse_program_.id != 0; }
+  bool set_coarse_grid(int n, float patch_x_m, float patch_z_m);
+  bool upload_coarse_frame(const FrameStreams& frame);
   // The weather's light (weather_light.hpp): 0 a clear sky .. 1 all cloud deck, which hides the
   // sun and greys the sky, its reflection and the water.
   void set_overcast(float overcast);
@@ -97,7 +105,24 @@ class Renderer {
   std::string error_;
   bool ready_ = false;
 
-  GLuint ocean_program_ = 0, sky_program_ = 0;
+  struct OceanUniforms {
+    GLint clip_from_rel, tile_offset, eye_height, choppiness, detail_fade, far_roughness, foam;
+    GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon, overcast;
+    GLint coarse_shape, coarse_chop, coarse_scale, coarse_origin;  // -1 in the plain program
+  };
+  struct OceanProgram {
+    GLuint id = 0;
+    OceanUniforms u{};
+  };
+  bool build_ocean_program(OceanProgram& program, bool coarse);
+  const OceanProgram& ocean_program() const { return coarse_.active() ? coarse_program_ : plain_program_; }
+  // Where a tile starting at tile index (ix, iz) lies in the coarse patch, in [0, 1).
+  glm::vec2 coarse_origin(int ix, int iz) const;
+
+  OceanProgram plain_program_, coarse_program_;  // the latter only where the GL supports it
+  std::string coarse_unsupported_;                // why not, where it does not
+  CoarseCascade coarse_;
+  GLuint sky_program_ = 0;
   GLuint sky_texture_ = 0, sky_triangle_ = 0;
   PatchBuffers tile_;  // one patch: every LOD level and stitch variant
   PatchBuffers far_;   // far_span_^2 patches at the coarsest level, one draw per far block
@@ -121,10 +146,6 @@ class Renderer {
   std::vector<glm::vec3> horizon_ring_;
   std::vector<float> scratch_, scratch_slope_x_, scratch_slope_z_;
 
-  struct OceanUniforms {
-    GLint clip_from_rel, tile_offset, eye_height, choppiness, detail_fade, far_roughness, foam;
-    GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon, overcast;
-  } ocean_u_{};
   GLint sky_u_rel_from_clip_ = -1, sky_u_sky_ = -1, sky_u_overcast_ = -1;
   float overcast_ = 0.0f;
   std::vector<glm::vec3> weathered_ring_;
