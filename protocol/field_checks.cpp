@@ -117,6 +117,13 @@ Problem check_stream(const wire::StreamParams& s) {
   if (s.grid() != profile->grid) return fail(Reason::bad_dimensions, "StreamParams.grid", "the profile's grid");
   if (s.normals() != profile->normals) return fail(Reason::bad_dimensions, "StreamParams.normals", "the profile's flag");
   if (s.choppy() != profile->choppy) return fail(Reason::bad_dimensions, "StreamParams.choppy", "the profile's flag");
+  const std::size_t cascades = s.cascades() ? s.cascades()->size() : 0;
+  bool same = cascades == profile->cascades.size();
+  for (std::size_t i = 0; same && i < cascades; ++i) {
+    const wire::Cascade* c = s.cascades()->Get(static_cast<flatbuffers::uoffset_t>(i));
+    same = Cascade{c->patch_scale(), c->grid(), {c->band_min(), c->band_max()}} == profile->cascades[i];
+  }
+  if (!same) return fail(Reason::bad_dimensions, "StreamParams.cascades", "the profile's cascades");
   if (auto p = patch(s.patch_x_m(), "StreamParams.patch_x_m")) return p;
   if (auto p = patch(s.patch_z_m(), "StreamParams.patch_z_m")) return p;
   if (auto p = gravity(s.gravity_mps2(), "StreamParams.gravity_mps2")) return p;
@@ -140,7 +147,8 @@ Problem check(const wire::Welcome& m, const wire::Message&, std::size_t, wire::T
   if (!m.scene()) return fail(Reason::missing_field, "Welcome.scene", "present");
   if (auto p = check_stream(*m.stream())) return p;
   if (auto p = check_scene(*m.scene())) return p;
-  if (m.stream()->grid() > m.scene()->size_x() || m.stream()->grid() > m.scene()->size_z())
+  // A cascade realizes its own lattice; only a stream of one is cut from the scene's grid.
+  if (!m.stream()->cascades() && (m.stream()->grid() > m.scene()->size_x() || m.stream()->grid() > m.scene()->size_z()))
     return fail(Reason::bad_dimensions, "StreamParams.grid", "<= SceneParams.size_x and size_z");
   const auto* offered = m.offered_profiles();
   if (!offered || offered->size() == 0 || offered->size() > kMaxOfferedProfiles)

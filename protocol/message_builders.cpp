@@ -36,6 +36,14 @@ Offset<flatbuffers::String> string_of(FlatBufferBuilder& fbb, const std::string&
 }
 
 Offset<wire::StreamParams> stream_of(FlatBufferBuilder& fbb, const StreamParams& s) {
+  Offset<flatbuffers::Vector<const wire::Cascade*>> cascades = 0;
+  if (!s.cascades.empty()) {
+    std::vector<wire::Cascade> out;
+    for (const Cascade& c : s.cascades)
+      out.emplace_back(static_cast<std::uint8_t>(c.patch_scale), static_cast<std::uint16_t>(c.grid),
+                       static_cast<std::uint16_t>(c.band.min_cycles), static_cast<std::uint16_t>(c.band.max_cycles));
+    cascades = fbb.CreateVectorOfStructs(out);
+  }
   wire::StreamParamsBuilder b(fbb);
   b.add_profile_id(s.profile_id);
   b.add_grid(s.grid);
@@ -49,6 +57,7 @@ Offset<wire::StreamParams> stream_of(FlatBufferBuilder& fbb, const StreamParams&
   b.add_disp_step_m(s.disp_step_m);
   b.add_normals(s.normals);
   b.add_choppy(s.choppy);
+  if (!s.cascades.empty()) b.add_cascades(cascades);
   return b.Finish();
 }
 

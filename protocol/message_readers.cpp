@@ -31,6 +31,9 @@ StreamParams read(const wire::StreamParams& s) {
   out.disp_step_m = s.disp_step_m();
   out.normals = s.normals();
   out.choppy = s.choppy();
+  if (s.cascades())
+    for (const wire::Cascade* c : *s.cascades())
+      out.cascades.push_back({c->patch_scale(), c->grid(), {c->band_min(), c->band_max()}});
   return out;
 }
 

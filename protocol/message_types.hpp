@@ -3,6 +3,8 @@
 // those of ocean.fbs (PROTOCOL.md lists them); enums are the generated wire enums.
 #pragma once
 
+#include "common/cascade.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -30,6 +32,7 @@ struct StreamParams {
   float disp_step_m = 0.0f;
   bool normals = false;
   bool choppy = false;
+  std::vector<Cascade> cascades;  // the profile's; empty for one lattice
   bool operator==(const StreamParams&) const = default;
 };
 

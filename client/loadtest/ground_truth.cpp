@@ -8,8 +8,11 @@
 
 namespace ocean::loadtest {
 
-GroundTruth::GroundTruth(int tick_rate_hz, bool choppy, std::size_t cache_frames)
-    : rate_hz_(tick_rate_hz), choppy_(choppy), cache_frames_(std::max<std::size_t>(1, cache_frames)) {
+GroundTruth::GroundTruth(int tick_rate_hz, bool choppy, std::size_t cache_frames, std::vector<Cascade> cascades)
+    : rate_hz_(tick_rate_hz),
+      choppy_(choppy),
+      cache_frames_(std::max<std::size_t>(1, cache_frames)),
+      cascades_(std::move(cascades)) {
   if (tick_rate_hz < 1) throw std::invalid_argument("GroundTruth: tick_rate_hz must be >= 1, got " + std::to_string(tick_rate_hz));
 }
 
@@ -18,14 +21,19 @@ void GroundTruth::set_scene(Tick effective_tick, const protocol::SceneParams& sc
   if (const SceneEntry* current = scene_for(effective_tick); current && current->wire == scene) return;
   auto it = std::find_if(scenes_.begin(), scenes_.end(), [&](const SceneEntry& e) { return e.effective_tick >= effective_tick; });
   if (it != scenes_.end() && it->effective_tick == effective_tick) {
-    it->wire = scene;
-    it->ocean = std::make_unique<sim::Ocean>(scene_wire::to_sim(scene));
+    *it = entry(effective_tick, scene);
   } else {
-    scenes_.insert(it, SceneEntry{effective_tick, scene, std::make_unique<sim::Ocean>(scene_wire::to_sim(scene))});
+    scenes_.insert(it, entry(effective_tick, scene));
   }
   // Frames from the changed tick on were computed with the old scene.
   for (auto c = cache_.begin(); c != cache_.end();)
     c = (c->first >> 16) >= effective_tick ? cache_.erase(c) : std::next(c);
+}
+
+GroundTruth::SceneEntry GroundTruth::entry(Tick effective_tick, const protocol::SceneParams& scene) const {
+  const sim::SceneParams params = scene_wire::to_sim(scene);
+  return SceneEntry{effective_tick, scene, std::make_unique<sim::Ocean>(params),
+                    cascades_.empty() ? nullptr : std::make_unique<sim::CascadeSet>(params, cascades_)};
 }
 
 GroundTruth::SceneEntry* GroundTruth::scene_for(Tick tick) {
@@ -49,7 +57,10 @@ std::shared_ptr<const sim::Frame> GroundTruth::at(Tick tick, int grid) {
   if (!scene) throw std::logic_error("GroundTruth::at: no scene yet (call set_scene with the Welcome's scene first)");
   while (cache_.size() >= cache_frames_) cache_.erase(cache_.begin());
   auto frame = std::make_shared<sim::Frame>();
-  scene->ocean->evaluate_band(time_of(tick), grid, grid, *frame, sim::FrameRequest{true, choppy_});
+  if (scene->cascades)
+    scene->cascades->evaluate(time_of(tick), *frame, sim::FrameRequest{true, choppy_});
+  else
+    scene->ocean->evaluate_band(time_of(tick), grid, grid, *frame, sim::FrameRequest{true, choppy_});
   ++evaluations_;
   cache_[key] = frame;
   return frame;

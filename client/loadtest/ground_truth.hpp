@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "message_types.hpp"
+#include "cascade_set.hpp"
 #include "ocean.hpp"
 
 namespace ocean::loadtest {
@@ -20,14 +21,17 @@ class GroundTruth {
   // tick_rate_hz: the server's tick rate (1 / Welcome.tick_period_s, rounded). choppy: the stream
   // carries displacement and its derivatives (Welcome.stream.choppy), so the truth evaluates them
   // too; five more transforms a frame, spent only when they are checked.
-  explicit GroundTruth(int tick_rate_hz, bool choppy = false, std::size_t cache_frames = 256);
+  // cascades: the stream's (Welcome.stream.cascades), whose frames are their cascades' one after
+  // the other; empty for a band of the scene's grid.
+  explicit GroundTruth(int tick_rate_hz, bool choppy = false, std::size_t cache_frames = 256,
+                       std::vector<Cascade> cascades = {});
 
   // The scene in force from effective_tick on. Re-announcing a known scene changes nothing, so
   // every client may report the Welcome and SceneUpdates it sees.
   void set_scene(Tick effective_tick, const protocol::SceneParams& scene);
 
   // The grid x grid band (heights, slopes and, when choppy, displacement and its derivatives) at
-  // tick. Shared, so that a caller may compare a frame with it after handing the truth to another
+  // tick, or every cascade's frame one after the other. Shared, so that a caller may compare a frame with it after handing the truth to another
   // thread (load_run.cpp locks around at() only).
   std::shared_ptr<const sim::Frame> at(Tick tick, int grid);
 
@@ -41,12 +45,15 @@ class GroundTruth {
     Tick effective_tick;
     protocol::SceneParams wire;
     std::unique_ptr<sim::Ocean> ocean;
+    std::unique_ptr<sim::CascadeSet> cascades;  // the stream's, if it has any
   };
+  SceneEntry entry(Tick effective_tick, const protocol::SceneParams& scene) const;
   SceneEntry* scene_for(Tick tick);
 
   int rate_hz_;
   bool choppy_;
   std::size_t cache_frames_;
+  std::vector<Cascade> cascades_;
   std::vector<SceneEntry> scenes_;  // sorted by effective_tick
   std::map<std::uint64_t, std::shared_ptr<const sim::Frame>> cache_;  // key: tick << 16 | grid, so begin() is the oldest
   std::uint64_t evaluations_ = 0;

@@ -2,13 +2,48 @@
 
 namespace ocean::render {
 
-bool upload_channels(Renderer& renderer, const client::FrameChannels& f, std::size_t samples, FoamMemory& foam,
+bool stream_layout(int grid, double patch_x_m, double patch_z_m, std::span<const Cascade> cascades, StreamLayout& out,
+                   std::string& error) {
+  out = {};
+  if (cascades.empty()) {
+    out.tile = {grid, static_cast<float>(patch_x_m), static_cast<float>(patch_z_m)};
+    return true;
+  }
+  if (cascades.size() > 2) {
+    error = "the stream has " + std::to_string(cascades.size()) + " cascades; this renderer draws at most two";
+    return false;
+  }
+  const auto lattice = [&](const Cascade& c) {
+    return StreamLayout::Lattice{c.grid, static_cast<float>(patch_x_m * c.patch_scale),
+                                 static_cast<float>(patch_z_m * c.patch_scale)};
+  };
+  out.tile = lattice(cascades[0]);
+  if (cascades.size() == 2) out.coarse = lattice(cascades[1]);
+  return true;
+}
+
+bool apply_layout(Renderer& renderer, const StreamLayout& layout) {
+  return renderer.set_grid(layout.tile.n, layout.tile.patch_x_m, layout.tile.patch_z_m) &&
+         renderer.set_coarse_grid(layout.coarse.n, layout.coarse.patch_x_m, layout.coarse.patch_z_m);
+}
+
+bool upload_channels(Renderer& renderer, const client::FrameChannels& f, const StreamLayout& layout, FoamMemory& foam,
                      double dt_s) {
+  const std::size_t samples = layout.samples();
   const bool slopes = f.slope_x.size() == samples && f.slope_z.size() == samples;
   const bool choppy = f.disp_x.size() == samples && f.disp_z.size() == samples && f.jacobian.size() == samples;
   const float* jacobian = choppy ? foam.update(f.jacobian, dt_s).data() : nullptr;
-  return renderer.upload_frame(f.height.data(), slopes ? f.slope_x.data() : nullptr, slopes ? f.slope_z.data() : nullptr,
-                               choppy ? f.disp_x.data() : nullptr, choppy ? f.disp_z.data() : nullptr, jacobian);
+  const auto at = [](const std::vector<float>& v, bool present, std::size_t offset) {
+    return present ? v.data() + offset : nullptr;
+  };
+  if (!renderer.upload_frame(f.height.data(), at(f.slope_x, slopes, 0), at(f.slope_z, slopes, 0),
+                             at(f.disp_x, choppy, 0), at(f.disp_z, choppy, 0), jacobian))
+    return false;
+  if (layout.coarse.n == 0) return true;
+  const std::size_t o = static_cast<std::size_t>(layout.tile.n) * layout.tile.n;
+  return renderer.upload_coarse_frame(FrameStreams{f.height.data() + o, at(f.slope_x, slopes, o), at(f.slope_z, slopes, o),
+                                                   at(f.disp_x, choppy, o), at(f.disp_z, choppy, o),
+                                                   jacobian ? jacobian + o : nullptr});
 }
 
 }  // namespace ocean::render

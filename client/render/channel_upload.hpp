@@ -1,18 +1,44 @@
 // upload_channels: a blended moment to the renderer - slopes when the stream has them, and for a
-// choppy stream its displacement and the Jacobian through the foam memory, so foam fades.
+// choppy stream its displacement and the Jacobian through the foam memory, so foam fades. A
+// cascaded stream's channels hold the tile's samples and then the coarse cascade's.
 #pragma once
 
 #include "client/net/frame_channels.hpp"
 #include "client/render/foam_memory.hpp"
 #include "client/render/renderer.hpp"
+#include "common/cascade.hpp"
 
 #include <cstddef>
+#include <span>
+#include <string>
 
 namespace ocean::render {
 
-// false when the renderer refuses the frame (see Renderer::error()); `samples` is grid * grid and
-// the height channel must have that many.
-bool upload_channels(Renderer& renderer, const client::FrameChannels& frame, std::size_t samples, FoamMemory& foam,
-                     double dt_s);
+// The lattices of a stream as the renderer draws them: the tile, and a coarse cascade (n 0: none).
+struct StreamLayout {
+  struct Lattice {
+    int n = 0;
+    float patch_x_m = 0.0f, patch_z_m = 0.0f;
+    bool operator==(const Lattice&) const = default;
+  };
+  Lattice tile, coarse;
+  std::size_t samples() const {
+    return static_cast<std::size_t>(tile.n) * tile.n + static_cast<std::size_t>(coarse.n) * coarse.n;
+  }
+  bool operator==(const StreamLayout&) const = default;
+};
+
+// From the Welcome's StreamParams: grid over the patch, or its cascades (at most two: the tile
+// and one coarse cascade; false with `error` otherwise).
+bool stream_layout(int grid, double patch_x_m, double patch_z_m, std::span<const Cascade> cascades, StreamLayout& out,
+                   std::string& error);
+
+// set_grid and set_coarse_grid for the layout.
+bool apply_layout(Renderer& renderer, const StreamLayout& layout);
+
+// false when the renderer refuses the frame (see Renderer::error()); the height channel must have
+// layout.samples() samples.
+bool upload_channels(Renderer& renderer, const client::FrameChannels& frame, const StreamLayout& layout,
+                     FoamMemory& foam, double dt_s);
 
 }  // namespace ocean::render

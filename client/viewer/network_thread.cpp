@@ -144,6 +144,9 @@ void NetworkThread::on_welcome(const protocol::Welcome& welcome) {
   stream_.grid = welcome.stream.grid;
   stream_.patch_x_m = static_cast<float>(welcome.stream.patch_x_m);
   stream_.patch_z_m = static_cast<float>(welcome.stream.patch_z_m);
+  stream_.layout_error.clear();
+  render::stream_layout(welcome.stream.grid, welcome.stream.patch_x_m, welcome.stream.patch_z_m, welcome.stream.cascades,
+                        stream_.layout, stream_.layout_error);
   stream_.profile = profile ? std::string(profile->name) : "profile-" + std::to_string(welcome.stream.profile_id);
   stream_.tick_period_s = welcome.tick_period_s;
   stream_.send_interval_s = send_interval;
@@ -157,16 +160,19 @@ void NetworkThread::on_frame(const codec::ReconstructedFrame& frame, Tick tick) 
   ++session_ticks_.received;
   if (config_.record_path.empty()) return;
   const double t0 = thread_cpu_ms();
-  const int grid = static_cast<int>(std::lround(std::sqrt(static_cast<double>(frame.height.size()))));
   std::lock_guard lock(mutex_);
+  // The tile: a cascaded stream's fields go on with its coarse cascade's samples after it.
+  const int grid = stream_.layout.tile.n;
   try {
     if (!recording_->writer && stats_.record_error.empty()) {
       recording_->writer.emplace(config_.record_path);
       recording_->grid = grid;
     }
-    if (recording_->writer && recording_->grid == grid && (!recording_->last_tick || tick > *recording_->last_tick)) {
+    if (recording_->writer && recording_->grid == grid && grid > 0 &&
+        frame.height.size() >= static_cast<std::size_t>(grid) * grid && (!recording_->last_tick || tick > *recording_->last_tick)) {
       recording_->last_tick = tick;
-      recording_->writer->append(static_cast<std::int64_t>(tick), grid, frame.height);
+      recording_->writer->append(static_cast<std::int64_t>(tick), grid,
+                                 std::span<const float>(frame.height).first(static_cast<std::size_t>(grid) * grid));
       ++stats_.frames_recorded;
     } else {
       ++stats_.frames_not_recorded;

@@ -6,6 +6,8 @@
 
 #include "tick.hpp"
 
+#include "client/render/channel_upload.hpp"
+
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -30,6 +32,8 @@ struct StreamShape {
   std::uint64_t generation = 0;
   int grid = 0;
   float patch_x_m = 0.0f, patch_z_m = 0.0f;
+  render::StreamLayout layout;  // the tile and the coarse cascade, from the Welcome
+  std::string layout_error;     // why the renderer cannot draw the stream, if it cannot
   std::string profile;
   double tick_period_s = 0.0;
   double send_interval_s = 0.0;

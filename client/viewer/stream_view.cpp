@@ -13,10 +13,12 @@ bool StreamView::init(const render::RendererDesc& desc, const CameraPose& pose, 
 bool StreamView::update(NetworkThread& net, double now) {
   const StreamShape shape = net.stream();
   if (shape.generation != shape_.generation) {
-    const bool same_grid = shape.grid == shape_.grid && shape.patch_x_m == shape_.patch_x_m &&
-                           shape.patch_z_m == shape_.patch_z_m;
-    if (!same_grid && shape.grid > 0) {
-      if (!scene_.renderer.set_grid(shape.grid, shape.patch_x_m, shape.patch_z_m)) {
+    if (!shape.layout_error.empty()) {
+      error_ = "stream grid " + std::to_string(shape.grid) + ": " + shape.layout_error;
+      return false;
+    }
+    if (shape.layout != shape_.layout && shape.grid > 0) {
+      if (!render::apply_layout(scene_.renderer, shape.layout)) {
         error_ = "stream grid " + std::to_string(shape.grid) + ": " + scene_.renderer.error();
         return false;
       }
@@ -31,12 +33,12 @@ bool StreamView::update(NetworkThread& net, double now) {
   last_weather_s_ = now;
   const double t0 = thread_cpu_ms();
   last_ = net.timeline().render(now, channels_);
-  const std::size_t samples = static_cast<std::size_t>(shape_.grid) * shape_.grid;
+  const std::size_t samples = shape_.layout.samples();
   if (last_.status == client::TimelineSample::Status::empty || samples == 0 || channels_.height.size() != samples) {
     ++held_;  // the renderer keeps the last upload: the picture holds
     return true;
   }
-  render::upload_channels(scene_.renderer, channels_, samples, foam_, now - last_upload_s_);
+  render::upload_channels(scene_.renderer, channels_, shape_.layout, foam_, now - last_upload_s_);
   last_upload_s_ = now;
   upload_cpu_ms_ += thread_cpu_ms() - t0;
   ++uploads_;

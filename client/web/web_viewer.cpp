@@ -113,15 +113,22 @@ void WebViewer::on_welcome(const protocol::Welcome& welcome) {
   timeline_ = client::FrameTimeline(config);
   ticks_per_frame_ = std::max(1.0, std::round(config.send_interval_s / config.tick_period_s));
   session_frames_ = 0;
-  if (welcome.stream.grid != grid_) {
+  render::StreamLayout layout;
+  std::string layout_error;
+  if (!render::stream_layout(welcome.stream.grid, welcome.stream.patch_x_m, welcome.stream.patch_z_m,
+                             welcome.stream.cascades, layout, layout_error)) {
+    pending_end_ = layout_error;
+    return;
+  }
+  if (layout != layout_) {
     channels_ = {};
     foam_.clear();
-    if (!renderer_.set_grid(welcome.stream.grid, static_cast<float>(welcome.stream.patch_x_m),
-                            static_cast<float>(welcome.stream.patch_z_m))) {
+    if (!render::apply_layout(renderer_, layout)) {
       // Ended once on_tcp_message has returned: the session is still on the stack here.
       pending_end_ = "stream grid " + std::to_string(welcome.stream.grid) + ": " + renderer_.error();
       return;
     }
+    layout_ = layout;
     grid_ = welcome.stream.grid;
   }
   state_ = "streaming";
@@ -161,12 +168,12 @@ void WebViewer::frame(double now_s, int width, int height) {
   look_dx_ = look_dy_ = 0.0;
   render::apply_fly_input(camera_, input, dt);
 
-  const std::size_t samples = static_cast<std::size_t>(grid_) * grid_;
+  const std::size_t samples = layout_.samples();
   const client::TimelineSample sample = timeline_.sample(now_s);
   if (sample.status != client::TimelineSample::Status::empty && samples > 0) {
     client::FrameTimeline::blend(sample, channels_);
     if (channels_.height.size() == samples) {
-      render::upload_channels(renderer_, channels_, samples, foam_, dt);
+      render::upload_channels(renderer_, channels_, layout_, foam_, dt);
       ++uploads_;
     }
   }

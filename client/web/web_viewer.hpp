@@ -14,6 +14,7 @@
 #include "browser_socket.hpp"
 #include "client/render/camera.hpp"
 #include "client/render/camera_controls.hpp"
+#include "client/render/channel_upload.hpp"
 #include "client/render/foam_memory.hpp"
 #include "client/render/weather_light.hpp"
 #include "client/render/hud_overlay.hpp"
@@ -84,6 +85,7 @@ class WebViewer {
   std::string pending_end_;  // set inside a session callback; the session ends after it returns
   std::string profile_;
   int grid_ = 0;
+  render::StreamLayout layout_;  // the tile and the coarse cascade the renderer is sized to
   std::uint64_t connects_ = 0;
 
   // Figures for the HUD and report().

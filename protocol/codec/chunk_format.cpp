@@ -13,7 +13,11 @@ constexpr std::uint8_t kFlagChoppy = 1u << 4;  // codec version 3
 // 3's in the last bits: every chunk says so, and a version 3 decoder refuses it (bad_flags) rather
 // than decode it against the wrong prediction.
 constexpr std::uint8_t kFlagBinary32 = 1u << 5;
-constexpr std::uint8_t kKnownFlags = kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole | kFlagChoppy | kFlagBinary32;
+// Codec version 5: the stream has cascades (several lattices); decoders of version 4 refuse it
+// as a reserved bit, so they show nothing rather than one lattice's samples as the sea.
+constexpr std::uint8_t kFlagCascaded = 1u << 6;
+constexpr std::uint8_t kKnownFlags =
+    kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole | kFlagChoppy | kFlagBinary32 | kFlagCascaded;
 constexpr std::size_t kCrcOffset = 1;
 constexpr std::size_t kFixedHeaderBytes = 4;  // flags, CRC (2), scene tag
 
@@ -104,7 +108,8 @@ std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& e
   const bool explicit_key = h.key && !h.modeled;
   out.push_back(static_cast<std::uint8_t>((h.key ? kFlagKey : 0) | (h.normals ? kFlagNormals : 0) |
                                           (h.key && h.modeled ? kFlagModeled : 0) | (h.whole ? kFlagWhole : 0) |
-                                          (h.choppy ? kFlagChoppy : 0) | kFlagBinary32));
+                                          (h.choppy ? kFlagChoppy : 0) | (h.cascaded ? kFlagCascaded : 0) |
+                                          kFlagBinary32));
   out.push_back(0);
   out.push_back(0);  // CRC placeholder
   out.push_back(h.scene_tag);
@@ -136,6 +141,7 @@ ChunkError parse_payload(const ChunkView& c, std::size_t max_payload, int grid_l
   h.modeled = (flags & kFlagModeled) != 0;
   h.whole = (flags & kFlagWhole) != 0;
   h.choppy = (flags & kFlagChoppy) != 0;
+  h.cascaded = (flags & kFlagCascaded) != 0;
   if (h.key != c.key || (h.modeled && !h.key)) return ChunkError::bad_flags;
   h.scene_tag = p[3];
   std::size_t pos = kFixedHeaderBytes;

@@ -35,7 +35,8 @@ const ModalState* Decoder::state(Tick tick) const {
 }
 
 ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const {
-  if (h.normals != config_.normals || h.choppy != config_.choppy) return ChunkError::wrong_dimensions;
+  if (h.normals != config_.normals || h.choppy != config_.choppy || h.cascaded != !config_.cascades.empty())
+    return ChunkError::wrong_dimensions;
   if (h.item_begin >= h.item_end || h.item_end > layout.total()) return ChunkError::bad_range;
   if (h.key && !h.modeled && (h.pos_shift > 40 || h.vel_shift > 40)) return ChunkError::bad_value;
   if (c.count == 0 || c.count > kMaxChunksPerFrame || c.index >= c.count) return ChunkError::bad_index;
@@ -70,10 +71,9 @@ ChunkError Decoder::accept(const ChunkView& c) {
   std::span<const std::uint8_t> body;
   if (const ChunkError e = parse_payload(c, options_.max_payload, config_.grid_log2(), h, body); e != ChunkError::ok)
     return e;
-  const int n = model_.n();
   BodyLayout layout;
   layout.spectral_items = h.key && !h.modeled ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
-  layout.samples = static_cast<std::uint32_t>(n) * n;
+  layout.samples = static_cast<std::uint32_t>(model_.samples());
   layout.normals = config_.normals;
   layout.choppy = config_.choppy;
   if (h.whole) {
@@ -174,7 +174,7 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
     apply_corrections(p.fields, p.corrections);
   }
   if (!p.corrections.height.empty())
-    model_.add_correction(p.predicted, height_correction_field(model_.n(), p.corrections.height));
+    model_.add_correction(p.predicted, height_correction_field(model_.samples(), p.corrections.height));
   const DecodeMemo::State state = memo ? memo->intern(tick, std::move(p.predicted))
                                        : DecodeMemo::State(std::make_shared<ModalState>(std::move(p.predicted)));
   const bool shown = !shown_tick_ || tick >= *shown_tick_;

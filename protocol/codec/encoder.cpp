@@ -56,10 +56,10 @@ void Encoder::set_scene(Tick from, std::uint8_t tag, const SceneModelParams& sce
 }
 
 void Encoder::add_truth(Tick tick, const TruthView& truth) {
-  const std::size_t nn = static_cast<std::size_t>(model_.n()) * model_.n();
+  const std::size_t nn = model_.samples();
   if (truth.height.size() != nn)
     throw std::invalid_argument("Encoder::add_truth: height has " + std::to_string(truth.height.size()) +
-                                " samples, the stream grid needs " + std::to_string(nn));
+                                " samples, the stream's lattices need " + std::to_string(nn));
   if (config_.normals && (truth.slope_x.size() != nn || truth.slope_z.size() != nn))
     throw std::invalid_argument("Encoder::add_truth: slope_x and slope_z need " + std::to_string(nn) +
                                 " samples each when the stream has normals");
@@ -157,7 +157,7 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_key(Tick tick) {
   scenes_.model_state(tick, predicted);
   const Corrections corrections = correct_once(tick, predicted);
   const double samples =
-      static_cast<double>(model_.n()) * model_.n() * (1 + (config_.normals ? 2 : 0) + (config_.choppy ? 5 : 0));
+      static_cast<double>(model_.samples()) * (1 + (config_.normals ? 2 : 0) + (config_.choppy ? 5 : 0));
   if (static_cast<double>(corrections.total()) > options_.modeled_key_max_correction_share * samples &&
       tick > 0 && truth_.count(tick - 1) != 0)
     return explicit_key(tick);
@@ -172,8 +172,7 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_key(Tick tick) {
 std::shared_ptr<const EncodedFrame> Encoder::explicit_key(Tick tick) {
   const auto& t1 = truth_.at(tick);
   const auto& t0 = truth_.at(tick - 1);
-  const int n = model_.n();
-  const std::size_t nn = static_cast<std::size_t>(n) * n;
+  const std::size_t nn = model_.samples();
   const double step = static_cast<double>(config_.height_step_m);
   std::vector<std::int64_t> f1(nn), f0(nn);
   for (std::size_t i = 0; i < nn; ++i) {
@@ -184,10 +183,16 @@ std::shared_ptr<const EncodedFrame> Encoder::explicit_key(Tick tick) {
   model_.spectrum_of(f1.data(), s1);
   model_.spectrum_of(f0.data(), s0);
   // Spectral quantization error 2^p per coefficient gives spatial rms about 2^p / (n sqrt 6):
-  // choose p for an rms of step * 2^-key_precision_bits.
+  // choose p for an rms of step * 2^-key_precision_bits on the smallest lattice.
+  int log2n = 30;
+  for (const StreamConfig::Lattice& l : model_.lattices()) {
+    int b = 0;
+    while ((1 << b) < l.n) ++b;
+    log2n = std::min(log2n, b);
+  }
   KeyCoding coding;
   coding.modeled = false;
-  coding.pos_shift = std::max(0, kHeightFracBits - options_.key_precision_bits + config_.grid_log2() + 1);
+  coding.pos_shift = std::max(0, kHeightFracBits - options_.key_precision_bits + log2n + 1);
   coding.vel_shift = std::max(0, coding.pos_shift - options_.key_velocity_extra_bits);
   const auto& modes = model_.key_modes();
   coding.coefficients.resize(modes.size());
@@ -281,11 +286,10 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predic
   frame->reconstruction.complete = true;
   to_float(fields_, config_, frame->reconstruction);
 
-  const int n = model_.n();
   const bool explicit_key = key && !key->modeled;
   BodyLayout layout;
   layout.spectral_items = explicit_key ? static_cast<std::uint32_t>(model_.key_modes().size()) : 0;
-  layout.samples = static_cast<std::uint32_t>(n) * n;
+  layout.samples = static_cast<std::uint32_t>(model_.samples());
   layout.normals = config_.normals;
   layout.choppy = config_.choppy;
   ChunkHeader proto;
@@ -293,13 +297,14 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predic
   proto.modeled = key && key->modeled;
   proto.normals = config_.normals;
   proto.choppy = config_.choppy;
+  proto.cascaded = !config_.cascades.empty();
   proto.scene_tag = scenes_.at(tick)->tag;
   proto.pos_shift = static_cast<std::uint8_t>(explicit_key ? key->pos_shift : 0);
   proto.vel_shift = static_cast<std::uint8_t>(explicit_key ? key->vel_shift : 0);
   static const std::vector<KeyCoefficient> kNoCoefficients;
   chunk_frame(*frame, layout, proto, explicit_key ? key->coefficients : kNoCoefficients, corr);
 
-  if (!corr.height.empty()) model_.add_correction(predicted, height_correction_field(n, corr.height));
+  if (!corr.height.empty()) model_.add_correction(predicted, height_correction_field(model_.samples(), corr.height));
   // Deltas of one tick from different baselines often land on the same state (without
   // corrections, advancing is path-independent): one id for one state lets later deltas from
   // either be encoded once for every client.

@@ -26,8 +26,8 @@ void apply_corrections(SampleFields& f, const Corrections& c) {
   }
 }
 
-std::vector<std::int64_t> height_correction_field(int n, const std::vector<Correction>& height) {
-  std::vector<std::int64_t> field(static_cast<std::size_t>(n) * n, 0);
+std::vector<std::int64_t> height_correction_field(std::size_t samples, const std::vector<Correction>& height) {
+  std::vector<std::int64_t> field(samples, 0);
   for (const Correction& k : height) field[k.pos] = wshl(k.value, kHeightQuantumShift);
   return field;
 }

@@ -31,7 +31,7 @@ struct ReconstructedFrame {
 void apply_corrections(SampleFields& fields, const Corrections& corrections);
 
 // The n x n spatial field (height units) of a frame's height corrections.
-std::vector<std::int64_t> height_correction_field(int n, const std::vector<Correction>& height);
+std::vector<std::int64_t> height_correction_field(std::size_t samples, const std::vector<Correction>& height);
 
 // State of a key: X(t) = x << pos_shift and X(t-1) = X(t) - (v << vel_shift) on the key modes, 0
 // elsewhere, conjugate partners filled in. `coefficients` is in key_modes() order.

@@ -29,55 +29,59 @@ float to_binary32(std::int64_t v) { return static_cast<float>(static_cast<double
 }  // namespace
 
 ModalModel::ModalModel(const StreamConfig& config)
-    : n_(require_valid(config).grid),
-      log2n_(config.grid_log2()),
+    : lattices_(require_valid(config).lattices()),
+      samples_(config.samples()),
       normals_(config.normals),
-      choppy_(config.choppy),
-      patch_x_m_(config.patch_x_m),
-      patch_z_m_(config.patch_z_m),
-      fft_(config.grid) {
-  const int n = n_, hc = n / 2 + 1;
+      choppy_(config.choppy) {
   const double dt = config.dt_s();  // one tick step: deltas advance (tick - baseline) steps
-  a_.resize(static_cast<std::size_t>(n) * hc);
-  for (int r = 0; r < n; ++r) {
-    const double kz = kTwoPi * signed_index(r, n) / config.patch_z_m;
-    for (int c = 0; c < hc; ++c) {
-      const double kx = kTwoPi * signed_index(c, n) / config.patch_x_m;
-      const double k = std::sqrt(kx * kx + kz * kz);
-      const double w = det_angular_frequency(k, config.gravity_mps2, config.depth_m);
-      a_[r * hc + c] = to_fixed(2.0 * det_cos(w * dt), kRecurrenceBits);
-    }
-  }
   // d/dx in spectral space is i kx; the factor converts height units per metre to slope units.
   const double factor = (static_cast<double>(config.height_step_m) / 65536.0) /
                         (static_cast<double>(config.slope_step) / 4096.0);
   disp_factor_ = (static_cast<double>(config.height_step_m) / 65536.0) / (static_cast<double>(config.disp_step_m) / 65536.0);
   jac_factor_ = factor;
-  kx_.assign(hc, 0.0f);
-  kz_.assign(n, 0.0f);
-  if (normals_) {
-    for (int c = 0; c < n / 2; ++c) kx_[c] = static_cast<float>(kTwoPi * c / config.patch_x_m * factor);
-    for (int r = 0; r < n; ++r)
-      if (r != n / 2) kz_[r] = static_cast<float>(kTwoPi * signed_index(r, n) / config.patch_z_m * factor);
-  }
-  for (int r = 0; r < n; ++r) {
-    if (r == n / 2) continue;
-    for (int c = 0; c < n / 2; ++c) {
-      if (c == 0 && !(r >= 1 && r < n / 2)) continue;
-      key_modes_.push_back(r * hc + c);
+  std::size_t largest = 0;
+  for (const StreamConfig::Lattice& l : lattices_) {
+    const int n = l.n, hc = n / 2 + 1;
+    for (int r = 0; r < n; ++r) {
+      const double kz = kTwoPi * signed_index(r, n) / l.patch_z_m;
+      for (int c = 0; c < hc; ++c) {
+        const double kx = kTwoPi * signed_index(c, n) / l.patch_x_m;
+        const double k = std::sqrt(kx * kx + kz * kz);
+        const double w = det_angular_frequency(k, config.gravity_mps2, config.depth_m);
+        a_.push_back(to_fixed(2.0 * det_cos(w * dt), kRecurrenceBits));
+      }
     }
+    auto grid = std::make_unique<Grid>(n);
+    grid->kx.assign(hc, 0.0f);
+    grid->kz.assign(n, 0.0f);
+    if (normals_) {
+      for (int c = 0; c < n / 2; ++c) grid->kx[c] = static_cast<float>(kTwoPi * c / l.patch_x_m * factor);
+      for (int r = 0; r < n; ++r)
+        if (r != n / 2) grid->kz[r] = static_cast<float>(kTwoPi * signed_index(r, n) / l.patch_z_m * factor);
+    }
+    for (int r = 0; r < n; ++r) {
+      if (r == n / 2) continue;
+      for (int c = 0; c < n / 2; ++c) {
+        if (c == 0 && !(r >= 1 && r < n / 2)) continue;
+        key_modes_.push_back(static_cast<std::int32_t>(l.modes_at) + r * hc + c);
+      }
+    }
+    grid->pair_scratch.push_back(std::make_unique<PairScratch>(n));
+    grids_.push_back(std::move(grid));
+    largest = std::max(largest, static_cast<std::size_t>(n) * n);
   }
-  const std::size_t nn = static_cast<std::size_t>(n) * n;
-  z_re_.resize(nn);
-  z_im_.resize(nn);
-  pair_scratch_.push_back(std::make_unique<PairScratch>(n));
+  z_re_.resize(largest);
+  z_im_.resize(largest);
 }
 
 void ModalModel::set_parallel(ParallelFor parallel) {
   parallel_ = std::move(parallel);
   const std::size_t slots = parallel_ ? 4 : 1;  // one per pair: at most eight channels
-  while (pair_scratch_.size() < slots) pair_scratch_.push_back(std::make_unique<PairScratch>(n_));
-  pair_scratch_.resize(slots);
+  for (std::size_t g = 0; g < grids_.size(); ++g) {
+    auto& scratch = grids_[g]->pair_scratch;
+    while (scratch.size() < slots) scratch.push_back(std::make_unique<PairScratch>(lattices_[g].n));
+    scratch.resize(slots);
+  }
 }
 
 ModalState ModalModel::zero_state() const {
@@ -130,23 +134,25 @@ void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t 
 }
 
 void ModalModel::build_choppy_factors(double choppiness) {
-  const int n = n_, hc = n / 2 + 1;
-  const std::size_t m = static_cast<std::size_t>(n) * hc;
+  const std::size_t m = a_.size();
   if (ratio_[0].empty()) {
     for (auto& r : ratio_) r.assign(m, 0.0);
-    for (int r = 0; r < n; ++r) {
-      if (r == n / 2) continue;
-      const double kz = kTwoPi * signed_index(r, n) / patch_z_m_;
-      for (int c = 0; c < n / 2; ++c) {
-        const double kx = kTwoPi * c / patch_x_m_;
-        const double k = std::sqrt(kx * kx + kz * kz);
-        if (k == 0.0) continue;
-        const std::size_t at = static_cast<std::size_t>(r) * hc + c;
-        ratio_[0][at] = kx / k;
-        ratio_[1][at] = kz / k;
-        ratio_[2][at] = (kx * kx) / k;
-        ratio_[3][at] = (kz * kz) / k;
-        ratio_[4][at] = (kx * kz) / k;
+    for (const StreamConfig::Lattice& l : lattices_) {
+      const int n = l.n, hc = n / 2 + 1;
+      for (int r = 0; r < n; ++r) {
+        if (r == n / 2) continue;
+        const double kz = kTwoPi * signed_index(r, n) / l.patch_z_m;
+        for (int c = 0; c < n / 2; ++c) {
+          const double kx = kTwoPi * c / l.patch_x_m;
+          const double k = std::sqrt(kx * kx + kz * kz);
+          if (k == 0.0) continue;
+          const std::size_t at = l.modes_at + static_cast<std::size_t>(r) * hc + c;
+          ratio_[0][at] = kx / k;
+          ratio_[1][at] = kz / k;
+          ratio_[2][at] = (kx * kx) / k;
+          ratio_[3][at] = (kz * kz) / k;
+          ratio_[4][at] = (kx * kz) / k;
+        }
       }
     }
   }
@@ -158,41 +164,40 @@ void ModalModel::build_choppy_factors(double choppiness) {
   factor_choppiness_ = choppiness;
 }
 
-void ModalModel::synthesize_pair(PairScratch& scratch, const FloatSpectrum& x, ChannelSource a, ChannelSource b,
-                                 std::vector<std::int64_t>& a_out, std::vector<std::int64_t>* b_out) const {
-  const std::size_t nn = static_cast<std::size_t>(n_) * n_;
-  const double scale = std::ldexp(1.0, -2 * log2n_);
+void ModalModel::synthesize_pair(PairScratch& scratch, const FloatSpectrum& x, ChannelSource a,
+                                 ChannelSource b, std::int64_t* a_out, std::int64_t* b_out) const {
+  const std::size_t nn = static_cast<std::size_t>(x.n) * x.n;
+  int log2n = 0;
+  while ((1 << log2n) < x.n) ++log2n;
+  const double scale = std::ldexp(1.0, -2 * log2n);
   pack_channel_pair(x, a, b, scratch.re.data(), scratch.im.data());
   scratch.fft.inverse_2d(scratch.re.data(), scratch.im.data());
-  a_out.resize(nn);
-  round_fields(scratch.re.data(), nn, scale, a_out.data());
-  if (!b_out) return;
-  b_out->resize(nn);
-  round_fields(scratch.im.data(), nn, scale, b_out->data());
+  round_fields(scratch.re.data(), nn, scale, a_out);
+  if (b_out) round_fields(scratch.im.data(), nn, scale, b_out);
 }
 
 void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out) {
-  const std::size_t m = static_cast<std::size_t>(half_size());
-  const std::size_t nn = static_cast<std::size_t>(n_) * n_;
+  const std::size_t m = a_.size();
+  const std::size_t nn = samples_;
   h_re_.resize(m);
   h_im_.resize(m);
   for (std::size_t h = 0; h < m; ++h) {
     h_re_[h] = to_binary32(cur.re[h]);
     h_im_[h] = to_binary32(cur.im[h]);
   }
-  const FloatSpectrum x{n_, h_re_.data(), h_im_.data(), kx_.data(), kz_.data()};
   // The channels in order - height, [slope_x, slope_z], [disp_x, disp_z, disp_xx, disp_zz,
-  // disp_xz] - synthesized in consecutive pairs (CODEC.md 7.2).
+  // disp_xz] - synthesized in consecutive pairs (CODEC.md 7.2), lattice by lattice.
   struct Channel {
-    ChannelSource source;
+    ChannelKind kind;
+    const float* factor;  // per mode of the whole stream; null for height and slopes
     std::vector<std::int64_t>* out;
   };
   Channel channels[8];
   int count = 0;
-  channels[count++] = {{ChannelKind::height}, &out.height};
+  channels[count++] = {ChannelKind::height, nullptr, &out.height};
   if (normals_) {
-    channels[count++] = {{ChannelKind::slope_x}, &out.slope_x};
-    channels[count++] = {{ChannelKind::slope_z}, &out.slope_z};
+    channels[count++] = {ChannelKind::slope_x, nullptr, &out.slope_x};
+    channels[count++] = {ChannelKind::slope_z, nullptr, &out.slope_z};
   } else {
     out.slope_x.clear();
     out.slope_z.clear();
@@ -204,42 +209,59 @@ void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFi
   } else if (choppy_) {
     if (choppiness != factor_choppiness_) build_choppy_factors(choppiness);
     for (int j = 0; j < 5; ++j)
-      channels[count++] = {{j < 2 ? ChannelKind::disp : ChannelKind::derivative, choppy_factor_[j].data()}, choppy_out[j]};
+      channels[count++] = {j < 2 ? ChannelKind::disp : ChannelKind::derivative, choppy_factor_[j].data(), choppy_out[j]};
   } else {
     for (auto* f : choppy_out) f->clear();
   }
-  const bool spread = pair_scratch_.size() > 1;
-  run_jobs(spread ? parallel_ : ParallelFor{}, (count + 1) / 2, [&](int pair) {
-    const Channel& a = channels[2 * pair];
-    const Channel* b = 2 * pair + 1 < count ? &channels[2 * pair + 1] : nullptr;
-    synthesize_pair(*pair_scratch_[spread ? pair : 0], x, a.source, b ? b->source : ChannelSource{}, *a.out,
-                    b ? b->out : nullptr);
-  });
+  for (int i = 0; i < count; ++i) channels[i].out->resize(nn);
+  for (std::size_t g = 0; g < grids_.size(); ++g) {
+    const StreamConfig::Lattice& l = lattices_[g];
+    Grid& grid = *grids_[g];
+    const FloatSpectrum x{l.n, h_re_.data() + l.modes_at, h_im_.data() + l.modes_at, grid.kx.data(), grid.kz.data()};
+    const auto source = [&](const Channel& c) {
+      return ChannelSource{c.kind, c.factor ? c.factor + l.modes_at : nullptr};
+    };
+    const bool spread = grid.pair_scratch.size() > 1;
+    run_jobs(spread ? parallel_ : ParallelFor{}, (count + 1) / 2, [&](int pair) {
+      const Channel& a = channels[2 * pair];
+      const Channel* b = 2 * pair + 1 < count ? &channels[2 * pair + 1] : nullptr;
+      synthesize_pair(*grid.pair_scratch[spread ? pair : 0], x, source(a), b ? source(*b) : ChannelSource{},
+                      a.out->data() + l.samples_at, b ? b->out->data() + l.samples_at : nullptr);
+    });
+  }
 }
 
 void ModalModel::spectrum_of(const std::int64_t* field, HalfSpectrum& out) {
-  const int n = n_, hc = n / 2 + 1;
+  out.re.resize(a_.size());
+  out.im.resize(a_.size());
+  for (std::size_t g = 0; g < grids_.size(); ++g) lattice_spectrum(g, field, out);
+}
+
+void ModalModel::lattice_spectrum(std::size_t g, const std::int64_t* all_fields, HalfSpectrum& all) {
+  const StreamConfig::Lattice& l = lattices_[g];
+  const int n = l.n, hc = n / 2 + 1;
   const std::size_t nn = static_cast<std::size_t>(n) * n;
+  const std::int64_t* field = all_fields + l.samples_at;
   for (std::size_t i = 0; i < nn; ++i) {
     z_re_[i] = field[i];
     z_im_[i] = 0;
   }
-  fft_.forward_2d(z_re_.data(), z_im_.data());
-  out.re.resize(static_cast<std::size_t>(half_size()));
-  out.im.resize(out.re.size());
+  grids_[g]->fft.forward_2d(z_re_.data(), z_im_.data());
+  std::int64_t* re = all.re.data() + l.modes_at;
+  std::int64_t* im = all.im.data() + l.modes_at;
   for (int r = 0; r < n; ++r)
     for (int c = 0; c < hc; ++c) {
-      out.re[r * hc + c] = z_re_[static_cast<std::size_t>(r) * n + c];
-      out.im[r * hc + c] = z_im_[static_cast<std::size_t>(r) * n + c];
+      re[r * hc + c] = z_re_[static_cast<std::size_t>(r) * n + c];
+      im[r * hc + c] = z_im_[static_cast<std::size_t>(r) * n + c];
     }
   // Columns kx = 0 and kx = n/2 hold both k and -k: take the rows up to n/2 as the truth.
   for (int c : {0, n / 2}) {
     for (int r = n / 2 + 1; r < n; ++r) {
-      out.re[r * hc + c] = out.re[(n - r) * hc + c];
-      out.im[r * hc + c] = -out.im[(n - r) * hc + c];
+      re[r * hc + c] = re[(n - r) * hc + c];
+      im[r * hc + c] = -im[(n - r) * hc + c];
     }
-    out.im[c] = 0;
-    out.im[(n / 2) * hc + c] = 0;
+    im[c] = 0;
+    im[(n / 2) * hc + c] = 0;
   }
 }
 
@@ -255,10 +277,14 @@ void ModalModel::add_correction(ModalState& s, const std::vector<std::int64_t>& 
 }
 
 void ModalModel::mirror_key_column(HalfSpectrum& s) const {
-  const int n = n_, hc = n / 2 + 1;
-  for (int r = n / 2 + 1; r < n; ++r) {
-    s.re[r * hc] = s.re[(n - r) * hc];
-    s.im[r * hc] = -s.im[(n - r) * hc];
+  for (const StreamConfig::Lattice& l : lattices_) {
+    const int n = l.n, hc = n / 2 + 1;
+    std::int64_t* re = s.re.data() + l.modes_at;
+    std::int64_t* im = s.im.data() + l.modes_at;
+    for (int r = n / 2 + 1; r < n; ++r) {
+      re[r * hc] = re[(n - r) * hc];
+      im[r * hc] = -im[(n - r) * hc];
+    }
   }
 }
 

@@ -53,9 +53,12 @@ class ModalModel {
  public:
   explicit ModalModel(const StreamConfig& config);
 
-  int n() const { return n_; }
-  int half_cols() const { return n_ / 2 + 1; }
-  int half_size() const { return n_ * (n_ / 2 + 1); }
+  // The stream's lattices (StreamConfig::lattices): one, or one per cascade, their modes and
+  // samples one after the other in every state and field.
+  const std::vector<StreamConfig::Lattice>& lattices() const { return lattices_; }
+  int n() const { return lattices_.front().n; }  // the first lattice's
+  std::size_t samples() const { return samples_; }
+  int half_size() const { return static_cast<int>(a_.size()); }
   bool normals() const { return normals_; }
   bool choppy() const { return choppy_; }
 
@@ -76,7 +79,7 @@ class ModalModel {
   // spectrum is `cur`; `choppiness` is the lambda of the scene in force at the frame's tick.
   void synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out);
 
-  // Half-spectrum of a real field (n x n, units as heights), made exactly Hermitian.
+  // Half-spectrum of a real field (every lattice's samples, units as heights), made exactly Hermitian.
   void spectrum_of(const std::int64_t* field, HalfSpectrum& out);
 
   // Adds the spectrum of a spatial height correction to both X(t-1) and X(t): shifts the
@@ -86,28 +89,27 @@ class ModalModel {
   // Key-frame modes: the kx >= 0 half minus DC, the Nyquist row and column and the redundant
   // kx = 0 partners; indices into a HalfSpectrum, in transmission order.
   const std::vector<std::int32_t>& key_modes() const { return key_modes_; }
-  // Fills the kx = 0 partners (rows n/2+1..n-1) from their conjugates after a key is loaded.
+  // Fills the kx = 0 partners (rows n/2+1..n-1 of each lattice) from their conjugates after a key is loaded.
   void mirror_key_column(HalfSpectrum& s) const;
 
   std::int64_t recurrence_coef(int index) const { return a_[index]; }
 
  private:
   void build_choppy_factors(double choppiness);
-  // One inverse FFT of two channels packed as A + iB (channel_pair.hpp), rounded into their
-  // fields (b_out null when B is none).
+  // One inverse FFT of two channels packed as A + iB (channel_pair.hpp) of one lattice, rounded
+  // into its slice of their fields (b_out null when B is none).
   struct PairScratch;
   void synthesize_pair(PairScratch& scratch, const FloatSpectrum& x, ChannelSource a, ChannelSource b,
-                       std::vector<std::int64_t>& a_out, std::vector<std::int64_t>* b_out) const;
+                       std::int64_t* a_out, std::int64_t* b_out) const;
+  // spectrum_of() for lattice g: its samples of `field` into its modes of `out`.
+  void lattice_spectrum(std::size_t g, const std::int64_t* field, HalfSpectrum& out);
 
-  int n_;
-  int log2n_;
+  std::vector<StreamConfig::Lattice> lattices_;
+  std::size_t samples_ = 0;
   bool normals_;
   bool choppy_;
-  double patch_x_m_, patch_z_m_;
   double disp_factor_ = 0.0, jac_factor_ = 0.0;  // height units to displacement / slope units
   std::vector<std::int64_t> a_;  // Q48, per half-spectrum mode
-  std::vector<float> kx_;        // i kx to slope units per column c in [0, n/2]
-  std::vector<float> kz_;        // likewise per row r in [0, n)
   std::vector<std::int32_t> key_modes_;
   // Choppy: kx/k, kz/k, kx^2/k, kz^2/k, kx kz/k per half-spectrum mode (0 at DC and Nyquist), and
   // their float factors for the choppiness they were last built for.
@@ -115,16 +117,22 @@ class ModalModel {
   std::vector<float> choppy_factor_[5];
   double factor_choppiness_ = -1.0;
   std::vector<float> h_re_, h_im_;  // X(t) in binary32
-  FixedFft fft_;                    // spectrum_of: corrections enter the integer state exactly
-  std::vector<std::int64_t> z_re_, z_im_;  // n x n scratch
+  std::vector<std::int64_t> z_re_, z_im_;  // the largest lattice's n x n scratch
   // What one transform of synthesis works in: its FFT's blocks and the n x n complex array.
   struct PairScratch {
     explicit PairScratch(int n) : fft(n), re(static_cast<std::size_t>(n) * n), im(re.size()) {}
     FloatFft fft;
     std::vector<float> re, im;
   };
+  // Per lattice: its slope factors per column and row (i kx, i kz to slope units), and transforms.
+  struct Grid {
+    explicit Grid(int n) : fft(n) {}
+    std::vector<float> kx, kz;
+    FixedFft fft;  // spectrum_of: corrections enter the integer state exactly
+    std::vector<std::unique_ptr<PairScratch>> pair_scratch;  // one, or one per pair with parallel_
+  };
+  std::vector<std::unique_ptr<Grid>> grids_;  // as lattices_
   ParallelFor parallel_;
-  std::vector<std::unique_ptr<PairScratch>> pair_scratch_;  // one, or one per pair with parallel_
 };
 
 }  // namespace ocean::codec

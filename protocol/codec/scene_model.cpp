@@ -2,6 +2,7 @@
 // per-tick evaluation h(k, t) = a e^{-iwt} + b e^{+iwt}, as the sim's band evaluator does it.
 #include "scene_model.hpp"
 
+#include "cascade_scene_model.hpp"
 #include "det_math.hpp"
 #include "scene_amplitude.hpp"
 #include "scene_spectrum.hpp"
@@ -21,7 +22,7 @@ const SceneModelParams& require_valid(const StreamConfig& stream, const SceneMod
   if (!err.empty()) throw std::invalid_argument("scene model: stream config: " + err);
   err = validate(scene);
   if (!err.empty()) throw std::invalid_argument("scene model: scene: " + err);
-  if (stream.grid > scene.size_x || stream.grid > scene.size_z)
+  if (stream.cascades.empty() && (stream.grid > scene.size_x || stream.grid > scene.size_z))
     throw std::invalid_argument("scene model: stream grid " + std::to_string(stream.grid) +
                                 " exceeds the scene's size " + std::to_string(scene.size_x) + " x " +
                                 std::to_string(scene.size_z));
@@ -45,24 +46,38 @@ double tick_time_s(std::int64_t tick, int rate_hz) {
 }
 
 SceneModel::SceneModel(const StreamConfig& stream, const SceneModelParams& scene)
-    : scene_(require_valid(stream, scene)), n_(stream.grid), rate_hz_(stream.effective_tick_rate_hz()) {
-  const SceneSpectrum spectrum(scene_);
-  const int n = n_, hc = n / 2 + 1;
+    : scene_(require_valid(stream, scene)), rate_hz_(stream.effective_tick_rate_hz()) {
   const double unit = static_cast<double>(stream.height_step_m) / 65536.0;
+  const std::vector<StreamConfig::Lattice> lattices = stream.lattices();
+  for (std::size_t i = 0; i < lattices.size(); ++i) {
+    const StreamConfig::Lattice& l = lattices[i];
+    // A cascade's waves are its own scene's (CODEC.md 7.7); one lattice is the scene itself.
+    const SceneModelParams own =
+        stream.cascades.empty() ? scene_ : cascade_scene_model(scene_, stream.cascades[i], static_cast<int>(i));
+    add_lattice(l, own, unit, stream.gravity_mps2, stream.depth_m);
+  }
+  total_modes_ = stream.modes();
+}
+
+void SceneModel::add_lattice(const StreamConfig::Lattice& l, const SceneModelParams& scene, double unit,
+                             double gravity_mps2, double depth_m) {
+  const SceneSpectrum spectrum(scene);
+  const int n = l.n, hc = n / 2 + 1;
   const double scale = static_cast<double>(n) * static_cast<double>(n) / unit;
+  lattices_.push_back({n, l.modes_at});
   for (int r = 0; r < n; ++r) {
     const int kz = signed_index(r, n);
     if (r == n / 2) continue;  // Nyquist row
-    const double wz = kTwoPi * kz / stream.patch_z_m;
+    const double wz = kTwoPi * kz / l.patch_z_m;
     for (int c = 0; c < n / 2; ++c) {  // column n/2 is the Nyquist column
       if (c == 0 && kz <= 0) continue;  // DC, and the kx = 0 partners mirrored in state_at
-      const double wx = kTwoPi * c / stream.patch_x_m;
-      const SceneComplex a = scene_initial_amplitude(scene_, spectrum, c, kz);
-      const SceneComplex h = scene_initial_amplitude(scene_, spectrum, -c, -kz);
+      const double wx = kTwoPi * c / l.patch_x_m;
+      const SceneComplex a = scene_initial_amplitude(scene, spectrum, c, kz);
+      const SceneComplex h = scene_initial_amplitude(scene, spectrum, -c, -kz);
       const SceneComplex b{h.re, -h.im};
       Mode m;
-      m.index = r * hc + c;
-      m.omega = det_angular_frequency(std::sqrt(wx * wx + wz * wz), stream.gravity_mps2, stream.depth_m);
+      m.index = static_cast<std::int32_t>(l.modes_at) + r * hc + c;
+      m.omega = det_angular_frequency(std::sqrt(wx * wx + wz * wz), gravity_mps2, depth_m);
       m.sum_re = (a.re + b.re) * scale;
       m.sum_im = (a.im + b.im) * scale;
       m.diff_re = (a.re - b.re) * scale;
@@ -78,8 +93,7 @@ SceneModel::SceneModel(const StreamConfig& stream, const SceneModelParams& scene
 }
 
 void SceneModel::state_at(std::uint64_t tick, ModalState& out) const {
-  const int n = n_, hc = n / 2 + 1;
-  const std::size_t size = static_cast<std::size_t>(n) * hc;
+  const std::size_t size = total_modes_;
   for (HalfSpectrum* s : {&out.cur, &out.prev}) {
     s->re.assign(size, 0);
     s->im.assign(size, 0);
@@ -110,11 +124,14 @@ void SceneModel::state_at(std::uint64_t tick, ModalState& out) const {
     }
   }
   // Column kx = 0 holds k and -k: rows n/2+1..n-1 are exactly the conjugates of rows n - r.
-  for (HalfSpectrum* s : {&out.cur, &out.prev})
-    for (int r = n / 2 + 1; r < n; ++r) {
-      s->re[static_cast<std::size_t>(r) * hc] = s->re[static_cast<std::size_t>(n - r) * hc];
-      s->im[static_cast<std::size_t>(r) * hc] = -s->im[static_cast<std::size_t>(n - r) * hc];
-    }
+  for (const LatticeAt& l : lattices_) {
+    const std::size_t n = static_cast<std::size_t>(l.n), hc = n / 2 + 1;
+    for (HalfSpectrum* s : {&out.cur, &out.prev})
+      for (std::size_t r = n / 2 + 1; r < n; ++r) {
+        s->re[l.modes_at + r * hc] = s->re[l.modes_at + (n - r) * hc];
+        s->im[l.modes_at + r * hc] = -s->im[l.modes_at + (n - r) * hc];
+      }
+  }
 }
 
 }  // namespace ocean::codec

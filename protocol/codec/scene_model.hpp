@@ -21,7 +21,8 @@ double tick_time_s(std::int64_t tick, int rate_hz);
 
 class SceneModel {
  public:
-  // Per-mode tables of the stream's half spectrum (h0(k), conj h0(-k), w) built once. Throws
+  // Per-mode tables of the stream's half spectrum (h0(k), conj h0(-k), w) built once, for each of
+  // its lattices from that cascade's scene (CODEC.md 7.7). Throws
   // std::invalid_argument when the stream grid exceeds size_x/size_z, the stream's patch, gravity
   // or depth differ from the scene's, or the values are unusable (invalid, or a mode too large
   // for int64 units).
@@ -45,10 +46,18 @@ class SceneModel {
     double sum_re, sum_im, diff_re, diff_im;
   };
 
+  struct LatticeAt {
+    int n;
+    std::size_t modes_at;
+  };
+  void add_lattice(const StreamConfig::Lattice& lattice, const SceneModelParams& scene, double unit,
+                   double gravity_mps2, double depth_m);
+
   SceneModelParams scene_;
-  int n_;
   int rate_hz_;
-  std::vector<Mode> modes_;
+  std::vector<Mode> modes_;  // every lattice's, their indices into the stream's half spectrum
+  std::vector<LatticeAt> lattices_;
+  std::size_t total_modes_ = 0;
 };
 
 }  // namespace ocean::codec

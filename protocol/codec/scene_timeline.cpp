@@ -20,7 +20,7 @@ SceneTimeline& SceneTimeline::operator=(SceneTimeline&&) noexcept = default;
 SceneTimeline::~SceneTimeline() = default;
 
 void SceneTimeline::add(Tick from, std::uint8_t tag, const SceneModelParams& scene) {
-  if (scene.size_x < config_.grid || scene.size_z < config_.grid)
+  if (config_.cascades.empty() && (scene.size_x < config_.grid || scene.size_z < config_.grid))
     throw std::invalid_argument("SceneTimeline::add: the scene's grid " + std::to_string(scene.size_x) + "x" +
                                 std::to_string(scene.size_z) + " is smaller than the stream's " +
                                 std::to_string(config_.grid));

@@ -26,11 +26,35 @@ int StreamConfig::grid_log2() const {
   return b;
 }
 
+std::vector<StreamConfig::Lattice> StreamConfig::lattices() const {
+  std::vector<Lattice> out;
+  std::size_t modes_at = 0, samples_at = 0;
+  const auto add = [&](int n, double scale, WaveBand band) {
+    out.push_back({n, patch_x_m * scale, patch_z_m * scale, band, modes_at, samples_at});
+    modes_at += static_cast<std::size_t>(n) * (n / 2 + 1);
+    samples_at += static_cast<std::size_t>(n) * n;
+  };
+  if (cascades.empty()) add(grid, 1.0, {});
+  for (const Cascade& c : cascades) add(c.grid, static_cast<double>(c.patch_scale), c.band);
+  return out;
+}
+
+std::size_t StreamConfig::samples() const {
+  const auto all = lattices();
+  return all.back().samples_at + static_cast<std::size_t>(all.back().n) * all.back().n;
+}
+
+std::size_t StreamConfig::modes() const {
+  const auto all = lattices();
+  return all.back().modes_at + static_cast<std::size_t>(all.back().n) * (all.back().n / 2 + 1);
+}
+
 bool operator==(const StreamConfig& a, const StreamConfig& b) {
   return a.profile_id == b.profile_id && a.grid == b.grid && a.patch_x_m == b.patch_x_m &&
          a.patch_z_m == b.patch_z_m && a.gravity_mps2 == b.gravity_mps2 && a.depth_m == b.depth_m &&
          a.rate_hz == b.rate_hz && a.effective_tick_rate_hz() == b.effective_tick_rate_hz() && a.height_step_m == b.height_step_m && a.slope_step == b.slope_step &&
-         a.disp_step_m == b.disp_step_m && a.normals == b.normals && a.choppy == b.choppy;
+         a.disp_step_m == b.disp_step_m && a.normals == b.normals && a.choppy == b.choppy &&
+         a.cascades == b.cascades;
 }
 
 std::string validate(const StreamConfig& c) {
@@ -56,6 +80,20 @@ std::string validate(const StreamConfig& c) {
     m << "slope_step = " << c.slope_step << ": must be in [1e-5, 0.5] when slopes or choppy channels are streamed";
   else if (c.choppy && !(c.disp_step_m >= 1e-4f && c.disp_step_m <= 1.0f))
     m << "disp_step_m = " << c.disp_step_m << ": must be in [1e-4, 1] when choppy channels are streamed";
+  else if (c.cascades.size() > kMaxCascades)
+    m << "cascades: " << c.cascades.size() << ", at most " << kMaxCascades;
+  else if (!c.cascades.empty() && c.cascades[0].grid != c.grid)
+    m << "grid = " << c.grid << ": must be the first cascade's, " << c.cascades[0].grid;
+  for (std::size_t i = 0; i < c.cascades.size() && m.str().empty(); ++i) {
+    const Cascade& cascade = c.cascades[i];
+    const std::string problem = cascade_problem(cascade);
+    if (!problem.empty())
+      m << "cascade " << i << ": " << problem;
+    else if (cascade.grid > 256)
+      m << "cascade " << i << ": grid = " << cascade.grid << ": must be at most 256";
+    else if (c.patch_x_m * cascade.patch_scale > 1e6 || c.patch_z_m * cascade.patch_scale > 1e6)
+      m << "cascade " << i << ": its patch, " << cascade.patch_scale << " x the stream's, exceeds 1e6 metres";
+  }
   return m.str();
 }
 

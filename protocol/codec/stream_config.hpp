@@ -2,12 +2,17 @@
 // mirroring the server's Welcome.StreamParams. Encoder and decoder must be built from equal values.
 #pragma once
 
+#include "common/cascade.hpp"
 #include "profile.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace ocean::codec {
+
+inline constexpr std::size_t kMaxCascades = 4;
 
 struct StreamConfig {
   std::uint8_t profile_id = 1;
@@ -28,6 +33,22 @@ struct StreamConfig {
   // Stream the horizontal displacement and its derivatives (the Jacobian's inputs, bounded by
   // slope_step / 2): codec version 3.
   bool choppy = false;
+  // The stream's lattices (codec version 5, CODEC.md 7.8): empty for one, `grid` samples over the
+  // patch above with every wave; else each cascade's, over the patch above times its scale, with
+  // `grid` the first cascade's. A stream's state, fields and items are its lattices' in this order.
+  std::vector<Cascade> cascades;
+
+  // One lattice as the codec uses it.
+  struct Lattice {
+    int n;
+    double patch_x_m, patch_z_m;
+    WaveBand band;
+    std::size_t modes_at;    // where its half spectrum starts in the stream's
+    std::size_t samples_at;  // where its samples start in the stream's fields
+  };
+  std::vector<Lattice> lattices() const;
+  std::size_t samples() const;  // every lattice's n^2
+  std::size_t modes() const;    // every lattice's n (n/2 + 1)
 
   // The profile's grid/rate/steps/channels with the scene's patch and physics.
   // depth_m as on the wire: 0 for deep water (scene_wire::wire_depth converts the sim's infinity).
@@ -52,6 +73,7 @@ void copy_profile_fields(const From& from, To& to) {
   to.disp_step_m = from.disp_step_m;
   to.normals = from.normals;
   to.choppy = from.choppy;
+  to.cascades.assign(from.cascades.begin(), from.cascades.end());
 }
 
 // Empty if usable, else a message naming the first bad field, its value and the allowed range.

@@ -19,8 +19,16 @@ FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*>
     : schedule_(std::move(schedule)),
       profiles_(std::move(profiles)),
       scheduled_scene_(&schedule_.base()),
-      ocean_(std::make_unique<sim::Ocean>(*scheduled_scene_)),
-      pool_(std::make_shared<BufferPool>()) {}
+      pool_(std::make_shared<BufferPool>()) {
+  use_scene(*scheduled_scene_);
+}
+
+void FrameProducer::use_scene(const sim::SceneParams& scene) {
+  ocean_ = std::make_unique<sim::Ocean>(scene);
+  cascades_.clear();
+  for (const Profile* profile : profiles_)
+    cascades_.push_back(profile->cascades.empty() ? nullptr : std::make_unique<sim::CascadeSet>(scene, profile->cascades));
+}
 
 std::shared_ptr<TickFrames> FrameProducer::take_buffer() {
   std::unique_ptr<TickFrames> buffer;
@@ -44,12 +52,12 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
   scene_changed_ = false;
   if (&scheduled != scheduled_scene_) {
     scheduled_scene_ = &scheduled;
-    ocean_ = std::make_unique<sim::Ocean>(scheduled);
+    use_scene(scheduled);
     scene_changed_ = true;
   }
   if (!overrides_.empty() && overrides_.begin()->first <= tick) {
     const auto due = overrides_.upper_bound(tick);
-    ocean_ = std::make_unique<sim::Ocean>(std::prev(due)->second);
+    use_scene(std::prev(due)->second);
     overrides_.erase(overrides_.begin(), due);
     scene_changed_ = true;
   }
@@ -63,6 +71,10 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
   for (std::size_t i = 0; i < profiles_.size(); ++i) {
     const Profile& profile = *profiles_[i];
     result->frames[i].profile = &profile;
+    if (cascades_[i]) {
+      cascades_[i]->evaluate(time_s, result->frames[i].frame, sim::FrameRequest{profile.normals, profile.choppy});
+      continue;
+    }
     ocean_->evaluate_band(time_s, profile.grid, profile.grid, result->frames[i].frame,
                           sim::FrameRequest{profile.normals, profile.choppy});
   }

@@ -3,6 +3,7 @@
 // the tick and its time are arguments, so it is tested like the simulation itself.
 #pragma once
 
+#include "cascade_set.hpp"
 #include "ocean.hpp"
 #include "scene_schedule.hpp"
 #include "tick_frames.hpp"
@@ -37,11 +38,16 @@ class FrameProducer {
   struct BufferPool;  // shared with every result's deleter, which returns the buffer to it
   std::shared_ptr<TickFrames> take_buffer();
 
+  void use_scene(const sim::SceneParams& scene);
+
   SceneSchedule schedule_;
   std::vector<const Profile*> profiles_;
   const sim::SceneParams* scheduled_scene_;  // the schedule entry last applied
   std::map<std::int64_t, sim::SceneParams> overrides_;  // by first tick
   std::unique_ptr<sim::Ocean> ocean_;
+  // Per offered profile, its cascades' Oceans (null for a profile without), rebuilt with every
+  // scene: a cascaded profile's frame is their frames one after the other, as its stream's fields.
+  std::vector<std::unique_ptr<sim::CascadeSet>> cascades_;
   std::shared_ptr<BufferPool> pool_;
   bool scene_changed_ = false;
 };

@@ -1,5 +1,7 @@
 #include "server_config.hpp"
 
+#include "cascade_scene.hpp"
+
 #include "config_options.hpp"
 #include "profile.hpp"
 
@@ -35,10 +37,17 @@ std::string validate_profiles(const ServerConfig& config) {
     if (!profile) return "--profiles: unknown profile '" + name + "' (known: " + known + ")";
     if (std::count(config.profiles.begin(), config.profiles.begin() + i, name) > 0)
       return "--profiles: profile '" + name + "' is listed twice";
-    if (profile->grid > sim_grid)
+    if (profile->cascades.empty() && profile->grid > sim_grid)  // cascades realize their own lattices
       return "--profiles: profile '" + name + "' streams a " + std::to_string(profile->grid) + "x" +
              std::to_string(profile->grid) + " grid, larger than the simulation (--size " +
              std::to_string(sim_grid) + "); raise --size or drop the profile";
+    for (std::size_t c = 0; c < profile->cascades.size(); ++c) {
+      try {
+        (void)sim::cascade_scene(config.scene, profile->cascades[c], static_cast<int>(c));
+      } catch (const sim::ParamError& e) {
+        return "--profiles: profile '" + name + "' cannot realize its " + e.what() + " with this --patch";
+      }
+    }
     if (config.tick_rate_hz % profile->rate_hz != 0)
       return "--tick-rate " + std::to_string(config.tick_rate_hz) + ": profile '" + name + "' streams at " +
              std::to_string(profile->rate_hz) + " Hz, so the tick rate must be a multiple of it";

@@ -9,6 +9,7 @@
 #include "profile_stream.hpp"
 #include "stream_wire.hpp"
 #include "scene_wire.hpp"
+#include "cascade_set.hpp"
 #include "ocean.hpp"
 #include "profile.hpp"
 
@@ -24,6 +25,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,15 +68,16 @@ codec::TruthView truth_of(const sim::Frame& f) {
   return {f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.disp_xx, f.disp_zz, f.disp_xz};
 }
 
-common::JsonWriter common_json(const Tally& t, const Profile& p, int n) {
+common::JsonWriter common_json(const Tally& t, const Profile& p, int n, std::size_t samples) {
   const double seconds = t.frames / p.rate_hz;
   const double kbps = t.bytes * 8.0 / seconds / 1000.0;
   common::JsonWriter json(common::JsonWriter::Style::compact);
   json.text("bench", "codec").text("profile", p.name).text("method", t.method);
   if (t.lag) json.integer("lag", t.lag);
   if (t.decode_threads) json.integer("decode_threads", t.decode_threads);
-  json.integer("grid", n).integer("rate_hz", p.rate_hz).number("frames", t.frames).number("kbps", kbps);
-  json.number("bits_per_sample", t.bytes * 8.0 / (t.frames * n * n)).number("max_err_m", t.max_err);
+  json.integer("grid", n).integer("samples", static_cast<std::int64_t>(samples));  // every cascade's
+  json.integer("rate_hz", p.rate_hz).number("frames", t.frames).number("kbps", kbps);
+  json.number("bits_per_sample", t.bytes * 8.0 / (t.frames * static_cast<double>(samples))).number("max_err_m", t.max_err);
   json.number("rms_err_m", std::sqrt(t.sum_sq / std::max(1.0, t.count))).number("max_slope_err", t.max_slope_err);
   json.number("height_step_m", p.height_step_m).number("slope_step", p.slope_step);
   json.number("encode_us", bench::median(t.enc_us)).number("decode_us", bench::median(t.dec_us));
@@ -152,10 +155,10 @@ struct Ours {
 
 // Prints one JSON line per method; returns how many of ours failed the goal (within the error
 // bound, at most half of delta_zstd's bitrate, decoded bit for bit as encoded).
-int print_results(const Profile& p, int n, const Tally& raw, const Tally& q16z, const Tally& delta,
+int print_results(const Profile& p, int n, std::size_t samples, const Tally& raw, const Tally& q16z, const Tally& delta,
                   const std::vector<Ours>& ours) {
   int failures = 0;
-  for (const Tally* t : {&raw, &q16z, &delta}) std::printf("%s\n", common_json(*t, p, n).str().c_str());
+  for (const Tally* t : {&raw, &q16z, &delta}) std::printf("%s\n", common_json(*t, p, n, samples).str().c_str());
   const double delta_kbps = delta.bytes * 8.0 / (delta.frames / p.rate_hz) / 1000.0;
   for (const Ours& o : ours) {
     const double secs = o.tally.frames / p.rate_hz;
@@ -164,7 +167,7 @@ int print_results(const Profile& p, int n, const Tally& raw, const Tally& q16z, 
                         o.tally.max_slope_err <= 0.5 * double(p.slope_step);
     const bool pass = within && kbps <= 0.5 * delta_kbps && o.bitwise;
     failures += pass ? 0 : 1;
-    common::JsonWriter line = common_json(o.tally, p, n);
+    common::JsonWriter line = common_json(o.tally, p, n, samples);
     line.fixed("kbps_height", o.height_bits / secs / 1000.0, 4).fixed("kbps_slope", o.slope_bits / secs / 1000.0, 4);
     line.fixed("kbps_overhead", kbps - (o.height_bits + o.slope_bits) / secs / 1000.0, 4);
     line.integer("envelope_bytes_per_chunk", codec::kEnvelopeOverheadBytes);
@@ -232,12 +235,21 @@ int run_codec(int argc, char** argv) {
     if (p->choppy) scene.choppiness = choppiness;
     if (wind_mps >= 0.0) scene.wind_speed_mps = wind_mps;
     sim::Ocean ocean(scene);
+    // A cascaded profile's truth is its cascades' frames one after the other (its stream's fields).
+    std::optional<sim::CascadeSet> cascades;
+    if (!p->cascades.empty()) cascades.emplace(scene, p->cascades);
+    const auto truth_at = [&](double t, sim::Frame& out) {
+      if (cascades)
+        cascades->evaluate(t, out, sim::FrameRequest{true, p->choppy});
+      else
+        ocean.evaluate_band(t, p->grid, p->grid, out, sim::FrameRequest{true, p->choppy});
+    };
     const codec::SceneModelParams model = codec::scene_model_params(scene_wire::to_wire(scene));
     const int n = p->grid;
     const StreamConfig config =
         StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene_wire::wire_depth(scene.depth_m));
     const int frames = std::max(8, static_cast<int>(seconds * p->rate_hz));
-    const std::size_t m = std::size_t(n) * n;
+    const std::size_t m = config.samples();
 
     Tally raw, q16z, delta;
     raw.method = "raw_f32";
@@ -269,8 +281,7 @@ int run_codec(int argc, char** argv) {
     // cost in service.
     constexpr Tick kTick0 = 1'000'000'000;
     for (int tick = 0; tick <= frames; ++tick) {
-      ocean.evaluate_band(codec::tick_time_s(static_cast<std::int64_t>(kTick0) + tick, p->rate_hz), n, n, f,
-                          sim::FrameRequest{true, p->choppy});
+      truth_at(codec::tick_time_s(static_cast<std::int64_t>(kTick0) + tick, p->rate_hz), f);
       if (tick == 1) {  // the explicit (version 1) key of the same tick, for comparison
         codec::EncoderOptions eo;
         eo.key_precision_bits = key_bits;
@@ -279,8 +290,7 @@ int run_codec(int argc, char** argv) {
         codec::Encoder explicit_keys(config, eo);
         explicit_keys.set_scene(0, 0, model);
         sim::Frame before;
-        ocean.evaluate_band(codec::tick_time_s(static_cast<std::int64_t>(kTick0), p->rate_hz), n, n, before,
-                            sim::FrameRequest{true, p->choppy});
+        truth_at(codec::tick_time_s(static_cast<std::int64_t>(kTick0), p->rate_hz), before);
         explicit_keys.add_truth(kTick0, truth_of(before));
         explicit_keys.add_truth(kTick0 + 1, truth_of(f));
         for (const Chunk& c : explicit_keys.encode_key(kTick0 + 1)->chunks)
@@ -403,7 +413,7 @@ int run_codec(int argc, char** argv) {
       }
     }
 
-    failures += print_results(*p, n, raw, q16z, delta, ours);
+    failures += print_results(*p, n, m, raw, q16z, delta, ours);
     std::fflush(stdout);
   }
   (void)json;

@@ -8,6 +8,7 @@
 #include "encoder.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
+#include "cascade_scene.hpp"
 #include "ocean.hpp"
 #include "profile.hpp"
 #include "stream_config.hpp"
@@ -96,7 +97,10 @@ TEST_CASE("synthesis spread over threads gives the bits of one thread") {
 
 TEST_CASE("a decoder lent threads decodes a storm to the bits of one without") {
   codec::StreamConfig config = codec::StreamConfig::from_profile(*find_profile("desktop-choppy"), 256.0, 256.0, 9.81, 0.0);
-  config.grid = 128;  // the smallest grid a decoder spreads, to keep this quick under sanitizers
+  // The smallest grid a decoder spreads, to keep this quick under sanitizers, as desktop-choppy's
+  // tile and coarse cascade.
+  config.grid = 128;
+  config.cascades = {{1, 128, {8, 0}}, {8, 64, {0, 64}}};
   codec::SceneModelParams scene;
   scene.spectrum = codec::ModelSpectrum::jonswap;
   scene.wind_speed_mps = 20.0;
@@ -109,13 +113,18 @@ TEST_CASE("a decoder lent threads decodes a storm to the bits of one without") {
   encoder.set_scene(0, 1, scene);
   alone.add_scene(0, 1, scene);
   spread.add_scene(0, 1, scene);
-  sim::Ocean ocean(codec::test::to_sim(scene));
-  sim::Frame frame;
+  std::vector<sim::Ocean> cascades;
+  for (std::size_t i = 0; i < config.cascades.size(); ++i)
+    cascades.emplace_back(sim::cascade_scene(codec::test::to_sim(scene), config.cascades[i], static_cast<int>(i)));
+  sim::Frame frame, part;
   std::map<Tick, codec::StateId> ids;
   const Tick first = 1'000'000'000;
   for (Tick tick = first; tick < first + 8; ++tick) {
-    ocean.evaluate_band(codec::tick_time_s(static_cast<std::int64_t>(tick), config.rate_hz), config.grid, config.grid,
-                        frame, sim::FrameRequest{true, true});
+    frame = sim::Frame{};
+    for (sim::Ocean& cascade : cascades) {
+      cascade.evaluate(codec::tick_time_s(static_cast<std::int64_t>(tick), config.rate_hz), part, sim::FrameRequest{true, true});
+      sim::append_cascade_frame(frame, part);
+    }
     encoder.add_truth(tick, codec::TruthView{frame.height, frame.slope_x, frame.slope_z, frame.disp_x, frame.disp_z,
                                              frame.disp_xx, frame.disp_zz, frame.disp_xz});
     // Lags of 1 and 3 ticks: the recurrence's parts run one step and several.

@@ -464,7 +464,7 @@ void mobile_choppy(Writer& w) {
   w.chunk(rebuilt(key->chunks[0], c.grid_log2(), [](ChunkHeader& h) { h.choppy = false; }), "not_choppy",
           ChunkError::wrong_dimensions);
   Chunk reserved = key->chunks[0];
-  reserved.payload.at(0) |= 0x40;
+  reserved.payload.at(0) |= 0x80;
   w.chunk(reserved, "reserved_flag", ChunkError::bad_flags);
   Chunk version3 = key->chunks[0];
   version3.payload.at(0) &= static_cast<std::uint8_t>(~0x20u);

@@ -63,7 +63,7 @@ TEST_CASE("the fixed-point recurrence follows exact rotation of a mode for thous
   const StreamConfig c = test_config(32, 30, false);
   ModalModel model(c);
   ModalState s = model.zero_state();
-  const int hc = model.half_cols();
+  const int hc = model.n() / 2 + 1;
   const int at = 3 * hc + 5;  // kz index 3, kx index 5
   const double kx = kTwoPi * 5 / c.patch_x_m, kz = kTwoPi * 3 / c.patch_z_m;
   const double w = std::sqrt(c.gravity_mps2 * std::hypot(kx, kz));

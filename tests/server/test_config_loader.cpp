@@ -161,7 +161,9 @@ TEST_CASE("every kind of bad value is refused with a message naming it", "[confi
       {{"--profiles", "mobile,tablet"}, {"--profiles", "tablet", "known: mobile"}},
       {{"--profiles", "mobile,mobile"}, {"--profiles", "twice"}},
       {{"--profiles", ","}, {"--profiles", "at least one"}},
-      {{"--profiles", "desktop", "--size", "128"}, {"--profiles", "desktop", "--size 128"}},
+      {{"--profiles", "mobile", "--size", "32"}, {"--profiles", "mobile", "--size 32"}},
+      // desktop's 2048 m cascade is 8 patches: 8 x 200 km is beyond the sim's 1e6 m.
+      {{"--profiles", "desktop", "--patch", "200000"}, {"--profiles", "desktop", "cascade 1", "--patch"}},
       {{"--max-clients", "0"}, {"--max-clients", "1.."}},
       {{"--admin-token-file", "/nonexistent/token"}, {"--admin-token-file", "cannot be read"}},
       {{"--admin-token-file", empty_token.path()}, {"--admin-token-file", "empty"}},

@@ -14,36 +14,18 @@ Exit status: 0 pass, 1 fail, 2 bad arguments."""
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 import tempfile
-import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 from png_decode import decode_png  # noqa: E402
+from server_launch import start_server  # noqa: E402
 
 SEAS = {
     "storm": ["--spectrum", "jonswap", "--wind-speed", "20", "--choppiness", "1.2"],
     "calm": ["--spectrum", "jonswap", "--wind-speed", "10", "--choppiness", "0"],
 }
-
-
-def start_server(build, sea, log_path):
-    args = [os.path.join(build, "server", "ocean-server"), "--listen", "127.0.0.1:0", "--metrics-listen", "off",
-            "--profiles", "desktop-choppy", "--size", "256"] + SEAS[sea]
-    log = open(log_path, "w")
-    server = subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT)
-    deadline = time.time() + 30
-    while time.time() < deadline:
-        match = re.search(r"listening tcp=\S+:(\d+) ", open(log_path).read())
-        if match:
-            return server, int(match.group(1))
-        if server.poll() is not None:
-            break
-        time.sleep(0.1)
-    server.kill()
-    sys.exit(f"FAIL: ocean-server did not report its port:\n{open(log_path).read()}")
 
 
 def foam_share(png_path):
@@ -60,7 +42,7 @@ def foam_share(png_path):
 
 def render(build, sea, out_dir, size, frames):
     log_path = os.path.join(out_dir, f"{sea}-server.log")
-    server, port = start_server(build, sea, log_path)
+    server, port = start_server(build, ["--profiles", "desktop-choppy", "--size", "256"] + SEAS[sea], log_path)
     png = os.path.join(out_dir, f"{sea}.png")
     try:
         viewer = subprocess.run([os.path.join(build, "client", "viewer", "ocean-viewer"), "--server", f"127.0.0.1:{port}",

@@ -633,6 +633,7 @@ class SceneModel:
         return (r * det_cos(phi), r * det_sin(phi))
     def h0(self, i, j):
         if i == 0 and j == 0: return (0.0, 0.0)
+        if not keeps(self.sc.get('band', (0, 0)), i, j): return (0.0, 0.0)  # 7.7
         dkx = kTwoPi / self.sc['patch_x_m']; dkz = kTwoPi / self.sc['patch_z_m']
         qx = float(i) * dkx; qz = float(j) * dkz
         variance = self.P(qx, qz, math.sqrt(qx * qx + qz * qz)) * dkx * dkz
@@ -654,6 +655,32 @@ class SceneModel:
                 st[X_im][idx] = to_fixed(SI * C - DR * S, 0)
         stream.mirror(st)
         return st
+
+# ---- 7.7 cascades, 7.8 cascaded streams
+def keeps(band, i, j):
+    lo, hi = band
+    r2 = i * i + j * j
+    return r2 >= lo * lo and (hi == 0 or r2 < hi * hi)
+
+def cascade_scene(sc, cascade, index):
+    scale, grid, lo, hi = cascade
+    c = dict(sc)
+    c['small_wave_m'] = sc['small_wave_m'] if sc['small_wave_m'] > 0 else \
+        0.5 * max(sc['patch_x_m'] / float(sc['size_x']), sc['patch_z_m'] / float(sc['size_z']))
+    c['patch_x_m'] = sc['patch_x_m'] * float(scale); c['patch_z_m'] = sc['patch_z_m'] * float(scale)
+    c['size_x'] = c['size_z'] = grid
+    c['seed'] = sc['seed'] ^ ((0x9E3779B97F4A7C15 * index) % M64)
+    c['band'] = (lo, hi)
+    return c
+
+def cascaded_model_state(sc, cascades, patch_x, patch_z, g, R, hstep, sstep, T):
+    # 7.8: each lattice's scene-model state (its own n, patch, band and draws), one after the other.
+    out = {'pr': [], 'pi': [], 'cr': [], 'ci': []}
+    for index, cascade in enumerate(cascades):
+        lattice = Stream(cascade[1], patch_x * float(cascade[0]), patch_z * float(cascade[0]), g, R, hstep, sstep, True)
+        st = SceneModel(lattice, cascade_scene(sc, cascade, index)).state(lattice, T)
+        for k in out: out[k] += st[k]
+    return out
 
 def hash_state(st):
     h = 1469598103934665603
@@ -957,6 +984,11 @@ def tables(big):
         got = '%016x' % hash_state(SceneModel(st, sc).state(st, tick))
         assert got == want, (grid, tick, got, want)
         print('12.2', grid, tick, 'ok', round(time.time() - t0, 1), 's')
+    t0 = time.time()
+    storm = scene(spectrum=1, spreading=1, wind_speed_mps=20.0, wind_dir_deg=30.0)
+    got = '%016x' % hash_state(cascaded_model_state(storm, [(1, 32, 4, 0), (8, 32, 0, 16)], 256.0, 256.0, 9.81, 240, hstep, 1 / 256, 5000))
+    assert got == 'ecd7f544386b141a', got
+    print('12.2 cascaded ok', round(time.time() - t0, 1), 's')
 
 
 if __name__ == '__main__':

@@ -1,0 +1,176 @@
+// Cascaded streams (codec version 5): one stream of several lattices, each a cascade of the scene
+// (common/cascade.hpp), their states, fields and items one after the other. A storm's cascades
+// stream from the band-limited sims bit for bit as the encoder reconstructs them, every channel
+// within half its step, with a modeled key and no more corrections than one lattice's; a cascaded
+// chunk is refused by a stream without cascades and the reverse.
+#include "cascade_scene.hpp"
+#include "decoder.hpp"
+#include "encoder.hpp"
+#include "ocean.hpp"
+#include "sim_scene.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <vector>
+
+using namespace ocean::codec;
+using ocean::codec::test::to_sim;
+
+namespace {
+
+SceneModelParams storm() {
+  SceneModelParams s;
+  s.spectrum = ModelSpectrum::jonswap;
+  s.wind_speed_mps = 20.0;
+  s.wind_dir_deg = 30.0;
+  s.choppiness = 1.2;
+  s.seed = 11;
+  return s;
+}
+
+// A 256 m tile of the waves under 64 m and a 2048 m cascade of the longer ones.
+StreamConfig cascaded_stream() {
+  StreamConfig c;
+  c.grid = 64;
+  c.rate_hz = 30;
+  c.normals = true;
+  c.choppy = true;
+  c.cascades = {{1, 64, {4, 0}}, {8, 64, {0, 32}}};
+  return c;
+}
+
+// The sim's frames of every cascade at time t, one after the other as the stream's fields.
+struct Truth {
+  std::vector<float> height, slope_x, slope_z, disp_x, disp_z, disp_xx, disp_zz, disp_xz;
+  TruthView view() const { return {height, slope_x, slope_z, disp_x, disp_z, disp_xx, disp_zz, disp_xz}; }
+};
+
+Truth truth_at(std::vector<ocean::sim::Ocean>& cascades, double t) {
+  Truth truth;
+  ocean::sim::Frame f;
+  for (ocean::sim::Ocean& o : cascades) {
+    o.evaluate(t, f, {true, true});
+    const auto append = [](std::vector<float>& to, const std::vector<float>& from) { to.insert(to.end(), from.begin(), from.end()); };
+    append(truth.height, f.height);
+    append(truth.slope_x, f.slope_x);
+    append(truth.slope_z, f.slope_z);
+    append(truth.disp_x, f.disp_x);
+    append(truth.disp_z, f.disp_z);
+    append(truth.disp_xx, f.disp_xx);
+    append(truth.disp_zz, f.disp_zz);
+    append(truth.disp_xz, f.disp_xz);
+  }
+  return truth;
+}
+
+double worst(const std::vector<float>& a, const std::vector<float>& b) {
+  REQUIRE(a.size() == b.size());
+  double m = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::fabs(static_cast<double>(a[i]) - b[i]));
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("a storm's cascades stream as one stream within half a step of their sims", "[cascade]") {
+  const StreamConfig config = cascaded_stream();
+  REQUIRE(validate(config).empty());
+  CHECK(config.samples() == 2u * 64 * 64);
+  const SceneModelParams scene = storm();
+  std::vector<ocean::sim::Ocean> sims;
+  for (std::size_t i = 0; i < config.cascades.size(); ++i)
+    sims.emplace_back(ocean::sim::cascade_scene(to_sim(scene), config.cascades[i], static_cast<int>(i)));
+  Encoder encoder(config);
+  Decoder decoder(config);
+  encoder.set_scene(0, 1, scene);
+  decoder.add_scene(0, 1, scene);
+
+  const std::uint64_t first = 90'000, last = first + 30;
+  double err_h = 0, err_s = 0, err_d = 0, err_dd = 0;
+  std::size_t key_bytes = 0, delta_bytes = 0, corrections = 0;
+  bool bitwise = true;
+  std::map<std::uint64_t, StateId> ids;
+  for (std::uint64_t tick = first; tick <= last; ++tick) {
+    const Truth truth = truth_at(sims, tick_time_s(static_cast<std::int64_t>(tick), config.rate_hz));
+    encoder.add_truth(tick, truth.view());
+    // Lag 1, and every fifth frame lag 3 from an older state.
+    const bool older = tick >= first + 3 && tick % 5 == 0;
+    const auto encoded = tick == first ? encoder.encode_key(tick) : encoder.encode_delta(tick, ids.at(tick - (older ? 3 : 1)));
+    ids[tick] = encoded->id;
+    for (const Chunk& chunk : encoded->chunks) REQUIRE(decoder.accept(view(chunk)) == ChunkError::ok);
+    const ReconstructedFrame* shown = decoder.latest();
+    REQUIRE(shown);
+    REQUIRE(shown->complete);
+    REQUIRE(shown->tick == tick);
+    bitwise = bitwise && shown->height == encoded->reconstruction.height && shown->disp_xz == encoded->reconstruction.disp_xz &&
+              shown->jacobian == encoded->reconstruction.jacobian;
+    err_h = std::max(err_h, worst(shown->height, truth.height));
+    err_s = std::max({err_s, worst(shown->slope_x, truth.slope_x), worst(shown->slope_z, truth.slope_z)});
+    err_d = std::max({err_d, worst(shown->disp_x, truth.disp_x), worst(shown->disp_z, truth.disp_z)});
+    err_dd = std::max({err_dd, worst(shown->disp_xx, truth.disp_xx), worst(shown->disp_zz, truth.disp_zz),
+                       worst(shown->disp_xz, truth.disp_xz)});
+    (tick == first ? key_bytes : delta_bytes) += encoded->stats.payload_bytes;
+    corrections += encoded->stats.corrections_height + encoded->stats.corrections_slope + encoded->stats.corrections_choppy;
+  }
+  std::printf("cascaded stream (256 m + 2048 m at 64 x 64): key %zu bytes, deltas %zu bytes for 30 frames, %zu "
+              "corrections; errors h %.2g s %.2g d %.2g dd %.2g\n",
+              key_bytes, delta_bytes, corrections, err_h, err_s, err_d, err_dd);
+  CHECK(bitwise);
+  CHECK(err_h <= 0.5 * config.height_step_m);
+  CHECK(err_s <= 0.5 * config.slope_step);
+  CHECK(err_d <= 0.5 * config.disp_step_m);
+  CHECK(err_dd <= 0.5 * config.slope_step);
+  CHECK(key_bytes < 64);  // modeled: the scene model knows both cascades' waves
+  CHECK(corrections <= 30 * 8 * config.samples() / 1000);
+}
+
+TEST_CASE("cascaded chunks and plain streams refuse each other", "[cascade]") {
+  const StreamConfig cascaded = cascaded_stream();
+  StreamConfig plain = cascaded;
+  plain.cascades.clear();
+  const SceneModelParams scene = storm();
+  std::vector<ocean::sim::Ocean> sims;
+  for (std::size_t i = 0; i < cascaded.cascades.size(); ++i)
+    sims.emplace_back(ocean::sim::cascade_scene(to_sim(scene), cascaded.cascades[i], static_cast<int>(i)));
+  Encoder encoder(cascaded);
+  encoder.set_scene(0, 1, scene);
+  const Truth truth = truth_at(sims, 1.0);
+  encoder.add_truth(30, truth.view());
+  const auto key = encoder.encode_key(30);
+  Decoder other(plain);
+  other.add_scene(0, 1, scene);
+  CHECK(other.accept(view(key->chunks.at(0))) == ChunkError::wrong_dimensions);
+
+  ocean::sim::Ocean one(to_sim(scene));
+  ocean::sim::Frame f;
+  one.evaluate_band(1.0, 64, 64, f, {true, true});
+  Encoder plain_encoder(plain);
+  plain_encoder.set_scene(0, 1, scene);
+  plain_encoder.add_truth(30, TruthView{f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.disp_xx, f.disp_zz, f.disp_xz});
+  Decoder cascaded_decoder(cascaded);
+  cascaded_decoder.add_scene(0, 1, scene);
+  CHECK(cascaded_decoder.accept(view(plain_encoder.encode_key(30)->chunks.at(0))) == ChunkError::wrong_dimensions);
+  // A truth of one lattice's samples is refused by name.
+  CHECK_THROWS_WITH(encoder.add_truth(31, TruthView{f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.disp_xx,
+                                                    f.disp_zz, f.disp_xz}),
+                    Catch::Contains("lattices need 8192"));
+}
+
+TEST_CASE("stream configs name what is wrong with their cascades", "[cascade]") {
+  StreamConfig c = cascaded_stream();
+  c.grid = 128;
+  CHECK_THAT(validate(c), Catch::Contains("first cascade's"));
+  c = cascaded_stream();
+  c.cascades[1].grid = 512;
+  CHECK_THAT(validate(c), Catch::Contains("cascade 1: grid = 512"));
+  c = cascaded_stream();
+  c.cascades.resize(5, c.cascades[1]);
+  CHECK_THAT(validate(c), Catch::Contains("at most 4"));
+  c = cascaded_stream();
+  c.cascades[1].band = {9, 3};
+  CHECK_THAT(validate(c), Catch::Contains("cascade 1: band"));
+}
