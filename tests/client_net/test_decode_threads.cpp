@@ -8,7 +8,7 @@
 #include "encoder.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
-#include "cascade_scene.hpp"
+#include "cascade_set.hpp"
 #include "ocean.hpp"
 #include "profile.hpp"
 #include "stream_config.hpp"
@@ -113,18 +113,12 @@ TEST_CASE("a decoder lent threads decodes a storm to the bits of one without") {
   encoder.set_scene(0, 1, scene);
   alone.add_scene(0, 1, scene);
   spread.add_scene(0, 1, scene);
-  std::vector<sim::Ocean> cascades;
-  for (std::size_t i = 0; i < config.cascades.size(); ++i)
-    cascades.emplace_back(sim::cascade_scene(codec::test::to_sim(scene), config.cascades[i], static_cast<int>(i)));
-  sim::Frame frame, part;
+  sim::CascadeSet cascades(codec::test::to_sim(scene), config.cascades);
+  sim::Frame frame;
   std::map<Tick, codec::StateId> ids;
   const Tick first = 1'000'000'000;
   for (Tick tick = first; tick < first + 8; ++tick) {
-    frame = sim::Frame{};
-    for (sim::Ocean& cascade : cascades) {
-      cascade.evaluate(codec::tick_time_s(static_cast<std::int64_t>(tick), config.rate_hz), part, sim::FrameRequest{true, true});
-      sim::append_cascade_frame(frame, part);
-    }
+    cascades.evaluate(codec::tick_time_s(static_cast<std::int64_t>(tick), config.rate_hz), frame, sim::FrameRequest{true, true});
     encoder.add_truth(tick, codec::TruthView{frame.height, frame.slope_x, frame.slope_z, frame.disp_x, frame.disp_z,
                                              frame.disp_xx, frame.disp_zz, frame.disp_xz});
     // Lags of 1 and 3 ticks: the recurrence's parts run one step and several.

@@ -3,7 +3,7 @@
 // stream from the band-limited sims bit for bit as the encoder reconstructs them, every channel
 // within half its step, with a modeled key and no more corrections than one lattice's; a cascaded
 // chunk is refused by a stream without cascades and the reverse.
-#include "cascade_scene.hpp"
+#include "cascade_set.hpp"
 #include "decoder.hpp"
 #include "encoder.hpp"
 #include "ocean.hpp"
@@ -43,28 +43,15 @@ StreamConfig cascaded_stream() {
   return c;
 }
 
-// The sim's frames of every cascade at time t, one after the other as the stream's fields.
-struct Truth {
-  std::vector<float> height, slope_x, slope_z, disp_x, disp_z, disp_xx, disp_zz, disp_xz;
-  TruthView view() const { return {height, slope_x, slope_z, disp_x, disp_z, disp_xx, disp_zz, disp_xz}; }
-};
-
-Truth truth_at(std::vector<ocean::sim::Ocean>& cascades, double t) {
-  Truth truth;
+// The sims' frames of every cascade at time t, one after the other as the stream's fields.
+ocean::sim::Frame truth_at(ocean::sim::CascadeSet& cascades, double t) {
   ocean::sim::Frame f;
-  for (ocean::sim::Ocean& o : cascades) {
-    o.evaluate(t, f, {true, true});
-    const auto append = [](std::vector<float>& to, const std::vector<float>& from) { to.insert(to.end(), from.begin(), from.end()); };
-    append(truth.height, f.height);
-    append(truth.slope_x, f.slope_x);
-    append(truth.slope_z, f.slope_z);
-    append(truth.disp_x, f.disp_x);
-    append(truth.disp_z, f.disp_z);
-    append(truth.disp_xx, f.disp_xx);
-    append(truth.disp_zz, f.disp_zz);
-    append(truth.disp_xz, f.disp_xz);
-  }
-  return truth;
+  cascades.evaluate(t, f, {true, true});
+  return f;
+}
+
+TruthView view_of(const ocean::sim::Frame& f) {
+  return {f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.disp_xx, f.disp_zz, f.disp_xz};
 }
 
 double worst(const std::vector<float>& a, const std::vector<float>& b) {
@@ -81,9 +68,7 @@ TEST_CASE("a storm's cascades stream as one stream within half a step of their s
   REQUIRE(validate(config).empty());
   CHECK(config.samples() == 2u * 64 * 64);
   const SceneModelParams scene = storm();
-  std::vector<ocean::sim::Ocean> sims;
-  for (std::size_t i = 0; i < config.cascades.size(); ++i)
-    sims.emplace_back(ocean::sim::cascade_scene(to_sim(scene), config.cascades[i], static_cast<int>(i)));
+  ocean::sim::CascadeSet sims(to_sim(scene), config.cascades);
   Encoder encoder(config);
   Decoder decoder(config);
   encoder.set_scene(0, 1, scene);
@@ -95,8 +80,8 @@ TEST_CASE("a storm's cascades stream as one stream within half a step of their s
   bool bitwise = true;
   std::map<std::uint64_t, StateId> ids;
   for (std::uint64_t tick = first; tick <= last; ++tick) {
-    const Truth truth = truth_at(sims, tick_time_s(static_cast<std::int64_t>(tick), config.rate_hz));
-    encoder.add_truth(tick, truth.view());
+    const ocean::sim::Frame truth = truth_at(sims, tick_time_s(static_cast<std::int64_t>(tick), config.rate_hz));
+    encoder.add_truth(tick, view_of(truth));
     // Lag 1, and every fifth frame lag 3 from an older state.
     const bool older = tick >= first + 3 && tick % 5 == 0;
     const auto encoded = tick == first ? encoder.encode_key(tick) : encoder.encode_delta(tick, ids.at(tick - (older ? 3 : 1)));
@@ -133,13 +118,11 @@ TEST_CASE("cascaded chunks and plain streams refuse each other", "[cascade]") {
   StreamConfig plain = cascaded;
   plain.cascades.clear();
   const SceneModelParams scene = storm();
-  std::vector<ocean::sim::Ocean> sims;
-  for (std::size_t i = 0; i < cascaded.cascades.size(); ++i)
-    sims.emplace_back(ocean::sim::cascade_scene(to_sim(scene), cascaded.cascades[i], static_cast<int>(i)));
+  ocean::sim::CascadeSet sims(to_sim(scene), cascaded.cascades);
   Encoder encoder(cascaded);
   encoder.set_scene(0, 1, scene);
-  const Truth truth = truth_at(sims, 1.0);
-  encoder.add_truth(30, truth.view());
+  const ocean::sim::Frame truth = truth_at(sims, 1.0);
+  encoder.add_truth(30, view_of(truth));
   const auto key = encoder.encode_key(30);
   Decoder other(plain);
   other.add_scene(0, 1, scene);
