@@ -33,10 +33,11 @@ struct LoadPeriod {
 class AdmissionBudget {
  public:
   static constexpr std::size_t kUnlimited = std::numeric_limits<std::size_t>::max();
+  static constexpr double kDefaultTarget = 0.85;
 
   // target_load: the load serving may reach; the rest absorbs bursts (joins, key ticks, acks
   // arriving together) and keeps I/O answered.
-  explicit AdmissionBudget(double target_load = 0.85, std::size_t floor = 32)
+  explicit AdmissionBudget(double target_load = kDefaultTarget, std::size_t floor = 32)
       : target_load_(target_load), floor_(floor) {}
 
   void observe(const LoadPeriod& period);

@@ -253,6 +253,23 @@ const ConfigOption kOptions[] = {
     {"max-clients", "N", "most clients connected at once, in 1..100000", ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_clients); },
      [](const ServerConfig& c) { return std::to_string(c.max_clients); }},
+    {"admission-target", "LOAD|off",
+     "refuse new clients as server_full once serving more would load the network thread past LOAD (its running "
+     "share plus three times its share waiting for a CPU), in (0, 3]; off = only --max-clients",
+     ValueKind::number_or_text, false,
+     [](ServerConfig& c, std::string_view v) {
+       if (v == "off") {
+         c.admission_target.reset();
+         return std::string();
+       }
+       double target = 0.0;
+       std::string error = parse_number(v, target);
+       c.admission_target = target;
+       return error.empty() ? error : error + " (nor 'off')";
+     },
+     [](const ServerConfig& c) {
+       return c.admission_target ? show_number(*c.admission_target) : std::string("off");
+     }},
     {"max-handshakes", "N",
      "most connections that have not yet sent their Hello, in 1..100000; they never take a --max-clients slot",
      ValueKind::integer, false, [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_handshakes); },

@@ -74,6 +74,9 @@ std::string validate_server_config(const ServerConfig& config) {
   if (config.max_handshakes < 1 || config.max_handshakes > kMaxClientsLimit)
     return "--max-handshakes " + std::to_string(config.max_handshakes) + ": must be in 1.." +
            std::to_string(kMaxClientsLimit);
+  if (config.admission_target && !(*config.admission_target > 0.0 && *config.admission_target <= 3.0))
+    return "--admission-target " + std::to_string(*config.admission_target) +
+           ": must be in (0, 3] (the network thread's running share plus three times its waiting share), or off";
   if (config.max_handshakes_per_ip < 1 || config.max_handshakes_per_ip > config.max_handshakes)
     return "--max-handshakes-per-ip " + std::to_string(config.max_handshakes_per_ip) + ": must be in 1..--max-handshakes (" +
            std::to_string(config.max_handshakes) + ")";

@@ -53,6 +53,9 @@ struct ServerConfig {
   std::vector<std::string> profiles{"mobile", "desktop"};  // names from protocol/profile.hpp
 
   int max_clients = 64;                           // welcomed sessions (viewer slots)
+  // The network thread's load (running + 3 x waiting for a CPU) beyond which new clients are
+  // refused (AdmissionBudget); none: only max_clients.
+  std::optional<double> admission_target = 0.85;  // AdmissionBudget::kDefaultTarget
   // Connections before their Hello (they never hold a viewer slot): all of them, per address, and
   // how long one may stay silent. Per-address connections, welcomed or not: 0 = no limit (NAT).
   int max_handshakes = 256;

@@ -32,7 +32,9 @@ constexpr double kWarnEvery_s = 10.0;
 }  // namespace
 
 SessionHub::SessionHub(Server& server, SessionCoreOptions options)
-    : server_(server), core_(host_of(server), options, tick_now(server.config())) {
+    : server_(server),
+      core_(host_of(server), options, tick_now(server.config())),
+      budget_(server.config().admission_target.value_or(AdmissionBudget::kDefaultTarget)) {
   server_.set_connection_handler(
       [this](asio::ip::tcp::socket socket, Server::StreamKind kind) { on_connection(std::move(socket), kind); });
   server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
@@ -107,19 +109,25 @@ void SessionHub::account(double busy_s, double now_s) {
   }
   window_schedule_ = schedule;
   budget_.observe(period);
-  core_.set_session_limit(budget_.capacity());
+  // --admission-target off: the load is still measured and shown, the door is --max-clients alone.
+  const bool admitting_by_load = server_.config().admission_target.has_value();
+  const std::size_t capacity = admitting_by_load ? budget_.capacity() : AdmissionBudget::kUnlimited;
+  core_.set_session_limit(capacity);
   ServerMetrics& metrics = server_.metrics();
   metrics.network_busy_ratio.set(budget_.busy_share());
   metrics.network_cpu_wait_ratio.set(budget_.wait_share());
-  metrics.admission_capacity.set(budget_.capacity() == AdmissionBudget::kUnlimited
-                                     ? 0.0
-                                     : static_cast<double>(budget_.capacity()));
-  const bool at_capacity = !budget_.admits(static_cast<std::size_t>(sessions));
+  metrics.admission_capacity.set(capacity == AdmissionBudget::kUnlimited ? 0.0 : static_cast<double>(capacity));
+  const bool at_capacity = static_cast<std::size_t>(sessions) >= capacity;
   if ((at_capacity || budget_.over_target()) && now_s - last_warning_s_ >= kWarnEvery_s) {
     last_warning_s_ = now_s;
-    spdlog::warn("overload: serving {:.0f} sessions, the network thread was {:.0f}% busy ({:.0f}% waiting for a "
-                 "CPU); admitting at most {} (new clients beyond it are refused as server_full)",
-                 sessions, 100.0 * budget_.busy_share(), 100.0 * budget_.wait_share(), budget_.capacity());
+    if (admitting_by_load)
+      spdlog::warn("overload: serving {:.0f} sessions, the network thread was {:.0f}% busy ({:.0f}% waiting for a "
+                   "CPU); admitting at most {} (new clients beyond it are refused as server_full)",
+                   sessions, 100.0 * budget_.busy_share(), 100.0 * budget_.wait_share(), capacity);
+    else
+      spdlog::warn("overload: serving {:.0f} sessions, the network thread was {:.0f}% busy ({:.0f}% waiting for a "
+                   "CPU); --admission-target off: still admitting up to --max-clients",
+                   sessions, 100.0 * budget_.busy_share(), 100.0 * budget_.wait_share());
   }
   window_start_s_ = now_s;
   window_busy_s_ = 0.0;

@@ -34,6 +34,7 @@ TEST_CASE("no flags gives the documented defaults", "[config]") {
   CHECK(r.config.profiles == std::vector<std::string>{"mobile", "desktop"});
   CHECK_FALSE(r.config.ws_listen);  // no WebSocket port unless asked for
   CHECK(r.config.ws_origins.empty());
+  CHECK(r.config.admission_target == 0.85);  // AdmissionBudget's target
 }
 
 TEST_CASE("flags set every kind of option", "[config]") {
@@ -43,7 +44,7 @@ TEST_CASE("flags set every kind of option", "[config]") {
             "--patch", "300", "--spectrum", "jonswap", "--spreading", "cos2s", "--wind-speed", "12.5", "--wind-dir",
             "45", "--fetch", "50000", "--amplitude", "2", "--depth", "40", "--choppiness", "1.5", "--small-wave",
             "0.1", "--seed", "18446744073709551615", "--tick-rate", "60", "--epoch", "2026-11-21T17:00:00Z",
-            "--profiles", "lite, desktop-choppy", "--max-clients", "3", "--admin-token-file", token.path(),
+            "--profiles", "lite, desktop-choppy", "--max-clients", "3", "--admission-target", "1.5", "--admin-token-file", token.path(),
             "--idle-timeout", "2.5", "--log-level", "debug", "--ws-listen", "0.0.0.0:7701", "--ws-origins",
             "https://ocean.example:8443, http://localhost:8080"});
   REQUIRE(r.message == "");
@@ -70,6 +71,8 @@ TEST_CASE("flags set every kind of option", "[config]") {
   CHECK(c.epoch_unix_ms == 1795280400000);  // from Python's datetime
   CHECK(c.profiles == std::vector<std::string>{"lite", "desktop-choppy"});
   CHECK(c.max_clients == 3);
+  CHECK(c.admission_target == 1.5);
+  CHECK_FALSE(load({"--admission-target", "off"}).config.admission_target);
   CHECK(c.admin_token == "s3cret");
   CHECK(c.idle_timeout_s == 2.5);
   CHECK(c.log_level == "debug");
@@ -165,6 +168,9 @@ TEST_CASE("every kind of bad value is refused with a message naming it", "[confi
       // desktop's 2048 m cascade is 8 patches: 8 x 200 km is beyond the sim's 1e6 m.
       {{"--profiles", "desktop", "--patch", "200000"}, {"--profiles", "desktop", "cascade 1", "--patch"}},
       {{"--max-clients", "0"}, {"--max-clients", "1.."}},
+      {{"--admission-target", "0"}, {"--admission-target", "(0, 3]", "or off"}},
+      {{"--admission-target", "4"}, {"--admission-target", "(0, 3]"}},
+      {{"--admission-target", "none"}, {"--admission-target", "'off'"}},
       {{"--admin-token-file", "/nonexistent/token"}, {"--admin-token-file", "cannot be read"}},
       {{"--admin-token-file", empty_token.path()}, {"--admin-token-file", "empty"}},
       {{"--cookie-key-file", bad_key.path()}, {"--cookie-key-file", "64 hex digits"}},
