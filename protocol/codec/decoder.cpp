@@ -114,7 +114,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
           scenes_.advance(*states_.at(c.baseline), c.baseline, c.tick, p.predicted, parallel_);
         }
       }
-      model_.synthesize(p.predicted.cur, scenes_.at(c.tick)->scene.choppiness, p.fields);
+      model_.synthesize(p.predicted.cur, scenes_.at(c.tick)->scene.choppiness, p.fields.synthesis);
     }
   }
   p.got[c.index] = true;
@@ -123,11 +123,10 @@ ChunkError Decoder::accept(const ChunkView& c) {
   p.ranges.emplace_back(h.item_begin, h.item_end);
   for (std::size_t i = 0; i < decoded.key.size(); ++i) p.key_coefficients[h.item_begin + i] = decoded.key[i];
   const bool predicted = !c.key || h.modeled;  // fields hold a prediction to correct and show
-  if (predicted) apply_corrections(p.fields, decoded.corrections);
   auto append = [](std::vector<Correction>& to, const std::vector<Correction>& from) {
     to.insert(to.end(), from.begin(), from.end());
   };
-  for (int ch = 0; ch < kCorrectionChannels; ++ch) append(channel(p.corrections, ch), channel(decoded.corrections, ch));
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) append(channel(p.fields.corrections, ch), channel(decoded.corrections, ch));
 
   if (predicted && (!shown_tick_ || c.tick >= *shown_tick_)) show(c.tick);
   if (p.received == p.count) {
@@ -170,11 +169,10 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
   }
   if (p.key && !p.modeled) {
     p.predicted = key_state(model_, p.key_coefficients, p.pos_shift, p.vel_shift);
-    model_.synthesize(p.predicted.cur, scenes_.at(tick)->scene.choppiness, p.fields);
-    apply_corrections(p.fields, p.corrections);
+    model_.synthesize(p.predicted.cur, scenes_.at(tick)->scene.choppiness, p.fields.synthesis);
   }
-  if (!p.corrections.height.empty())
-    model_.add_correction(p.predicted, height_correction_field(model_.samples(), p.corrections.height));
+  if (!p.fields.corrections.height.empty())
+    model_.add_correction(p.predicted, height_correction_field(model_.samples(), p.fields.corrections.height));
   const DecodeMemo::State state = memo ? memo->intern(tick, std::move(p.predicted))
                                        : DecodeMemo::State(std::make_shared<ModalState>(std::move(p.predicted)));
   const bool shown = !shown_tick_ || tick >= *shown_tick_;
@@ -183,7 +181,7 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
   late_converted_ = false;
   if (memo && (p.key || p.count == 1)) {
     ReconstructedFrame frame;
-    to_float(p.fields, config_, frame, parallel_);
+    to_float(p.fields.synthesis, p.fields.corrections, config_, frame, parallel_);
     frame.tick = tick;
     frame.complete = true;
     const DecodeMemo::Result& r =
@@ -225,7 +223,7 @@ const ReconstructedFrame* Decoder::just_completed() {
   if (shown_tick_ && *completed_tick_ == *shown_tick_) return latest();
   if (late_shared_) return late_shared_.get();
   if (!late_converted_) {
-    to_float(late_fields_, config_, late_, parallel_);
+    to_float(late_fields_.synthesis, late_fields_.corrections, config_, late_, parallel_);
     late_.tick = *completed_tick_;
     late_.complete = true;
     late_.shared_id = 0;
@@ -278,7 +276,8 @@ const ReconstructedFrame* Decoder::latest() {
   if (shown_dirty_) {
     auto it = pending_.find(*shown_tick_);
     const bool held = it == pending_.end();
-    to_float(held ? shown_fields_ : it->second.fields, config_, shown_, parallel_);
+    const FrameFields& fields = held ? shown_fields_ : it->second.fields;
+    to_float(fields.synthesis, fields.corrections, config_, shown_, parallel_);
     shown_.tick = *shown_tick_;
     shown_.complete = held && shown_complete_;
     shown_dirty_ = false;

@@ -69,6 +69,11 @@ class Decoder {
   const ModalState* state(Tick tick) const;
 
  private:
+  // A frame as shown: its synthesis before rounding and its corrections so far (to_float).
+  struct FrameFields {
+    UnroundedFields synthesis;
+    Corrections corrections;
+  };
   struct Pending {
     Tick baseline = 0;
     bool key = false;
@@ -78,10 +83,9 @@ class Decoder {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
     std::uint16_t received = 0;
     ModalState predicted;                  // delta: advanced baseline state; modeled key: the model's
-    SampleFields fields;                   // delta, modeled key: prediction + corrections so far
+    FrameFields fields;  // synthesis: of the prediction (delta, modeled key), else at completion
     std::vector<KeyCoefficient> key_coefficients;  // key: filled as chunks arrive
     std::uint8_t pos_shift = 0, vel_shift = 0;
-    Corrections corrections;
     DecodeMemo::Payloads key_payloads;  // with a memo: the key's chunks by index, to look it up whole
   };
 
@@ -95,8 +99,10 @@ class Decoder {
   void evict();
   void drop_pending(std::map<Tick, Pending>::iterator it);
   void recycle(DecodeMemo::State&& state);
-  void recycle(SampleFields&& fields) {
-    if (fields.height.capacity() > spare_fields_.height.capacity()) spare_fields_ = std::move(fields);
+  void recycle(FrameFields&& fields) {
+    if (fields.synthesis.channels[0].capacity() <= spare_fields_.synthesis.channels[0].capacity()) return;
+    spare_fields_ = std::move(fields);
+    for (int ch = 0; ch < kCorrectionChannels; ++ch) channel(spare_fields_.corrections, ch).clear();
   }
 
   StreamConfig config_;
@@ -108,20 +114,20 @@ class Decoder {
   std::optional<protocol::AckWindow> window_;  // of states_' ticks
   std::map<Tick, Pending> pending_;
   std::optional<Tick> shown_tick_;              // newest tick with something to show
-  SampleFields shown_fields_;                   // its fields once it left pending_
+  FrameFields shown_fields_;                    // its fields once it left pending_
   bool shown_complete_ = false;
   ReconstructedFrame shown_;
   DecodeMemo::Frame shown_shared_;              // set instead of shown_ when the memo holds the frame
   bool shown_dirty_ = true;
   // A frame completed while a newer one was on show (just_completed()).
   std::optional<Tick> completed_tick_;
-  SampleFields late_fields_;
+  FrameFields late_fields_;
   DecodeMemo::Frame late_shared_;
   ReconstructedFrame late_;
   bool late_converted_ = false;
   // The buffers of a frame no longer needed, taken by the next one: a 256 choppy frame is 4 MB,
   // which allocated afresh would be faulted in page by page every frame.
-  SampleFields spare_fields_;
+  FrameFields spare_fields_;
   ModalState spare_state_;  // likewise the buffers of an evicted state (1 MB at 256)
 };
 

@@ -3,6 +3,7 @@
 // other way, an integer below 2^51 in those bits, less the bias, is that integer as a double.
 #include "field_conversion.hpp"
 
+#include <climits>
 #include <cstring>
 
 #if defined(__x86_64__) && !defined(__EMSCRIPTEN__)
@@ -63,6 +64,30 @@ __attribute__((target("avx2"))) void scale_fields_avx2(const std::int64_t* v, st
   }
   for (; i < count; ++i) out[i] = static_cast<float>(static_cast<double>(v[i]) * scale);
 }
+
+// Eight samples at a time in 32-bit lanes: x * round_scale is exact in binary32 (a power of two
+// scaling down; what falls below the normal range rounds to 0 either way), and the conversion
+// rounds to nearest even as the double path does. Lanes beyond int32 (and NaN) come back as
+// INT32_MIN, and those eight take the scalar path.
+__attribute__((target("avx2"))) void round_scale_fields_avx2(const float* x, std::size_t count, double round_scale,
+                                                             double out_scale, float* out) {
+  const __m256 rs = _mm256_set1_ps(static_cast<float>(round_scale));
+  const __m256d s = _mm256_set1_pd(out_scale);
+  const __m256i indefinite = _mm256_set1_epi32(INT32_MIN);
+  std::size_t i = 0;
+  for (; i + 8 <= count; i += 8) {
+    const __m256i v = _mm256_cvtps_epi32(_mm256_mul_ps(_mm256_loadu_ps(x + i), rs));
+    if (!_mm256_testz_si256(_mm256_cmpeq_epi32(v, indefinite), _mm256_set1_epi32(-1))) {
+      for (std::size_t k = i; k < i + 8; ++k)
+        out[k] = static_cast<float>(static_cast<double>(to_field(x[k], round_scale)) * out_scale);
+      continue;
+    }
+    const __m128 lo = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtepi32_pd(_mm256_castsi256_si128(v)), s));
+    const __m128 hi = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtepi32_pd(_mm256_extracti128_si256(v, 1)), s));
+    _mm256_storeu_ps(out + i, _mm256_set_m128(hi, lo));
+  }
+  for (; i < count; ++i) out[i] = static_cast<float>(static_cast<double>(to_field(x[i], round_scale)) * out_scale);
+}
 #endif
 
 #if defined(__x86_64__) && !defined(__EMSCRIPTEN__)
@@ -82,6 +107,19 @@ void round_fields(const float* x, std::size_t count, double scale, std::int64_t*
   }
 #endif
   for (std::size_t i = 0; i < count; ++i) out[i] = to_field(x[i], scale);
+}
+
+std::int64_t round_field(float x, double scale) { return to_field(x, scale); }
+
+void round_scale_fields(const float* x, std::size_t count, double round_scale, double out_scale, float* out) {
+#if defined(__x86_64__) && !defined(__EMSCRIPTEN__)
+  if (have_avx2()) {
+    round_scale_fields_avx2(x, count, round_scale, out_scale, out);
+    return;
+  }
+#endif
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = static_cast<float>(static_cast<double>(to_field(x[i], round_scale)) * out_scale);
 }
 
 void scale_fields(const std::int64_t* v, std::size_t count, double scale, float* out) {

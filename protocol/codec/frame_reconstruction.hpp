@@ -44,4 +44,9 @@ ModalState key_state(const ModalModel& model, std::span<const KeyCoefficient> co
 void to_float(const SampleFields& fields, const StreamConfig& config, ReconstructedFrame& out,
               const ParallelFor& parallel = {});
 
+// The same floats from the fields before rounding and the frame's corrections: to_float of
+// round_fields() plus apply_corrections(), in one pass and without the integer fields.
+void to_float(const UnroundedFields& fields, const Corrections& corrections, const StreamConfig& config,
+              ReconstructedFrame& out, const ParallelFor& parallel = {});
+
 }  // namespace ocean::codec

@@ -164,19 +164,25 @@ void ModalModel::build_choppy_factors(double choppiness) {
   factor_choppiness_ = choppiness;
 }
 
-void ModalModel::synthesize_pair(PairScratch& scratch, const FloatSpectrum& x, ChannelSource a,
-                                 ChannelSource b, std::int64_t* a_out, std::int64_t* b_out) const {
-  const std::size_t nn = static_cast<std::size_t>(x.n) * x.n;
-  int log2n = 0;
-  while ((1 << log2n) < x.n) ++log2n;
-  const double scale = std::ldexp(1.0, -2 * log2n);
-  pack_channel_pair(x, a, b, scratch.re.data(), scratch.im.data());
-  scratch.fft.inverse_2d(scratch.re.data(), scratch.im.data());
-  round_fields(scratch.re.data(), nn, scale, a_out);
-  if (b_out) round_fields(scratch.im.data(), nn, scale, b_out);
+void ModalModel::synthesize_pair(PairScratch& scratch, const FloatSpectrum& x, ChannelSource a, ChannelSource b,
+                                 float* a_out, float* b_out) const {
+  float* b_or_discard = b_out ? b_out : scratch.discard.data();
+  pack_channel_pair(x, a, b, a_out, b_or_discard);
+  scratch.fft.inverse_2d(a_out, b_or_discard);
+}
+
+void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, UnroundedFields& out) {
+  synthesize_channels(cur, choppiness, out, nullptr);
 }
 
 void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out) {
+  std::vector<std::int64_t>* fields[kCorrectionChannels] = {&out.height, &out.slope_x, &out.slope_z,  &out.disp_x,
+                                                            &out.disp_z, &out.disp_xx, &out.disp_zz, &out.disp_xz};
+  synthesize_channels(cur, choppiness, unrounded_, fields);
+}
+
+void ModalModel::synthesize_channels(const HalfSpectrum& cur, double choppiness, UnroundedFields& out,
+                                     std::vector<std::int64_t>* const* rounded) {
   const std::size_t m = a_.size();
   const std::size_t nn = samples_;
   h_re_.resize(m);
@@ -188,32 +194,34 @@ void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFi
   // The channels in order - height, [slope_x, slope_z], [disp_x, disp_z, disp_xx, disp_zz,
   // disp_xz] - synthesized in consecutive pairs (CODEC.md 7.2), lattice by lattice.
   struct Channel {
+    int index;  // coding order
     ChannelKind kind;
     const float* factor;  // per mode of the whole stream; null for height and slopes
-    std::vector<std::int64_t>* out;
   };
-  Channel channels[8];
+  Channel channels[kCorrectionChannels];
   int count = 0;
-  channels[count++] = {ChannelKind::height, nullptr, &out.height};
-  if (normals_) {
-    channels[count++] = {ChannelKind::slope_x, nullptr, &out.slope_x};
-    channels[count++] = {ChannelKind::slope_z, nullptr, &out.slope_z};
-  } else {
-    out.slope_x.clear();
-    out.slope_z.clear();
+  // A channel without a transform: not streamed (cleared), or exactly 0 everywhere.
+  const auto without_transform = [&](int index, bool zeros) {
+    out.channels[index].assign(zeros ? nn : 0, 0.0f);
+    if (rounded) rounded[index]->assign(zeros ? nn : 0, 0);
+  };
+  channels[count++] = {0, ChannelKind::height, nullptr};
+  for (int j = 1; j <= 2; ++j) {
+    if (normals_) channels[count++] = {j, j == 1 ? ChannelKind::slope_x : ChannelKind::slope_z, nullptr};
+    else without_transform(j, false);
   }
-  std::vector<std::int64_t>* choppy_out[5] = {&out.disp_x, &out.disp_z, &out.disp_xx, &out.disp_zz, &out.disp_xz};
-  if (choppy_ && choppiness == 0.0) {
-    // Every factor is 0, so every field is exactly 0: no transforms needed.
-    for (auto* f : choppy_out) f->assign(nn, 0);
-  } else if (choppy_) {
-    if (choppiness != factor_choppiness_) build_choppy_factors(choppiness);
-    for (int j = 0; j < 5; ++j)
-      channels[count++] = {j < 2 ? ChannelKind::disp : ChannelKind::derivative, choppy_factor_[j].data(), choppy_out[j]};
-  } else {
-    for (auto* f : choppy_out) f->clear();
+  // A choppy stream at choppiness 0: every factor is 0, so every field is exactly 0.
+  const bool choppy_transforms = choppy_ && choppiness != 0.0;
+  if (choppy_transforms && choppiness != factor_choppiness_) build_choppy_factors(choppiness);
+  for (int j = 0; j < 5; ++j) {
+    if (choppy_transforms)
+      channels[count++] = {3 + j, j < 2 ? ChannelKind::disp : ChannelKind::derivative, choppy_factor_[j].data()};
+    else without_transform(3 + j, choppy_);
   }
-  for (int i = 0; i < count; ++i) channels[i].out->resize(nn);
+  for (int i = 0; i < count; ++i) {
+    out.channels[channels[i].index].resize(nn);
+    if (rounded) rounded[channels[i].index]->resize(nn);
+  }
   for (std::size_t g = 0; g < grids_.size(); ++g) {
     const StreamConfig::Lattice& l = lattices_[g];
     Grid& grid = *grids_[g];
@@ -221,12 +229,18 @@ void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFi
     const auto source = [&](const Channel& c) {
       return ChannelSource{c.kind, c.factor ? c.factor + l.modes_at : nullptr};
     };
+    const std::size_t lattice_samples = static_cast<std::size_t>(l.n) * l.n;
+    const double scale = synthesis_scale(l.n);
+    const auto slice = [&](const Channel& c) { return out.channels[c.index].data() + l.samples_at; };
     const bool spread = grid.pair_scratch.size() > 1;
     run_jobs(spread ? parallel_ : ParallelFor{}, (count + 1) / 2, [&](int pair) {
       const Channel& a = channels[2 * pair];
       const Channel* b = 2 * pair + 1 < count ? &channels[2 * pair + 1] : nullptr;
-      synthesize_pair(*grid.pair_scratch[spread ? pair : 0], x, source(a), b ? source(*b) : ChannelSource{},
-                      a.out->data() + l.samples_at, b ? b->out->data() + l.samples_at : nullptr);
+      synthesize_pair(*grid.pair_scratch[spread ? pair : 0], x, source(a), b ? source(*b) : ChannelSource{}, slice(a),
+                      b ? slice(*b) : nullptr);
+      if (!rounded) return;
+      for (const Channel* c : {&a, b})
+        if (c) round_fields(slice(*c), lattice_samples, scale, rounded[c->index]->data() + l.samples_at);
     });
   }
 }

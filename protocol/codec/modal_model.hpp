@@ -5,6 +5,7 @@
 #pragma once
 
 #include "channel_pair.hpp"
+#include "chunk_body.hpp"
 #include "fixed_fft.hpp"
 #include "float_fft.hpp"
 #include "parallel_for.hpp"
@@ -49,6 +50,13 @@ struct SampleFields {
   std::vector<std::int64_t> disp_xx, disp_zz, disp_xz;  // dDx/dx, dDz/dz, dDx/dz, slope units
 };
 
+// The same channels before rounding: each the inverse transform's binary32 output, unscaled
+// (CODEC.md 7.2), in coding order, empty where not streamed. A decoder keeps a frame so and
+// rounds, corrects and converts it in one pass when it shows it (to_float, frame_reconstruction.hpp).
+struct UnroundedFields {
+  std::vector<float> channels[kCorrectionChannels];
+};
+
 class ModalModel {
  public:
   explicit ModalModel(const StreamConfig& config);
@@ -78,6 +86,8 @@ class ModalModel {
   // Heights (and slopes, displacement and its derivatives when streamed) of the field whose
   // spectrum is `cur`; `choppiness` is the lambda of the scene in force at the frame's tick.
   void synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out);
+  // The same before rounding: round_fields() of each lattice's slice gives `out` above.
+  void synthesize(const HalfSpectrum& cur, double choppiness, UnroundedFields& out);
 
   // Half-spectrum of a real field (every lattice's samples, units as heights), made exactly Hermitian.
   void spectrum_of(const std::int64_t* field, HalfSpectrum& out);
@@ -96,11 +106,14 @@ class ModalModel {
 
  private:
   void build_choppy_factors(double choppiness);
-  // One inverse FFT of two channels packed as A + iB (channel_pair.hpp) of one lattice, rounded
-  // into its slice of their fields (b_out null when B is none).
+  // Both synthesize()s: `rounded` null, or the SampleFields' channels in coding order.
+  void synthesize_channels(const HalfSpectrum& cur, double choppiness, UnroundedFields& out,
+                           std::vector<std::int64_t>* const* rounded);
+  // One inverse FFT of two channels packed as A + iB (channel_pair.hpp) of one lattice, in place
+  // in its slice of their fields (b_out null when B is none).
   struct PairScratch;
   void synthesize_pair(PairScratch& scratch, const FloatSpectrum& x, ChannelSource a, ChannelSource b,
-                       std::int64_t* a_out, std::int64_t* b_out) const;
+                       float* a_out, float* b_out) const;
   // spectrum_of() for lattice g: its samples of `field` into its modes of `out`.
   void lattice_spectrum(std::size_t g, const std::int64_t* field, HalfSpectrum& out);
 
@@ -117,12 +130,13 @@ class ModalModel {
   std::vector<float> choppy_factor_[5];
   double factor_choppiness_ = -1.0;
   std::vector<float> h_re_, h_im_;  // X(t) in binary32
+  UnroundedFields unrounded_;  // what synthesize(SampleFields) rounds
   std::vector<std::int64_t> z_re_, z_im_;  // the largest lattice's n x n scratch
-  // What one transform of synthesis works in: its FFT's blocks and the n x n complex array.
+  // What one transform of synthesis works in besides its channels' slices.
   struct PairScratch {
-    explicit PairScratch(int n) : fft(n), re(static_cast<std::size_t>(n) * n), im(re.size()) {}
+    explicit PairScratch(int n) : fft(n), discard(static_cast<std::size_t>(n) * n) {}
     FloatFft fft;
-    std::vector<float> re, im;
+    std::vector<float> discard;  // the imaginary part when B is none
   };
   // Per lattice: its slope factors per column and row (i kx, i kz to slope units), and transforms.
   struct Grid {

@@ -143,6 +143,30 @@ TEST_CASE("fields scale to output floats as float(double(v) * scale), beyond 2^5
   }
 }
 
+TEST_CASE("rounding and scaling in one pass gives the floats of the two passes, in and beyond 32 bits") {
+  const double round_scale = std::ldexp(1.0, -16), out_scale = 0.01 / 65536.0;
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const float two31 = std::ldexp(1.0f, 31) * 65536.0f;
+  std::vector<float> x = {0.0f, -0.0f, 0.5f * 65536, 1.5f * 65536, -2.5f * 65536, 3e30f, -3e30f, kInf, -kInf,
+                          std::numeric_limits<float>::quiet_NaN(), 1e-40f, -1e-45f, two31, -two31,
+                          std::nextafter(two31, 0.0f), -std::nextafter(two31, 0.0f), (std::ldexp(1.0f, 31) - 128.0f) * 65536};
+  std::mt19937_64 rng(11);
+  for (int i = 0; i < 20003; ++i) {
+    const float mantissa = std::uniform_real_distribution<float>(-2.0f, 2.0f)(rng);
+    x.push_back(std::ldexp(mantissa, static_cast<int>(rng() % 80) - 20));  // 2^-20 .. 2^59 in field units x 2^16
+  }
+  std::vector<std::int64_t> v(x.size());
+  std::vector<float> two_passes(x.size()), one_pass(x.size());
+  round_fields(x.data(), x.size(), round_scale, v.data());
+  scale_fields(v.data(), v.size(), out_scale, two_passes.data());
+  round_scale_fields(x.data(), x.size(), round_scale, out_scale, one_pass.data());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    INFO("x " << x[k]);
+    REQUIRE(std::memcmp(&one_pass[k], &two_passes[k], sizeof(float)) == 0);
+    REQUIRE(round_field(x[k], round_scale) == v[k]);
+  }
+}
+
 TEST_CASE("FloatFft refuses sizes that are not powers of two of at least 4") {
   CHECK_THROWS_AS(FloatFft(2), std::invalid_argument);
   CHECK_THROWS_AS(FloatFft(24), std::invalid_argument);
