@@ -5,10 +5,10 @@
 namespace ocean::codec {
 namespace {
 
-// One channel's value at half-spectrum mode h (row factor kz, column factor kx), CODEC.md 7.2;
-// every operation in binary32, as written there.
+// One channel's value at column c of a half-spectrum row (row factor kz, column factor kx, g the
+// row's choppy factors), CODEC.md 7.2; every operation in binary32, as written there.
 template <ChannelKind K>
-inline void channel_value(const float* g, float kx, float kz, std::size_t h, float hr, float hi, float& re, float& im) {
+inline void channel_value(const float* g, float kx, float kz, int c, float hr, float hi, float& re, float& im) {
   if constexpr (K == ChannelKind::none) {
     re = 0.0f;
     im = 0.0f;
@@ -22,33 +22,46 @@ inline void channel_value(const float* g, float kx, float kz, std::size_t h, flo
     re = -(kz * hi);
     im = kz * hr;
   } else if constexpr (K == ChannelKind::disp) {
-    re = g[h] * hi;
-    im = -(g[h] * hr);
+    re = g[c] * hi;
+    im = -(g[c] * hr);
   } else {
-    re = g[h] * hr;
-    im = g[h] * hi;
+    re = g[c] * hr;
+    im = g[c] * hi;
   }
 }
 
+// Row by row: first the row's half-spectrum columns, then the conjugate partners of its inner
+// columns, written from the end of the mirrored row. Each loop has one kind of store, so the
+// compiler runs it in vector lanes (the same binary32 operations, element by element); one loop
+// writing both, as CODEC.md states it, ran scalar and took a fifth of a frame's decode.
 template <ChannelKind A, ChannelKind B>
 void pack(const FloatSpectrum& x, const float* ga, const float* gb, float* z_re, float* z_im) {
   const int n = x.n, hc = n / 2 + 1;
   for (int r = 0; r < n; ++r) {
     const int rm = (n - r) % n;
     const float kz = x.kz[r];
+    const std::size_t h0 = static_cast<std::size_t>(r) * hc;
+    const float* re = x.re + h0;
+    const float* im = x.im + h0;
+    const float* fa = ga ? ga + h0 : nullptr;
+    const float* fb = gb ? gb + h0 : nullptr;
+    float* row_re = z_re + static_cast<std::size_t>(r) * n;
+    float* row_im = z_im + static_cast<std::size_t>(r) * n;
     for (int c = 0; c < hc; ++c) {
-      const std::size_t h = static_cast<std::size_t>(r) * hc + c;
       float xr, xi, yr, yi;
-      channel_value<A>(ga, x.kx[c], kz, h, x.re[h], x.im[h], xr, xi);
-      channel_value<B>(gb, x.kx[c], kz, h, x.re[h], x.im[h], yr, yi);
-      const std::size_t at = static_cast<std::size_t>(r) * n + c;
-      z_re[at] = xr - yi;
-      z_im[at] = xi + yr;
-      if (c > 0 && c < n / 2) {  // the conjugate partner -k
-        const std::size_t mat = static_cast<std::size_t>(rm) * n + (n - c);
-        z_re[mat] = xr + yi;
-        z_im[mat] = yr - xi;
-      }
+      channel_value<A>(fa, x.kx[c], kz, c, re[c], im[c], xr, xi);
+      channel_value<B>(fb, x.kx[c], kz, c, re[c], im[c], yr, yi);
+      row_re[c] = xr - yi;
+      row_im[c] = xi + yr;
+    }
+    float* mirror_re = z_re + static_cast<std::size_t>(rm) * n;
+    float* mirror_im = z_im + static_cast<std::size_t>(rm) * n;
+    for (int c = 1; c < n / 2; ++c) {
+      float xr, xi, yr, yi;
+      channel_value<A>(fa, x.kx[c], kz, c, re[c], im[c], xr, xi);
+      channel_value<B>(fb, x.kx[c], kz, c, re[c], im[c], yr, yi);
+      mirror_re[n - c] = xr + yi;
+      mirror_im[n - c] = yr - xi;
     }
   }
 }
