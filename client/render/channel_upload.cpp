@@ -22,9 +22,19 @@ bool stream_layout(int grid, double patch_x_m, double patch_z_m, std::span<const
   return true;
 }
 
-bool apply_layout(Renderer& renderer, const StreamLayout& layout) {
-  return renderer.set_grid(layout.tile.n, layout.tile.patch_x_m, layout.tile.patch_z_m) &&
-         renderer.set_coarse_grid(layout.coarse.n, layout.coarse.patch_x_m, layout.coarse.patch_z_m);
+bool apply_layout(Renderer& renderer, const StreamLayout& layout, std::string& warning) {
+  warning.clear();
+  if (!renderer.set_grid(layout.tile.n, layout.tile.patch_x_m, layout.tile.patch_z_m)) return false;
+  if (layout.coarse.n > 0 && !renderer.coarse_cascade_supported()) {
+    // The waves the tile leaves out are missing, not approximated: say so rather than show nothing.
+    warning = "the stream's coarse cascade (" + std::to_string(layout.coarse.n) + " x " +
+              std::to_string(layout.coarse.n) + " over " + std::to_string(static_cast<int>(layout.coarse.patch_x_m)) +
+              " m) is not drawn (" + renderer.coarse_cascade_unsupported() +
+              "): the sea shows only the tile's short waves, repeating every " +
+              std::to_string(static_cast<int>(layout.tile.patch_x_m)) + " m";
+    return renderer.set_coarse_grid(0, 0.0f, 0.0f);
+  }
+  return renderer.set_coarse_grid(layout.coarse.n, layout.coarse.patch_x_m, layout.coarse.patch_z_m);
 }
 
 bool upload_channels(Renderer& renderer, const client::FrameChannels& f, const StreamLayout& layout, FoamMemory& foam,
@@ -39,7 +49,7 @@ bool upload_channels(Renderer& renderer, const client::FrameChannels& f, const S
   if (!renderer.upload_frame(f.height.data(), at(f.slope_x, slopes, 0), at(f.slope_z, slopes, 0),
                              at(f.disp_x, choppy, 0), at(f.disp_z, choppy, 0), jacobian))
     return false;
-  if (layout.coarse.n == 0) return true;
+  if (layout.coarse.n == 0 || !renderer.has_coarse_grid()) return true;
   const std::size_t o = static_cast<std::size_t>(layout.tile.n) * layout.tile.n;
   return renderer.upload_coarse_frame(FrameStreams{f.height.data() + o, at(f.slope_x, slopes, o), at(f.slope_z, slopes, o),
                                                    at(f.disp_x, choppy, o), at(f.disp_z, choppy, o),

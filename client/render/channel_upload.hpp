@@ -33,8 +33,9 @@ struct StreamLayout {
 bool stream_layout(int grid, double patch_x_m, double patch_z_m, std::span<const Cascade> cascades, StreamLayout& out,
                    std::string& error);
 
-// set_grid and set_coarse_grid for the layout.
-bool apply_layout(Renderer& renderer, const StreamLayout& layout);
+// set_grid and set_coarse_grid for the layout. A GL that cannot draw the coarse cascade draws the
+// tile alone, and `warning` says what is missing from the picture (the client shows it once).
+bool apply_layout(Renderer& renderer, const StreamLayout& layout, std::string& warning);
 
 // false when the renderer refuses the frame (see Renderer::error()); the height channel must have
 // layout.samples() samples.

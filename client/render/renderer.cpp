@@ -86,8 +86,10 @@ bool Renderer::init(const RendererDesc& in) {
 
   if (!build_ocean_program(plain_program_, false)) return false;
   // The coarse variant is optional: a GL that cannot build it still draws the tile alone.
-  coarse_unsupported_ = "this GL has no vertex texture fetch (2 units) or no GL_OES_texture_float";
-  if (CoarseCascade::supported()) {
+  coarse_unsupported_ = in.without_coarse_cascade
+                            ? "RendererDesc::without_coarse_cascade"
+                            : "this GL has no vertex texture fetch (2 units) or no GL_OES_texture_float";
+  if (!in.without_coarse_cascade && CoarseCascade::supported()) {
     if (build_ocean_program(coarse_program_, true)) coarse_unsupported_.clear();
     else coarse_unsupported_ = error_;
     error_.clear();

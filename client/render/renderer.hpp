@@ -34,6 +34,9 @@ struct RendererDesc {
   glm::vec3 scatter_colour{0.0f};     // (0.02, 0.12, 0.11)
   float shininess = 0.0f;             // 600: Phong exponent of the sun highlight
   float fog_density = 0.0f;           // 3.2 / view distance, per metre; the fog is full at the view distance
+  // Leave the coarse cascade undrawn even where the GL could: what a GL without vertex texture
+  // fetch shows (tests), or a GL whose vertex texture reads are too slow.
+  bool without_coarse_cascade = false;
 };
 
 // One frame of samples, each n x n floats, row-major with rows along +z (index row * n + col).
@@ -74,7 +77,9 @@ class Renderer {
   // waves; the sum repeats every coarse patch instead of every tile. Needs vertex texture fetch
   // and float textures (coarse_cascade_supported(), after init); n = 0 removes it.
   bool coarse_cascade_supported() const { return coarse_program_.id != 0; }
+  const std::string& coarse_cascade_unsupported() const { return coarse_unsupported_; }  // why not
   bool set_coarse_grid(int n, float patch_x_m, float patch_z_m);
+  bool has_coarse_grid() const { return coarse_.active(); }
   bool upload_coarse_frame(const FrameStreams& frame);
   // The weather's light (weather_light.hpp): 0 a clear sky .. 1 all cloud deck, which hides the
   // sun and greys the sky, its reflection and the water.

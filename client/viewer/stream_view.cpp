@@ -4,6 +4,9 @@
 #include "client/render/channel_upload.hpp"
 #include "client/viewer/thread_cpu_clock.hpp"
 
+#include <cstdio>
+#include <string>
+
 namespace ocean::viewer {
 
 bool StreamView::init(const render::RendererDesc& desc, const CameraPose& pose, std::string& error) {
@@ -18,10 +21,12 @@ bool StreamView::update(NetworkThread& net, double now) {
       return false;
     }
     if (shape.layout != shape_.layout && shape.grid > 0) {
-      if (!render::apply_layout(scene_.renderer, shape.layout)) {
+      std::string warning;
+      if (!render::apply_layout(scene_.renderer, shape.layout, warning)) {
         error_ = "stream grid " + std::to_string(shape.grid) + ": " + scene_.renderer.error();
         return false;
       }
+      if (!warning.empty()) std::fprintf(stderr, "ocean-viewer: warning: %s\n", warning.c_str());
       // The old frame's samples do not fit the new grid: nothing is shown until a frame of it arrives.
       channels_ = {};
       foam_.clear();

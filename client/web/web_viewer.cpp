@@ -123,11 +123,13 @@ void WebViewer::on_welcome(const protocol::Welcome& welcome) {
   if (layout != layout_) {
     channels_ = {};
     foam_.clear();
-    if (!render::apply_layout(renderer_, layout)) {
+    std::string warning;
+    if (!render::apply_layout(renderer_, layout, warning)) {
       // Ended once on_tcp_message has returned: the session is still on the stack here.
       pending_end_ = "stream grid " + std::to_string(welcome.stream.grid) + ": " + renderer_.error();
       return;
     }
+    if (!warning.empty()) std::fprintf(stderr, "ocean-web: warning: %s\n", warning.c_str());
     layout_ = layout;
     grid_ = welcome.stream.grid;
   }

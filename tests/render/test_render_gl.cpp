@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "client/render/channel_upload.hpp"
 #include "client/render/framebuffer_readback.hpp"
 #include "client/render/gl_program.hpp"
 #include "client/render/hud_overlay.hpp"
@@ -193,6 +194,65 @@ TEST_CASE("a coarse cascade hides the tile's period from 400 m up", "[cascade]")
   CHECK(r_cascades < r_tile - 0.4);
   // Still a sea: the water below the horizon varies.
   CHECK(region(summed, kH * 3 / 4, kH, kW).luminance_variance > 1e-5);
+}
+
+TEST_CASE("a GL that cannot draw the coarse cascade draws a cascaded stream's tile alone, and says so", "[cascade]") {
+  context();
+  render::StreamLayout layout;
+  layout.tile = {64, 256.0f, 256.0f};
+  layout.coarse = {32, 2048.0f, 2048.0f};
+  // A small storm's two lattices, one after the other as a stream carries them.
+  sim::SceneParams storm;
+  storm.spectrum = sim::SpectrumKind::jonswap;
+  storm.wind_speed_mps = 20.0;
+  storm.choppiness = 1.2;
+  client::FrameChannels channels;
+  for (const ocean::Cascade& c : {ocean::Cascade{1, 64, {4, 0}}, ocean::Cascade{8, 32, {0, 16}}}) {
+    sim::SceneParams scene = storm;
+    scene.size_x = scene.size_z = 64;
+    scene.patch_x_m = scene.patch_z_m = 256.0;
+    sim::Frame f;
+    sim::Ocean(sim::cascade_scene(scene, c, c.patch_scale == 1 ? 0 : 1)).evaluate(10.0, f, {true, true});
+    const auto append = [](std::vector<float>& to, const std::vector<float>& from) { to.insert(to.end(), from.begin(), from.end()); };
+    append(channels.height, f.height);
+    append(channels.slope_x, f.slope_x);
+    append(channels.slope_z, f.slope_z);
+    append(channels.disp_x, f.disp_x);
+    append(channels.disp_z, f.disp_z);
+    append(channels.jacobian, f.jacobian);
+  }
+  REQUIRE(channels.height.size() == layout.samples());
+  for (const bool without : {true, false}) {
+    render::RendererDesc desc;
+    desc.without_coarse_cascade = without;
+    render::Renderer renderer;
+    REQUIRE(renderer.init(desc));
+    INFO("without the coarse cascade: " << without);
+    std::string warning;
+    REQUIRE(render::apply_layout(renderer, layout, warning));
+    CHECK(renderer.has_coarse_grid() == !without);
+    if (without) {
+      CHECK(warning.find("coarse cascade (32 x 32 over 2048 m) is not drawn (RendererDesc::without_coarse_cascade)") !=
+            std::string::npos);
+      CHECK(warning.find("repeating every 256 m") != std::string::npos);
+    } else {
+      CHECK(warning.empty());
+    }
+    render::FoamMemory foam;
+    INFO(renderer.error());
+    REQUIRE(render::upload_channels(renderer, channels, layout, foam, 0.033));
+    render::OffscreenTarget target;
+    std::string error;
+    REQUIRE(target.create(160, 90, error));
+    target.bind();
+    render::Camera camera;
+    camera.position = {0.3, 40.0, 0.7};
+    camera.pitch_rad = -0.3f;
+    renderer.draw(camera, 160, 90, 10.0);
+    CHECK(glGetError() == GL_NO_ERROR);
+    const auto picture = render::read_framebuffer_rgba(160, 90);
+    CHECK(region(picture, 60, 90, 160).luminance_variance > 1e-5);  // a sea, not a blank
+  }
 }
 
 TEST_CASE("a headless EGL context with OpenGL ES 2 can be created") {
