@@ -1,11 +1,48 @@
 #include "frame_producer.hpp"
 
+#include <algorithm>
+#include <array>
 #include <mutex>
 
 namespace ocean::server {
 namespace {
 
 constexpr std::size_t kMaxPooledBuffers = 8;
+
+sim::FrameRequest request_of(const Profile& profile) { return {profile.normals, profile.choppy}; }
+
+// A frame's optional channels, of a const frame or not.
+template <typename F>
+auto slopes_of(F& f) {
+  return std::array{&f.slope_x, &f.slope_z};
+}
+template <typename F>
+auto choppy_of(F& f) {
+  return std::array{&f.disp_x, &f.disp_z, &f.disp_xx, &f.disp_zz, &f.disp_xz, &f.jacobian};
+}
+
+// Empties the channels `request` does not name (capacity kept for the next tick).
+void keep_requested(sim::Frame& f, sim::FrameRequest request) {
+  if (!request.slopes)
+    for (auto* v : slopes_of(f)) v->clear();
+  if (!request.choppy)
+    for (auto* v : choppy_of(f)) v->clear();
+}
+
+// The channels `request` names, from a frame evaluated with at least those.
+void copy_requested(const sim::Frame& from, sim::Frame& to, sim::FrameRequest request) {
+  to.n_x = from.n_x;
+  to.n_z = from.n_z;
+  to.patch_x_m = from.patch_x_m;
+  to.patch_z_m = from.patch_z_m;
+  to.time_s = from.time_s;
+  to.height = from.height;
+  if (request.slopes)
+    for (std::size_t c = 0; c < 2; ++c) *slopes_of(to)[c] = *slopes_of(from)[c];
+  if (request.choppy)
+    for (std::size_t c = 0; c < 6; ++c) *choppy_of(to)[c] = *choppy_of(from)[c];
+  keep_requested(to, request);
+}
 
 }  // namespace
 
@@ -20,14 +57,30 @@ FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*>
       profiles_(std::move(profiles)),
       scheduled_scene_(&schedule_.base()),
       pool_(std::make_shared<BufferPool>()) {
+  // Profiles with the same cascades (desktop and desktop-choppy) share one evaluation, with every
+  // channel either streams: the sim's channels are transforms of their own, so each profile's
+  // are the bits it would get alone.
+  for (std::size_t i = 0; i < profiles_.size(); ++i) {
+    std::size_t source = i;
+    for (std::size_t j = 0; j < i && source == i; ++j)
+      if (!profiles_[i]->cascades.empty() && std::ranges::equal(profiles_[j]->cascades, profiles_[i]->cascades))
+        source = cascade_source_[j];
+    cascade_source_.push_back(source);
+    cascade_request_.push_back(request_of(*profiles_[i]));
+    sim::FrameRequest& shared = cascade_request_[source];
+    shared.slopes = shared.slopes || profiles_[i]->normals;
+    shared.choppy = shared.choppy || profiles_[i]->choppy;
+  }
   use_scene(*scheduled_scene_);
 }
 
 void FrameProducer::use_scene(const sim::SceneParams& scene) {
   ocean_ = std::make_unique<sim::Ocean>(scene);
   cascades_.clear();
-  for (const Profile* profile : profiles_)
-    cascades_.push_back(profile->cascades.empty() ? nullptr : std::make_unique<sim::CascadeSet>(scene, profile->cascades));
+  for (std::size_t i = 0; i < profiles_.size(); ++i) {
+    const bool evaluated = !profiles_[i]->cascades.empty() && cascade_source_[i] == i;
+    cascades_.push_back(evaluated ? std::make_unique<sim::CascadeSet>(scene, profiles_[i]->cascades) : nullptr);
+  }
 }
 
 std::shared_ptr<TickFrames> FrameProducer::take_buffer() {
@@ -72,12 +125,18 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
     const Profile& profile = *profiles_[i];
     result->frames[i].profile = &profile;
     if (cascades_[i]) {
-      cascades_[i]->evaluate(time_s, result->frames[i].frame, sim::FrameRequest{profile.normals, profile.choppy});
+      cascades_[i]->evaluate(time_s, result->frames[i].frame, cascade_request_[i]);
       continue;
     }
-    ocean_->evaluate_band(time_s, profile.grid, profile.grid, result->frames[i].frame,
-                          sim::FrameRequest{profile.normals, profile.choppy});
+    if (!profile.cascades.empty()) continue;  // shares an evaluation: below
+    ocean_->evaluate_band(time_s, profile.grid, profile.grid, result->frames[i].frame, request_of(profile));
   }
+  for (std::size_t i = 0; i < profiles_.size(); ++i)
+    if (cascade_source_[i] != i)
+      copy_requested(result->frames[cascade_source_[i]].frame, result->frames[i].frame, request_of(*profiles_[i]));
+  // A shared evaluation may hold channels its own profile does not stream.
+  for (std::size_t i = 0; i < profiles_.size(); ++i)
+    if (cascades_[i]) keep_requested(result->frames[i].frame, request_of(*profiles_[i]));
   return result;
 }
 

@@ -48,6 +48,10 @@ class FrameProducer {
   // Per offered profile, its cascades' Oceans (null for a profile without), rebuilt with every
   // scene: a cascaded profile's frame is their frames one after the other, as its stream's fields.
   std::vector<std::unique_ptr<sim::CascadeSet>> cascades_;
+  // Per offered profile, the first with its cascades (itself if none before it has them), and the
+  // channels an evaluation there makes: every channel of the profiles sharing it.
+  std::vector<std::size_t> cascade_source_;
+  std::vector<sim::FrameRequest> cascade_request_;
   std::shared_ptr<BufferPool> pool_;
   bool scene_changed_ = false;
 };

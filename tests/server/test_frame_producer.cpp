@@ -86,3 +86,38 @@ TEST_CASE("a scheduled scene takes over from its tick", "[frame_producer][schedu
   (void)scheduled.produce(101, 101 / 30.0);
   CHECK_FALSE(scheduled.scene_changed());
 }
+
+TEST_CASE("desktop and desktop-choppy share one evaluation of their cascades, each frame as alone", "[frame_producer]") {
+  ocean::sim::SceneParams storm = small_scene();
+  storm.spectrum = ocean::sim::SpectrumKind::jonswap;
+  storm.wind_speed_mps = 20.0;
+  storm.choppiness = 1.2;
+  FrameProducer both(SceneSchedule(storm, {}), profiles({"desktop", "mobile", "desktop-choppy"}));
+  FrameProducer plain(SceneSchedule(storm, {}), profiles({"desktop"}));
+  FrameProducer choppy(SceneSchedule(storm, {}), profiles({"desktop-choppy"}));
+  for (std::int64_t tick : {30, 31, 95}) {
+    const double t = static_cast<double>(tick) / 30.0;
+    const auto shared = both.produce(tick, t);
+    const auto alone = plain.produce(tick, t);
+    const auto alone_choppy = choppy.produce(tick, t);
+    const ocean::sim::Frame& d = shared->frames[0].frame;
+    const ocean::sim::Frame& c = shared->frames[2].frame;
+    const ocean::sim::Frame& d1 = alone->frames[0].frame;
+    const ocean::sim::Frame& c1 = alone_choppy->frames[0].frame;
+    INFO("tick " << tick);
+    REQUIRE(d.height.size() == 256u * 256u + 128u * 128u);
+    CHECK(d.height == d1.height);
+    CHECK(d.slope_x == d1.slope_x);
+    CHECK(d.slope_z == d1.slope_z);
+    CHECK(d.disp_x.empty());  // desktop streams no choppy channels
+    CHECK(d.jacobian.empty());
+    CHECK(d.time_s == d1.time_s);
+    CHECK(c.height == c1.height);
+    CHECK(c.slope_z == c1.slope_z);
+    CHECK(c.disp_x == c1.disp_x);
+    CHECK(c.disp_xz == c1.disp_xz);
+    CHECK(c.jacobian == c1.jacobian);
+    CHECK_FALSE(c.jacobian.empty());
+    CHECK(shared->frames[1].frame.height.size() == 64u * 64u);
+  }
+}
