@@ -1,6 +1,7 @@
-// The conversions between binary32 and integer fields, each over a whole frame, four values
-// per AVX2 step where the CPU has it (the scalar loops do not vectorize: x86 converts between
-// int64 and floating point only in AVX-512), with the scalar results.
+// The conversions between binary32 and integer fields, each over a whole frame, four int64
+// values (eight int32 in round_scale_fields) per AVX2 step where the CPU has it (the scalar loops
+// do not vectorize: x86 converts between int64 and floating point only in AVX-512), with the
+// scalar results.
 #pragma once
 
 #include <cstddef>
