@@ -185,11 +185,7 @@ std::shared_ptr<const EncodedFrame> Encoder::explicit_key(Tick tick) {
   // Spectral quantization error 2^p per coefficient gives spatial rms about 2^p / (n sqrt 6):
   // choose p for an rms of step * 2^-key_precision_bits on the smallest lattice.
   int log2n = 30;
-  for (const StreamConfig::Lattice& l : model_.lattices()) {
-    int b = 0;
-    while ((1 << b) < l.n) ++b;
-    log2n = std::min(log2n, b);
-  }
+  for (const StreamConfig::Lattice& l : model_.lattices()) log2n = std::min(log2n, log2_of(l.n));
   KeyCoding coding;
   coding.modeled = false;
   coding.pos_shift = std::max(0, kHeightFracBits - options_.key_precision_bits + log2n + 1);

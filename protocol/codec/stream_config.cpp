@@ -20,11 +20,13 @@ StreamConfig StreamConfig::from_profile(const Profile& profile, double patch_x_m
   return c;
 }
 
-int StreamConfig::grid_log2() const {
+int log2_of(int n) {
   int b = 0;
-  while ((1 << b) < grid) ++b;
+  while ((1 << b) < n) ++b;
   return b;
 }
+
+int StreamConfig::grid_log2() const { return log2_of(grid); }
 
 std::vector<StreamConfig::Lattice> StreamConfig::lattices() const {
   std::vector<Lattice> out;

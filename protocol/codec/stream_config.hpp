@@ -14,6 +14,9 @@ namespace ocean::codec {
 
 inline constexpr std::size_t kMaxCascades = 4;
 
+// L of a power of two n = 2^L (a lattice's side).
+int log2_of(int n);
+
 struct StreamConfig {
   std::uint8_t profile_id = 1;
   std::uint16_t grid = 64;       // grid x grid samples, power of two in [16, 256]
