@@ -108,7 +108,7 @@ def run_in(args, clients, workdir):
     argv = pinned(args.server_cpus, [os.path.join(args.build, "server/ocean-server"), "--listen", f"127.0.0.1:{port}",
                                      "--metrics-listen", f"127.0.0.1:{metrics_port}", "--max-clients", str(clients + 16), "--log-level",
                                      "warn"] + server_args + args.server_arg)
-    server = local_server.start(argv[0], argv[1:], port)
+    server = local_server.start(argv[0], argv[1:], port, ready_url=f"http://127.0.0.1:{metrics_port}/readyz")
     started = time.monotonic()
     metrics = ""
     try:
@@ -119,7 +119,8 @@ def run_in(args, clients, workdir):
         run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                              timeout=ramp + args.duration + 120)
         if run.returncode != 0:
-            raise RuntimeError(f"ocean-loadtest exited {run.returncode}: {run.stderr[-2000:]}")
+            raise RuntimeError(f"ocean-loadtest exited {run.returncode}: {run.stderr[-2000:]}\n"
+                               + local_server.exit_report(server))
         summary = json.loads(run.stdout.strip().splitlines()[-1])
         summary["alive"] = server.poll() is None
         if summary["alive"]:

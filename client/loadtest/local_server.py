@@ -13,48 +13,116 @@ the generator knows both, a scenario with any of tick rate, epoch or schedule al
 by the scenario's epoch_days_ago) as flags."""
 import json
 import os
+import random
 import socket
 import subprocess
 import time
+import urllib.request
 
 DEFAULT_TICK_RATE_HZ = 30  # ocean-server's default --tick-rate
 DAY_MS = 86_400_000
 
 
+def _ephemeral_range():
+    try:
+        with open("/proc/sys/net/ipv4/ip_local_port_range") as f:
+            low, high = (int(v) for v in f.read().split())
+            return low, high
+    except (OSError, ValueError):
+        return 32768, 60999  # Linux's default
+
+
+_handed_out = set()
+
+
 def free_port():
-    """A port free for both TCP and UDP (the server uses one number for both)."""
-    for _ in range(50):
+    """A port free for both TCP and UDP (the server uses one number for both), and not handed out
+    before by this process.
+
+    It lies outside the kernel's ephemeral range: a port from that range can be taken, between
+    this check and the server's bind, by any socket's automatic local port - a connect() (the
+    probe in start() included: to its own port on loopback it connects to itself), a UDP client
+    - and the server then exits after start() saw a listener. Outside it only an explicit bind
+    can take the port."""
+    low, high = _ephemeral_range()
+    candidates = [p for p in range(10000, 65536) if not low <= p <= high and p not in _handed_out]
+    for _ in range(200):
+        port = random.choice(candidates)
         t = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
         u = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         try:
-            t.bind(("127.0.0.1", 0))
-            port = t.getsockname()[1]
+            t.bind(("127.0.0.1", port))
             u.bind(("127.0.0.1", port))
+            _handed_out.add(port)
             return port
         except OSError:
             continue
         finally:
             t.close()
             u.close()
-    raise RuntimeError("no free loopback port")
+    raise RuntimeError("no free loopback port outside the ephemeral range")
 
 
-def start(server_bin, args, port):
-    """Starts ocean-server with `args` (its --listen must use `port`) and waits until it accepts
-    connections; raises RuntimeError with its output if it exits or does not listen in 10 s."""
+def start(server_bin, args, port, ready_url=None):
+    """Starts ocean-server with `args` (its --listen must use `port`, its UDP the same port) and
+    waits until that process itself holds the TCP listener and the UDP socket on `port` - a probe
+    that connects proves neither: another process may hold the port, and the server then exits -
+    and, given `ready_url` (its /readyz), until it says it is ready: a first frame made. Raises
+    RuntimeError with its output if it exits first or is not ready in 10 s."""
     server = subprocess.Popen([server_bin] + args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     deadline = time.time() + 10
     while True:
         if server.poll() is not None:
-            raise RuntimeError("ocean-server exited early: " + server.stdout.read()[-2000:])
-        try:
-            socket.create_connection(("127.0.0.1", port), timeout=0.2).close()
+            raise RuntimeError(f"ocean-server exited early (status {server.returncode}): " + server.stdout.read()[-2000:])
+        if _holds(server.pid, port) and (ready_url is None or _ready(ready_url)):
             return server
+        if time.time() > deadline:
+            stop(server)
+            raise RuntimeError(f"ocean-server was not ready in 10 s: {server.stdout.read()[-2000:]}")
+        time.sleep(0.05)
+
+
+def _socket_inodes(table, port, state=None):
+    """Inodes of the sockets in /proc/net/<table> bound to `port` (in `state`, hex, if given)."""
+    inodes = set()
+    for name in (table, table + "6"):
+        try:
+            with open(f"/proc/net/{name}") as f:
+                next(f)
+                for line in f:
+                    fields = line.split()
+                    if int(fields[1].rsplit(":", 1)[1], 16) == port and (state is None or fields[3] == state):
+                        inodes.add(fields[9])
         except OSError:
-            if time.time() > deadline:
-                stop(server)
-                raise RuntimeError("ocean-server did not start listening in 10 s")
-            time.sleep(0.05)
+            continue
+    return inodes
+
+
+def _holds(pid, port):
+    """Whether process `pid` holds a listening TCP socket (state 0A) and a UDP socket on `port`."""
+    try:
+        fd_dir = f"/proc/{pid}/fd"
+        held = {os.readlink(os.path.join(fd_dir, fd)) for fd in os.listdir(fd_dir)}
+    except OSError:
+        return False
+    return all(any(f"socket:[{inode}]" in held for inode in inodes)
+               for inodes in (_socket_inodes("tcp", port, "0A"), _socket_inodes("udp", port)))
+
+
+def _ready(url):
+    try:
+        with urllib.request.urlopen(url, timeout=0.5) as reply:
+            return reply.status == 200
+    except OSError:  # refused, or 503 while starting (HTTPError is an OSError)
+        return False
+
+
+def exit_report(server):
+    """For a failure seen by a client: whether the server still runs, else how it ended and the
+    end of its output (whatever a dead server said is the likeliest cause)."""
+    if server.poll() is None:
+        return "ocean-server still running"
+    return f"ocean-server exited with status {server.returncode}: {server.stdout.read()[-2000:]}"
 
 
 def stop(server):
