@@ -18,8 +18,9 @@
 
 namespace ocean::codec::vectors {
 
-// The sequences the generator writes and the check reads: <name>.txt and <name>.f32.
-inline constexpr const char* kSequences[] = {"lite_modeled", "lite_explicit", "mobile_choppy"};
+// The sequences the generator writes and the check reads: <name>.txt and, but for
+// desktop_cascaded (two frames of 82k samples would be 2 MB of floats), <name>.f32.
+inline constexpr const char* kSequences[] = {"lite_modeled", "lite_explicit", "mobile_choppy", "desktop_cascaded"};
 
 // The channels of a frame's float block, in order: height, slope_x, slope_z, then for choppy
 // streams disp_x, disp_z, disp_xx, disp_zz, disp_xz and jacobian (non-choppy sequences stay as
@@ -38,7 +39,8 @@ inline std::vector<std::pair<const char*, const std::vector<float>*>> frame_chan
   return channels;
 }
 
-// Sample positions whose values every frame line repeats in decimal, for a quick look.
+// Sample positions whose values every frame line repeats in decimal, for a quick look: these,
+// and in a cascaded stream the same offsets into each further lattice's samples plus its last.
 inline constexpr std::uint32_t kSamplePositions[] = {0, 517, 1023};
 
 inline std::string hex(std::span<const std::uint8_t> bytes) {

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-# A transcription of protocol/codec/CODEC.md (codec version 4) and of PROTOCOL.md 7.1 (frame
+# A transcription of protocol/codec/CODEC.md (codec version 5) and of PROTOCOL.md 7.1 (frame
 # records) into plain Python, written from the text alone (no FlatBuffers package: a few lines
 # read the Welcome and SceneUpdate tables). It checks that the two documents suffice to decode:
 # the function values of CODEC.md 12.1, the scene-model hashes of 12.2 and every chunk, refusal,
 # state hash and frame of the stream vectors beside this file (12.3), bit for bit - the choppy
-# channels of version 3, the binary32 synthesis of version 4 and the float32 Jacobian included
-# (float32 emulated by struct, per operation).
+# channels of version 3, the binary32 synthesis of version 4, the float32 Jacobian and the
+# cascaded streams of version 5 included (float32 emulated by struct, per operation).
 # Informative; CTest runs it as codec_vectors_python when a Python 3 interpreter is found.
 # Usage: decode_from_docs.py [--big]   (--big adds the 256 x 256 hash of 12.2, about a second)
 import math, os, struct, sys, time
@@ -238,10 +238,10 @@ def parse_payload(env, p, max_payload, grid_log2):
     if len(p) > max_payload: raise Refused('oversized')
     if len(p) < 4: raise Refused('truncated')
     flags = p[0]
-    if flags & 0xC0: raise Refused('bad_flags')  # bits 6-7 reserved (bit 4 is choppy, version 3)
+    if flags & 0x80: raise Refused('bad_flags')  # bit 7 reserved (4 choppy: version 3; 6 cascaded: version 5)
     if not flags & 0x20: raise Refused('unknown_version')  # bit 5: binary32 synthesis, version 4
     h = dict(key=bool(flags & 1), normals=bool(flags & 2), modeled=bool(flags & 4), whole=bool(flags & 8),
-             choppy=bool(flags & 16), tag=p[3])
+             choppy=bool(flags & 16), cascaded=bool(flags & 64), tag=p[3])
     if h['key'] != key or (h['modeled'] and not h['key']): raise Refused('bad_flags')
     pos = 4
     if not h['whole']:
@@ -358,6 +358,7 @@ def s_(i, n):
 class Stream:
     def __init__(self, grid, patch_x, patch_z, gravity, R, hstep, sstep, normals, dstep=None, choppy=False):
         self.n = n = grid; self.L = n.bit_length() - 1; self.hc = n // 2 + 1
+        self.samples = n * n; self.modes = n * self.hc; self.cascaded = False
         self.patch_x, self.patch_z, self.g, self.R = patch_x, patch_z, gravity, R
         self.hstep, self.sstep, self.normals = hstep, sstep, normals
         self.dstep, self.choppy = dstep, choppy
@@ -392,6 +393,8 @@ class Stream:
     def zero(self):
         m = self.n * self.hc
         return {'pr': [0] * m, 'pi': [0] * m, 'cr': [0] * m, 'ci': [0] * m}
+    def model(self, sc):
+        return SceneModel(self, sc)
     def advance(self, st, a, steps):
         for _ in range(steps):
             for key_c, key_p in (('cr', 'pr'), ('ci', 'pi')):
@@ -675,12 +678,67 @@ def cascade_scene(sc, cascade, index):
 
 def cascaded_model_state(sc, cascades, patch_x, patch_z, g, R, hstep, sstep, T):
     # 7.8: each lattice's scene-model state (its own n, patch, band and draws), one after the other.
-    out = {'pr': [], 'pi': [], 'cr': [], 'ci': []}
-    for index, cascade in enumerate(cascades):
-        lattice = Stream(cascade[1], patch_x * float(cascade[0]), patch_z * float(cascade[0]), g, R, hstep, sstep, True)
-        st = SceneModel(lattice, cascade_scene(sc, cascade, index)).state(lattice, T)
-        for k in out: out[k] += st[k]
-    return out
+    stream = Cascaded(cascades, patch_x, patch_z, g, R, hstep, sstep, True, None, False)
+    return stream.model(sc).state(stream, T)
+
+class Cascaded:
+    """7.8: a stream of lattices, one per cascade; states, fields and items one lattice after the
+    other. Offers what Decoder uses of a Stream."""
+    def __init__(self, cascades, patch_x, patch_z, gravity, R, hstep, sstep, normals, dstep, choppy):
+        self.cascades = cascades
+        self.lattices = [Stream(c[1], patch_x * float(c[0]), patch_z * float(c[0]), gravity, R, hstep, sstep, normals, dstep, choppy)
+                         for c in cascades]
+        first = self.lattices[0]
+        self.L = first.L  # the CRC's grid_log2: the first lattice's
+        self.normals, self.choppy, self.cascaded = normals, choppy, True
+        self.hstep, self.sstep, self.dstep = hstep, sstep, dstep
+        self.modes_at, self.samples_at, self.key_modes = [], [], []
+        m = p = 0
+        for lat in self.lattices:
+            self.modes_at.append(m); self.samples_at.append(p)
+            self.key_modes += [m + i for i in lat.key_modes]
+            m += lat.modes; p += lat.samples
+        self.modes, self.samples = m, p
+    def parts(self, st):  # each lattice's slice of a state
+        return [{k: v[a:a + lat.modes] for k, v in st.items()} for lat, a in zip(self.lattices, self.modes_at)]
+    def joined(self, sts):
+        return {k: sum((st[k] for st in sts), []) for k in ('pr', 'pi', 'cr', 'ci')}
+    def recurrence(self, D):
+        return sum((lat.recurrence(D) for lat in self.lattices), [])
+    def zero(self):
+        return self.joined([lat.zero() for lat in self.lattices])
+    def advance(self, st, a, steps):
+        Stream.advance(self, st, a, steps)  # per mode: the lattices need no telling apart
+    def model(self, sc):
+        return CascadedModel(self, sc)
+    def synthesize(self, cr, ci, lam=0.0):
+        out = [None] * 8
+        for lat, a in zip(self.lattices, self.modes_at):
+            part = lat.synthesize(cr[a:a + lat.modes], ci[a:a + lat.modes], lam)
+            for ch in range(8):
+                if part[ch] is not None: out[ch] = (out[ch] or []) + part[ch]
+        return out
+    def add_correction(self, st, height_corr):
+        parts = self.parts(st)
+        for lat, p, part in zip(self.lattices, self.samples_at, parts):
+            mine = [(pos - p, v) for pos, v in height_corr if p <= pos < p + lat.samples]
+            if mine: lat.add_correction(part, mine)
+        st.update(self.joined(parts))
+    def key_state(self, coefs, ps, vs):
+        sts, at = [], 0
+        for lat in self.lattices:
+            sts.append(lat.key_state(coefs[at:at + len(lat.key_modes)], ps, vs)); at += len(lat.key_modes)
+        return self.joined(sts)
+    def floats(self, fields):
+        return Stream.floats(self, fields)  # per sample
+
+class CascadedModel:
+    """7.8: lattice l's modes are cascade l's scene (7.7) on its own lattice."""
+    def __init__(self, stream, sc):
+        self.s = stream
+        self.models = [SceneModel(lat, cascade_scene(sc, c, index)) for index, (lat, c) in enumerate(zip(stream.lattices, stream.cascades))]
+    def state(self, stream, T):
+        return stream.joined([m.state(lat, T) for m, lat in zip(self.models, stream.lattices)])
 
 def hash_state(st):
     h = 1469598103934665603
@@ -708,7 +766,7 @@ class Decoder:
     def model(self, frm):
         e = self.scenes[frm]
         if e[2] is None:
-            e[2] = SceneModel(self.s, e[1])
+            e[2] = self.s.model(e[1])
         return e[2]
     def model_state(self, t):
         return self.model(self.start_of(t)).state(self.s, t)
@@ -727,10 +785,10 @@ class Decoder:
         s = self.s
         h = parse_payload(env, payload, self.max_payload, s.L)
         S = len(s.key_modes) if h['key'] and not h['modeled'] else 0
-        total = S + s.n * s.n
+        total = S + s.samples
         if h['whole']:
             h['begin'], h['end'] = 0, total
-        if h['normals'] != s.normals or h['choppy'] != s.choppy: raise Refused('wrong_dimensions')
+        if h['normals'] != s.normals or h['choppy'] != s.choppy or h['cascaded'] != s.cascaded: raise Refused('wrong_dimensions')
         if h['begin'] >= h['end'] or h['end'] > total: raise Refused('bad_range')
         if h['key'] and not h['modeled'] and (h['pos_shift'] > 40 or h['vel_shift'] > 40): raise Refused('bad_value')
         if count == 0 or count > 4096 or index >= count: raise Refused('bad_index')
@@ -754,7 +812,7 @@ class Decoder:
             if len(p['got']) + 1 == count and covered != total: raise Refused('coverage_mismatch')
         elif count == 1 and not h['whole']:
             raise Refused('coverage_mismatch')
-        keyc, corr = decode_body(S, s.n * s.n, s.normals, s.choppy, h['begin'], h['end'], h['body'])
+        keyc, corr = decode_body(S, s.samples, s.normals, s.choppy, h['begin'], h['end'], h['body'])
         if p is None:
             p = {'key': key, 'modeled': h['modeled'], 'baseline': baseline, 'count': count, 'got': set(), 'ranges': [],
                  'coefs': {}, 'corr': [[] for _ in range(8)], 'ps': h.get('pos_shift'), 'vs': h.get('vel_shift')}
@@ -860,6 +918,12 @@ STREAM = [('profile_id', '<B', 0), ('grid', '<H', 0), ('patch_x_m', '<d', 0.0), 
           ('disp_step_m', '<f', 0.0), ('normals', '<B', 0), ('choppy', '<B', 0)]
 def read_table(buf, t, spec):
     return {name: table_field(buf, t, i, fmt, d) for i, (name, fmt, d) in enumerate(spec)}
+def read_cascades(buf, stream_table):
+    # StreamParams slot 12: a vector of struct Cascade {patch_scale:uint8, (pad), grid, band_min,
+    # band_max:uint16}, 8 bytes each; absent: no cascades.
+    v = table_ref(buf, stream_table, 12)
+    if v is None: return []
+    return [struct.unpack_from('<BxHHH', buf, v + 4 + 8 * i) for i in range(u32(buf, v))]
 
 def parse(path):
     lines = []
@@ -880,14 +944,15 @@ def fnv1a64(data):
 
 def run(name):
     lines = parse(os.path.join(HERE, name + '.txt'))
-    floats = open(os.path.join(HERE, name + '.f32'), 'rb').read()
+    f32_path = os.path.join(HERE, name + '.f32')  # absent for desktop_cascaded: FNV-1a alone
+    floats = open(f32_path, 'rb').read() if os.path.exists(f32_path) else None
     dec = None; last = None; stream = None
     ok = 0
     for kind, f in lines:
         if kind == 'welcome':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
             assert version == 2 and bt == 2, (version, bt)
-            w = {'stream': read_table(buf, table_ref(buf, body, 1), STREAM), 'scene': read_table(buf, table_ref(buf, body, 2), SCENE),
+            w = {'stream': read_table(buf, table_ref(buf, body, 1), STREAM), 'cascades': read_cascades(buf, table_ref(buf, body, 1)), 'scene': read_table(buf, table_ref(buf, body, 2), SCENE),
                  'tick_period_s': table_field(buf, body, 6, '<d', 0.0), 'max_message_bytes': table_field(buf, body, 9, '<I', 0),
                  'current_tick64': table_field(buf, body, 10, '<Q', 0), 'scene_serial': table_field(buf, body, 11, '<I', 0),
                  'current_tick': table_field(buf, body, 5, '<I', None)}
@@ -901,8 +966,13 @@ def run(name):
             for k in ('patch_x_m', 'patch_z_m', 'gravity_mps2', 'depth_m'): assert float(f[k]) == st[k], k
             for k in ('height_step_m', 'slope_step', 'disp_step_m'): assert f32(f[k]) == st[k], k
             assert int(f['max_payload']) == max(1100, w['max_message_bytes'] - 96)
-            stream = Stream(st['grid'], st['patch_x_m'], st['patch_z_m'], st['gravity_mps2'], R, st['height_step_m'], st['slope_step'], bool(st['normals']),
-                            st['disp_step_m'], bool(st['choppy']))
+            cascades = w['cascades']
+            assert f.get('cascades', '') == ','.join(':'.join(str(x) for x in c) for c in cascades)
+            kind_ = Cascaded if cascades else Stream
+            first = [cascades] if cascades else [st['grid']]
+            stream = kind_(*first, st['patch_x_m'], st['patch_z_m'], st['gravity_mps2'], R, st['height_step_m'], st['slope_step'], bool(st['normals']),
+                           st['disp_step_m'], bool(st['choppy']))
+            if cascades: assert cascades[0][1] == st['grid']
             dec = Decoder(stream, int(f['max_payload']), int(f['history_ticks']), int(f['max_lag']))
         elif kind == 'scene_update':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
@@ -951,8 +1021,10 @@ def run(name):
             for label, v in zip(labels, out):
                 assert [f32(x) for x in f[label].split(',')] == [v[i] for i in positions], (t, label)
             assert len(f['corrections'].split(',')) == (3 if stream.choppy else 2)
-            off, size = int(f['offset']), int(f['bytes'])
-            assert data == floats[off:off + size], 'frame %d floats differ' % t
+            assert len(data) == int(f['bytes'])
+            if 'offset' in f:
+                off = int(f['offset'])
+                assert data == floats[off:off + len(data)], 'frame %d floats differ' % t
             assert '%016x' % fnv1a64(data) == f['fnv1a64']
             assert '%016x' % hash_state(dec.states[t]) == f['state_hash'], 'state hash %d' % t
             ok += 1
@@ -992,7 +1064,7 @@ def tables(big):
 
 
 if __name__ == '__main__':
-    for n in ['lite_modeled', 'lite_explicit', 'mobile_choppy']:
+    for n in ['lite_modeled', 'lite_explicit', 'mobile_choppy', 'desktop_cascaded']:
         t0 = time.time()
         run(n)
         print('  ', round(time.time() - t0, 1), 's')
