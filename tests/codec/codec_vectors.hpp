@@ -3,6 +3,7 @@
 // (make_codec_vectors.cpp) and the check (test_codec_vectors.cpp).
 #pragma once
 
+#include "common/cascade.hpp"
 #include "frame_reconstruction.hpp"
 
 #include <cstdint>
@@ -19,7 +20,7 @@
 namespace ocean::codec::vectors {
 
 // The sequences the generator writes and the check reads: <name>.txt and, but for
-// desktop_cascaded (two frames of 82k samples would be 2 MB of floats), <name>.f32.
+// desktop_cascaded (three frames of 82k samples would be 3 MB of floats), <name>.f32.
 inline constexpr const char* kSequences[] = {"lite_modeled", "lite_explicit", "mobile_choppy", "desktop_cascaded"};
 
 // The channels of a frame's float block, in order: height, slope_x, slope_z, then for choppy
@@ -65,6 +66,16 @@ inline std::vector<std::uint8_t> unhex(std::string_view text) {
   for (std::size_t i = 0; i < out.size(); ++i)
     out[i] = static_cast<std::uint8_t>(nibble(text[2 * i]) << 4 | nibble(text[2 * i + 1]));
   return out;
+}
+
+// The `cascades` field of a stream line: each cascade as patch_scale:grid:min_cycles:max_cycles,
+// comma-separated; empty for a stream without cascades.
+inline std::string cascades_text(const std::vector<Cascade>& cascades) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < cascades.size(); ++i)
+    out << (i == 0 ? "" : ",") << cascades[i].patch_scale << ":" << cascades[i].grid << ":"
+        << cascades[i].band.min_cycles << ":" << cascades[i].band.max_cycles;
+  return out.str();
 }
 
 // FNV-1a 64 with the standard offset basis (0xcbf29ce484222325) and prime 0x100000001b3.

@@ -192,11 +192,7 @@ class Writer {
           << " height_step_m=" << text_of(c.height_step_m) << " slope_step=" << text_of(c.slope_step)
           << " disp_step_m=" << text_of(c.disp_step_m) << " normals=" << int(c.normals) << " choppy=" << int(c.choppy)
           << " max_payload=" << client_decoder_options(w).max_payload << " history_ticks=32 max_lag=1024";
-    for (std::size_t i = 0; i < c.cascades.size(); ++i) {
-      const Cascade& k = c.cascades[i];
-      text_ << (i == 0 ? " cascades=" : ",") << k.patch_scale << ":" << k.grid << ":" << k.band.min_cycles << ":"
-            << k.band.max_cycles;
-    }
+    if (!c.cascades.empty()) text_ << " cascades=" << cascades_text(c.cascades);
     text_ << "\n";
     text_ << "scene from=0 serial=" << w.scene_serial << " tag=" << (w.scene_serial % 256) << " " << scene_fields(w.scene)
           << "\n";

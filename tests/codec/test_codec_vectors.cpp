@@ -20,7 +20,6 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
-#include <sstream>
 
 using namespace ocean;
 using namespace ocean::codec;
@@ -119,11 +118,7 @@ Counts run_sequence(const std::string& name) {
       CHECK(bits_of(line.f32("disp_step_m")) == bits_of(c.disp_step_m));
       CHECK(line.u64("normals") == (c.normals ? 1u : 0u));
       CHECK(line.u64("choppy") == (c.choppy ? 1u : 0u));
-      std::ostringstream cascades;
-      for (std::size_t k = 0; k < c.cascades.size(); ++k)
-        cascades << (k == 0 ? "" : ",") << c.cascades[k].patch_scale << ":" << c.cascades[k].grid << ":"
-                 << c.cascades[k].band.min_cycles << ":" << c.cascades[k].band.max_cycles;
-      CHECK((line.fields.count("cascades") ? line.at("cascades") : std::string()) == cascades.str());
+      CHECK((line.fields.count("cascades") ? line.at("cascades") : std::string()) == cascades_text(c.cascades));
       REQUIRE(validate(c).empty());
       DecoderOptions options;
       options.max_payload = line.u64("max_payload");
