@@ -11,18 +11,20 @@
 # work; it is skipped, with a banner, only when podman cannot create any container on the machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./deploy/install-deps.sh
+source deploy/stage_clock.sh
+stage "packages" ./deploy/install-deps.sh
 only=${OCEAN_SANITIZE_ONLY:-}
 if [[ -z "$only" || "${OCEAN_SANITIZE:-}" != 1 ]]; then
   # With the browser viewer (Emscripten) and its test in headless Chromium (tests/web).
-  ./deploy/build.sh -DOCEAN_BUILD_WEB=ON
   build_dir=${OCEAN_BUILD_DIR:-build}
-  ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" --timeout 600
+  stage_tree "$build_dir"
+  stage "Release: configure + build (web included)" ./deploy/build.sh -DOCEAN_BUILD_WEB=ON
+  stage "Release: tests" ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" --timeout 600
   if [[ "${OCEAN_CONTAINER:-}" == 1 ]]; then
     # After CTest, never beside it: the image build takes both cores, and the load tests in CTest
     # assert on-time shares.
     rc=0
-    OCEAN_BUILD_DIR=$build_dir ./deploy/container_test.sh || rc=$?
+    OCEAN_BUILD_DIR=$build_dir stage "container stage" ./deploy/container_test.sh || rc=$?
     if ((rc == 77)); then
       echo "=================================================================================" >&2
       echo "test.sh: CONTAINER STAGE SKIPPED: podman cannot create a container here (see above)" >&2
@@ -48,18 +50,20 @@ export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}
 if [[ -z "$only" || "$only" == asan ]]; then
   # -O1 and line tables only (-g1: enough for every report's stack): ASan + UBSan at -O2 -g took
   # 34 of a clean CI run's 73 minutes to compile on 2 cores; at -O1 -g1 each file takes half as long.
-  OCEAN_BUILD_DIR=build-asan ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=address,undefined \
+  stage_tree build-asan
+  OCEAN_BUILD_DIR=build-asan stage "ASan + UBSan: configure + build" ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=address,undefined \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
-  ctest --test-dir build-asan --output-on-failure -j"$(nproc)" --timeout 1800
+  stage "ASan + UBSan: tests" ctest --test-dir build-asan --output-on-failure -j"$(nproc)" --timeout 1800
 fi
 if [[ -z "$only" || "$only" == tsan ]]; then
   # Only the threaded parts: the server (tick loop, sessions), the client connection, the load
   # test's pieces and the replica tests (their ocean-server processes run under TSan too). Not the
   # load-test scenarios or tests/faults: they assert on-time shares that a 5-15x slower TSan build
   # cannot meet (a full TSan run of them on 2026-11-21 reported no race, only missed deadlines).
-  OCEAN_BUILD_DIR=build-tsan ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=thread \
+  stage_tree build-tsan
+  OCEAN_BUILD_DIR=build-tsan stage "TSan: configure + build" ./deploy/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOCEAN_SANITIZE=thread \
     -DOCEAN_BUILD_CLIENT=OFF \
     -DOCEAN_DIRS="sim;protocol;protocol/codec;protocol/scene_wire;server/net;server;client/net;client/loadtest;tests;tests/support;tests/server;tests/client_net;tests/loadtest;tests/replica"
-  ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" --timeout 1800 -R 'server|client_net|loadtest|replica' \
+  stage "TSan: tests" ctest --test-dir build-tsan --output-on-failure -j"$(nproc)" --timeout 1800 -R 'server|client_net|loadtest|replica' \
     -E 'loadtest_scenario'
 fi
