@@ -3,9 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 namespace ocean {
 
 using Tick = std::uint64_t;
+
+// The widest tick on the wire (a 10-byte varint): what every size bound is checked against.
+inline constexpr Tick kLargestTick = std::numeric_limits<Tick>::max();
 
 }  // namespace ocean

@@ -23,8 +23,6 @@ SceneParams checked(const SceneParams& params) {
   return params;
 }
 
-bool power_of_two_in(int n, int lo, int hi) { return n >= lo && n <= hi && (n & (n - 1)) == 0; }
-
 }  // namespace
 
 struct Ocean::Impl {

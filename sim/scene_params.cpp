@@ -9,8 +9,6 @@
 namespace ocean::sim {
 namespace {
 
-bool power_of_two_in(int n, int lo, int hi) { return n >= lo && n <= hi && (n & (n - 1)) == 0; }
-
 // "phillips (0) or jonswap (1)": the valid names with the enum values a bad value is shown against.
 std::string numbered(std::vector<std::string> names) {
   for (std::size_t i = 0; i < names.size(); ++i) names[i] += " (" + std::to_string(i) + ")";

@@ -48,4 +48,7 @@ class ParamError : public std::invalid_argument {
 // Empty when the parameters are usable, otherwise a message naming the first bad parameter.
 std::string validate(const SceneParams& params);
 
+// Grid sizes: FFT lengths are powers of two within a range.
+constexpr bool power_of_two_in(int n, int lo, int hi) { return n >= lo && n <= hi && (n & (n - 1)) == 0; }
+
 }  // namespace ocean::sim

@@ -1,5 +1,6 @@
 #include "client/render/gl_program.hpp"
 
+#include <cstring>
 #include <vector>
 
 namespace ocean::render {
@@ -32,6 +33,11 @@ GLuint compile(GLenum stage, const char* label, const char* source, std::string&
 }
 
 }  // namespace
+
+bool has_extension(const char* name) {
+  const char* all = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  return all && std::strstr(all, name) != nullptr;
+}
 
 GLuint build_program(const char* label, const char* vertex_source, const char* fragment_source,
                      std::initializer_list<AttributeSlot> attributes, std::string& error) {

@@ -14,6 +14,9 @@ struct AttributeSlot {
   const char* name;
 };
 
+// Whether the context's GL_EXTENSIONS string names `name`.
+bool has_extension(const char* name);
+
 GLuint build_program(const char* label, const char* vertex_source, const char* fragment_source,
                      std::initializer_list<AttributeSlot> attributes, std::string& error);
 

@@ -1,20 +1,12 @@
 #include "client/render/offscreen_target.hpp"
 
+#include "client/render/gl_program.hpp"
+
 #include <cstdio>
-#include <cstring>
 
 #include <GLES2/gl2ext.h>
 
 namespace ocean::render {
-
-namespace {
-
-bool has_extension(const char* name) {
-  const char* all = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
-  return all && std::strstr(all, name) != nullptr;
-}
-
-}  // namespace
 
 bool OffscreenTarget::create(int width, int height, std::string& error) {
   destroy();

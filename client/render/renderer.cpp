@@ -25,11 +25,6 @@ namespace {
 // The Jacobian range over which foam goes from none to full (FoamMemory's rate is set against it).
 constexpr float kFoamBand = 0.2f;
 
-bool has_extension(const char* name) {
-  const char* all = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
-  return all && std::strstr(all, name) != nullptr;
-}
-
 template <typename T>
 T or_default(T value, T fallback) {
   return value == T{} ? fallback : value;

@@ -4,6 +4,7 @@
 
 #include "channel_pair.hpp"
 #include "det_math.hpp"
+#include "fft_bin.hpp"
 #include "field_conversion.hpp"
 #include "fixed_point.hpp"
 
@@ -13,9 +14,6 @@
 
 namespace ocean::codec {
 namespace {
-
-// Signed wavenumber index of FFT bin i on an n grid; the Nyquist bin is -n/2.
-int signed_index(int i, int n) { return i < n / 2 ? i : i - n; }
 
 const StreamConfig& require_valid(const StreamConfig& config) {
   const std::string err = validate(config);

@@ -4,6 +4,7 @@
 
 #include "cascade_scene_model.hpp"
 #include "det_math.hpp"
+#include "fft_bin.hpp"
 #include "scene_amplitude.hpp"
 #include "scene_spectrum.hpp"
 
@@ -14,8 +15,6 @@
 
 namespace ocean::codec {
 namespace {
-
-int signed_index(int i, int n) { return i < n / 2 ? i : i - n; }
 
 const SceneModelParams& require_valid(const StreamConfig& stream, const SceneModelParams& scene) {
   std::string err = validate(stream);

@@ -420,6 +420,6 @@ int run_codec(int argc, char** argv) {
   return failures ? 1 : 0;
 }
 
-const ocean::bench::Registrar reg("codec", "stream codec bitrate/error/cost vs raw, q16+zstd, delta+zstd", run_codec);
+const ocean::bench::Registrar codec_bench("codec", "stream codec bitrate/error/cost vs raw, q16+zstd, delta+zstd", run_codec);
 
 }  // namespace

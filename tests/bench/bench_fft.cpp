@@ -107,6 +107,6 @@ int run_fft(int argc, char** argv) {
   return failures ? 1 : 0;
 }
 
-const ocean::bench::Registrar reg("fft", "the codec's int64 inverse FFT per kernel (scalar, AVX2)", run_fft);
+const ocean::bench::Registrar fft_bench("fft", "the codec's int64 inverse FFT per kernel (scalar, AVX2)", run_fft);
 
 }  // namespace

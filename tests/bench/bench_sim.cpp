@@ -109,6 +109,6 @@ int run_sim(int argc, char** argv) {
   return 0;
 }
 
-const ocean::bench::Registrar registrar("sim", "spectral ocean tick vs its bare FFTs (--size N --json)", run_sim);
+const ocean::bench::Registrar sim_bench("sim", "spectral ocean tick vs its bare FFTs (--size N --json)", run_sim);
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "client_connection.hpp"
 #include "loopback_core.hpp"
+#include "run_until.hpp"
 
 using namespace ocean;
 using namespace ocean::client;
@@ -18,14 +19,8 @@ using namespace ocean::client;
 namespace {
 
 using ocean::test::LoopbackCore;
+using ocean::test::run_until;
 constexpr std::size_t kFrames = 5;
-
-template <typename Done>
-bool run_until(asio::io_context& io, Done done, double seconds = 5.0) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (!done() && std::chrono::steady_clock::now() < until) io.run_for(std::chrono::milliseconds(5));
-  return done();
-}
 
 struct Received {
   std::uint32_t tick;

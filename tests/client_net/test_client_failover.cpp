@@ -11,6 +11,7 @@
 
 #include "client_connection.hpp"
 #include "loopback_core.hpp"
+#include "run_until.hpp"
 
 using namespace ocean;
 using namespace ocean::client;
@@ -31,12 +32,7 @@ ClientConnectionConfig failover_config(std::vector<ServerEndpoint> servers) {
   return config;
 }
 
-template <typename Done>
-bool run_until(asio::io_context& io, Done done, double seconds = 5.0) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (!done() && std::chrono::steady_clock::now() < until) io.run_for(std::chrono::milliseconds(5));
-  return done();
-}
+using ocean::test::run_until;
 
 // A port nothing listens on: bound once to learn a free one, then released.
 std::uint16_t closed_port(asio::io_context& io) {

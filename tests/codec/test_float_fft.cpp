@@ -3,6 +3,7 @@
 // (AVX2 where the CPU has it) must give the definitions' bits.
 #include "det_math.hpp"
 #include "field_conversion.hpp"
+#include "float_bits.hpp"
 #include "float_fft.hpp"
 
 #include <catch2/catch.hpp>
@@ -70,9 +71,7 @@ void reference_2d(std::vector<float>& re, std::vector<float>& im, int n) {
   }
 }
 
-bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
-}
+using ocean::codec::test::same_bits;
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "float_bits.hpp"
 #include "field_conversion.hpp"
 #include "frame_reconstruction.hpp"
 #include "modal_model.hpp"
@@ -43,9 +44,7 @@ float any_value(std::mt19937_64& rng) {
   }
 }
 
-bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
-}
+using ocean::codec::test::same_bits;
 
 }  // namespace
 

@@ -19,7 +19,7 @@ using ocean::Tick;
 
 namespace {
 
-constexpr Tick kLargestTick = std::numeric_limits<Tick>::max();
+using ocean::kLargestTick;
 
 struct Decoded {
   Bytes block;                      // the records' payloads view it (a moved vector keeps its buffer)

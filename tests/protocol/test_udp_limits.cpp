@@ -20,7 +20,7 @@ namespace wire = ocean::wire;
 namespace {
 
 const VerifyOptions kFromServerUdp = from(Sender::server, wire::Transport::udp);
-constexpr ocean::Tick kLargestTick = std::numeric_limits<ocean::Tick>::max();
+using ocean::kLargestTick;
 
 // The record with the widest envelope: the largest tick (a 10-byte varint), the largest lag, the
 // last chunk of the most chunks a frame may have.

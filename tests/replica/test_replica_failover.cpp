@@ -12,6 +12,7 @@
 #include "ground_truth.hpp"
 #include "profile.hpp"
 #include "replica_pair.hpp"
+#include "run_until.hpp"
 
 using namespace ocean;
 using namespace ocean::replica_test;
@@ -32,12 +33,7 @@ struct Shown {
   bool within_bound;
 };
 
-template <typename Done>
-bool run_until(asio::io_context& io, Done done, double seconds) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (!done() && std::chrono::steady_clock::now() < until) io.run_for(std::chrono::milliseconds(5));
-  return done();
-}
+using ocean::test::run_until;
 
 }  // namespace
 

@@ -21,6 +21,7 @@
 #include "frame_recorder.hpp"
 #include "profile.hpp"
 #include "replica_pair.hpp"
+#include "run_until.hpp"
 
 using namespace ocean;
 using namespace ocean::replica_test;
@@ -58,12 +59,7 @@ void sleep_to_frame_phase(std::uint32_t step, double phase) {
   std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(wait));
 }
 
-template <typename Done>
-bool run_until(asio::io_context& io, Done done, double seconds) {
-  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (!done() && std::chrono::steady_clock::now() < until) io.run_for(std::chrono::milliseconds(5));
-  return done();
-}
+using ocean::test::run_until;
 
 struct Overlap {
   std::size_t keys = 0, deltas = 0, chunks = 0, bytes = 0;

@@ -47,7 +47,7 @@ struct PortRig {
   std::vector<Received> got;
 };
 
-std::vector<std::uint8_t> numbered(std::uint32_t i, std::size_t size) {
+std::vector<std::uint8_t> numbered_payload(std::uint32_t i, std::size_t size) {
   std::vector<std::uint8_t> bytes(size, 0xAB);
   for (std::size_t b = 0; b < 4; ++b) bytes[b] = static_cast<std::uint8_t>(i >> (8 * b));
   return bytes;
@@ -65,7 +65,7 @@ TEST_CASE("DatagramPort hands over a steady stream whole and in order with far f
     const auto start = Clock::now();
     for (std::uint32_t i = 0; i < kCount; ++i) {
       std::this_thread::sleep_until(start + std::chrono::microseconds(100 * i));
-      sender.send_to(asio::buffer(numbered(i, 40 + i % 100)), rig.to);
+      sender.send_to(asio::buffer(numbered_payload(i, 40 + i % 100)), rig.to);
     }
   });
   rig.run_until(kCount, 10.0);
@@ -85,8 +85,8 @@ TEST_CASE("DatagramPort reads a lone datagram at once and truncates an oversized
           "[datagram_port]") {
   PortRig rig;
   asio::ip::udp::socket sender(rig.io, asio::ip::udp::endpoint(asio::ip::address_v4::loopback(), 0));
-  sender.send_to(asio::buffer(numbered(7, 3000)), rig.to);
-  sender.send_to(asio::buffer(numbered(8, 12)), rig.to);
+  sender.send_to(asio::buffer(numbered_payload(7, 3000)), rig.to);
+  sender.send_to(asio::buffer(numbered_payload(8, 12)), rig.to);
   rig.run_until(2, 5.0);
   REQUIRE(rig.got.size() == 2);
   CHECK(rig.got[0].number == 7);
@@ -98,13 +98,13 @@ TEST_CASE("DatagramPort reads a lone datagram at once and truncates an oversized
 TEST_CASE("DatagramPort delivers nothing after close and lets the context finish", "[datagram_port]") {
   PortRig rig;
   asio::ip::udp::socket sender(rig.io, asio::ip::udp::endpoint(asio::ip::address_v4::loopback(), 0));
-  sender.send_to(asio::buffer(numbered(1, 10)), rig.to);
+  sender.send_to(asio::buffer(numbered_payload(1, 10)), rig.to);
   rig.run_until(1, 5.0);
   REQUIRE(rig.got.size() == 1);
   rig.port->close();
   CHECK(!rig.port->is_open());
   std::error_code ignored;
-  sender.send_to(asio::buffer(numbered(2, 10)), rig.to, 0, ignored);
+  sender.send_to(asio::buffer(numbered_payload(2, 10)), rig.to, 0, ignored);
   const auto start = Clock::now();
   rig.io.run_for(std::chrono::milliseconds(200));  // returns early once no work is left
   CHECK(rig.got.size() == 1);

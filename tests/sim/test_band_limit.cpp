@@ -1,6 +1,7 @@
 // evaluate_band(n) must be the exact low-pass of the full frame (central n modes) sampled every
 // size/n-th point, and must use the same h0 whatever the grid it is cut from.
 #include "direct_fourier.hpp"
+#include "field_stats.hpp"
 #include "ocean.hpp"
 
 #include <catch2/catch.hpp>
@@ -14,11 +15,7 @@ using namespace ocean::sim;
 
 namespace {
 
-double max_abs(const std::vector<float>& v) {
-  double m = 0.0;
-  for (float x : v) m = std::max(m, std::fabs(double(x)));
-  return m;
-}
+using ocean::sim::test::max_abs;
 
 // Low-pass of a full N_x x N_z real field to the modes |kx| < n_x/2, |kz| < n_z/2, sampled on n_x x n_z.
 std::vector<double> low_pass(const std::vector<float>& full, int big_x, int big_z, int n_x, int n_z) {

@@ -15,7 +15,7 @@ using namespace ocean::sim;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // A 64 x 64 band whose only wave is (kx, kz) with h0 = 0.5, so height = cos(k.x - w t).
 BandEvaluator single_wave(const SceneParams& p, int kx, int kz) {

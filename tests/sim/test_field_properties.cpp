@@ -2,6 +2,7 @@
 // slopes, displacement, Jacobian), has zero mean, obeys Parseval, is periodic with no seam, its
 // slopes are the derivatives of its heights, and its Jacobian has mean exactly 1.
 #include "direct_fourier.hpp"
+#include "field_stats.hpp"
 #include "ocean.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,13 +18,9 @@ using ocean::sim::testing::PlaneSpectrum;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
-double max_abs(const std::vector<float>& v) {
-  double m = 0.0;
-  for (float x : v) m = std::max(m, std::fabs(double(x)));
-  return m;
-}
+using ocean::sim::test::max_abs;
 
 double mean(const std::vector<float>& v) {
   double s = 0.0;

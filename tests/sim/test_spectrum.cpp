@@ -16,7 +16,7 @@ using namespace ocean::sim;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 double simpson(const std::function<double(double)>& f, double a, double b, int intervals) {
   const double h = (b - a) / intervals;
