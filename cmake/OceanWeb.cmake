@@ -16,12 +16,28 @@ include(GNUInstallDirs)
 set(OCEAN_WEB_DIR ${CMAKE_BINARY_DIR}/web)
 # Debian's emcc runs under the first node on PATH; Debian's node modules must be visible to it.
 set(ocean_web_env ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
+# A unity build of this tree makes a unity build of the viewer too.
+set(ocean_web_unity)
+if(CMAKE_UNITY_BUILD)
+  set(ocean_web_unity -DCMAKE_UNITY_BUILD=ON)
+  if(CMAKE_UNITY_BUILD_BATCH_SIZE)
+    list(APPEND ocean_web_unity -DCMAKE_UNITY_BUILD_BATCH_SIZE=${CMAKE_UNITY_BUILD_BATCH_SIZE})
+  endif()
+endif()
+# The viewer's own tree keeps the generator it was first configured with (CMake refuses another).
+set(ocean_web_generator ${CMAKE_GENERATOR})
+if(EXISTS ${CMAKE_BINARY_DIR}/web-build/CMakeCache.txt)
+  file(STRINGS ${CMAKE_BINARY_DIR}/web-build/CMakeCache.txt ocean_web_cached REGEX "^CMAKE_GENERATOR:INTERNAL=")
+  string(REPLACE "CMAKE_GENERATOR:INTERNAL=" "" ocean_web_generator "${ocean_web_cached}")
+endif()
 cmake_host_system_information(RESULT ocean_web_jobs QUERY NUMBER_OF_LOGICAL_CORES)
 ExternalProject_Add(ocean_web
   SOURCE_DIR ${PROJECT_SOURCE_DIR}/client/web
   BINARY_DIR ${CMAKE_BINARY_DIR}/web-build
   CONFIGURE_COMMAND ${ocean_web_env} ${OCEAN_EMCMAKE} ${CMAKE_COMMAND} -S <SOURCE_DIR> -B <BINARY_DIR>
+    -G ${ocean_web_generator}
     -DCMAKE_BUILD_TYPE=Release
+    ${ocean_web_unity}
     -DOCEAN_SOURCE_DIR=${PROJECT_SOURCE_DIR}
     -DOCEAN_PROTOCOL_GENERATED_DIR=${OCEAN_PROTOCOL_GENERATED_DIR}
     -DOCEAN_RENDER_GENERATED_DIR=${OCEAN_RENDER_GENERATED_DIR}

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config git ca-certificates
+  cmake g++ make ninja-build pkg-config git ca-certificates
   libfftw3-dev libasio-dev libwebsocketpp-dev libflatbuffers-dev flatbuffers-compiler
   libzstd-dev libsodium-dev libspdlog-dev libfmt-dev libcli11-dev libtomlplusplus-dev
   libstb-dev catch2

@@ -41,7 +41,7 @@ inline constexpr double kOnTimeShare = 0.99;  // what the well-behaved clients m
 // Under a sanitizer (OCEAN_SANITIZE) the attacked server runs 2-15x slower than the unattacked one
 // beside it has to, so on-time shares and deadlines measure the instrumentation, not the server:
 // they are printed, and asserted only in an uninstrumented build (CI's Release run).
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(OCEAN_SANITIZED)
 inline constexpr bool kTimingMeasurable = false;
 #else
 inline constexpr bool kTimingMeasurable = true;

@@ -32,7 +32,7 @@ constexpr std::uint64_t kSendQueueKib = 1024;  // SessionCoreOptions::send_queue
 // Under ASan (OCEAN_SANITIZE) freed memory sits in a quarantine, so resident memory says nothing
 // about what the server holds: the memory bounds are then printed, not asserted. The server of
 // this build tree is built like this test.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if defined(OCEAN_SANITIZED)
 constexpr bool kMemoryMeasurable = false;
 #else
 constexpr bool kMemoryMeasurable = true;
