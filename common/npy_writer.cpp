@@ -44,8 +44,10 @@ void write_npy_header(std::FILE* file, const std::string& path, const char* desc
 }
 
 void NpyWriter::write_header() {
-  write_npy_header(file_, path_, "<f4",
-                   "(" + std::to_string(frames_) + ", " + std::to_string(rows_) + ", " + std::to_string(cols_) + ")");
+  // Appended piecewise: g++ 12 warns falsely (-Wrestrict) on "(" + std::string once inlined.
+  std::string shape = "(";
+  shape += std::to_string(frames_) + ", " + std::to_string(rows_) + ", " + std::to_string(cols_) + ")";
+  write_npy_header(file_, path_, "<f4", shape);
 }
 
 void NpyWriter::append(std::span<const float> frame) {

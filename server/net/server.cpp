@@ -95,7 +95,7 @@ Server::Server(ServerConfig config)
     ws_port_ = ws_->acceptor.local_endpoint().port();
   }
   {
-    asio::ip::udp::socket socket = open_udp_socket(context_, udp_address(config_, tcp_port_));
+    asio::ip::udp::socket socket = open_udp_beside_tcp();
     udp_port_ = socket.local_endpoint().port();
     socket.non_blocking(true);  // a full socket buffer drops a datagram rather than stall the network thread
     udp_ = std::make_unique<DatagramPort>(context_, std::move(socket),
@@ -135,6 +135,22 @@ Server::Server(ServerConfig config)
   }
   set_log_suppressed_hook([this](std::string_view reason) { metrics_.log_suppressed(reason).inc(); });
   do_await_stop();
+}
+
+// UDP shares the TCP port unless --udp-listen says otherwise. When the kernel picked that port
+// (--listen HOST:0) it was free for TCP only: some other socket may hold it for UDP (a client's
+// ephemeral port), so the server picks again rather than fail on a port nobody asked for.
+asio::ip::udp::socket Server::open_udp_beside_tcp() {
+  const bool kernel_picked = config_.listen.port == 0 && !config_.udp_listen;
+  for (int attempt = 1;; ++attempt) {
+    try {
+      return open_udp_socket(context_, udp_address(config_, tcp_port_));
+    } catch (const std::system_error& e) {
+      if (!kernel_picked || e.code() != asio::error::address_in_use || attempt == 16) throw;
+    }
+    tcp_.acceptor = open_tcp_acceptor(context_, config_.listen, "clients");
+    tcp_port_ = tcp_.acceptor.local_endpoint().port();
+  }
 }
 
 Server::~Server() {

@@ -96,6 +96,7 @@ class Server : public DatagramSocket {
 
  private:
   void do_await_stop();
+  asio::ip::udp::socket open_udp_beside_tcp();
   // A stream listener: its acceptor and the pause after running out of descriptors.
   struct Listener {
     Listener(asio::io_context& context, asio::ip::tcp::acceptor a, StreamKind k)

@@ -115,7 +115,13 @@ TEST_CASE("a two-minute soak of every attack leaves 200 viewers on time through 
                        "--duration", std::to_string(static_cast<int>(soak_s + 15)), "--json", "--quiet"};
   ServerProcess load(load_options);
   ClientPopulation victims(port, kVictimsUdp, kVictimsTcp, kMobile);
+  // An unattacked server of the same config with a few clients, measured over the same ticks: if
+  // even they are late, the machine was starved (other programs on its cores), and the soak's
+  // on-time shares say nothing about the server under attack (FaultScenario does the same).
+  ServerProcess control_server(server_options);
+  ClientPopulation control(control_server.tcp_port(), kControlClients - 1, 1, kMobile);
   REQUIRE(victims.wait_streaming(30, 20.0));
+  REQUIRE(control.wait_streaming(30, 10.0));
   std::this_thread::sleep_for(milliseconds(4000));  // the load test's ramp is over
 
   const std::string metrics_before = http_get(server.metrics_port(), "/metrics").value_or(HttpReply{}).body;
@@ -225,6 +231,8 @@ TEST_CASE("a two-minute soak of every attack leaves 200 viewers on time through 
     const double log_rate = static_cast<double>(server.log().size() - log_start) / attack_s;
     const std::string metrics = http_get(server.metrics_port(), "/metrics").value_or(HttpReply{}).body;
     const PopulationWindow window = victims.window(first_tick, last_tick);
+    const PopulationWindow control_window = control.window(first_tick, last_tick);
+    const bool machine_kept_up = control_window.on_time_share() >= kOnTimeShare;
 
     // The load test ends by itself; its last line is the JSON summary.
     const int load_status = load.wait_exit(soak_s + 60.0);
@@ -244,9 +252,10 @@ TEST_CASE("a two-minute soak of every attack leaves 200 viewers on time through 
                 static_cast<unsigned long long>(refused_joins.load()), static_cast<unsigned long long>(silent.load()),
                 static_cast<unsigned long long>(garbage.load()), static_cast<unsigned long long>(pings.load()));
     std::printf("[soak] load test: %d clients, %.2f %% on time, %.0f bad, %.0f reconnects, %.0f scenes; victims %s; "
-                "replayed-cookie port got %llu bytes\n",
+                "unattacked server's clients %.2f %% on time; replayed-cookie port got %llu bytes\n",
                 kLoadClients, number("frames_ok_pct"), number("frames_bad"), number("reconnects"), number("scenes"),
-                window.describe().c_str(), static_cast<unsigned long long>(hijack_bytes_in.load()));
+                window.describe().c_str(), 100.0 * control_window.on_time_share(),
+                static_cast<unsigned long long>(hijack_bytes_in.load()));
     std::printf("[soak] server: RSS %llu -> %llu KiB, log %.0f B/s, slowest /healthz %.1f ms (%d failed), rejects "
                 "unauthorized %llu token_guessing %llu profile_unavailable %llu\n",
                 static_cast<unsigned long long>(rss_start), static_cast<unsigned long long>(rss_end), log_rate,
@@ -269,10 +278,17 @@ TEST_CASE("a two-minute soak of every attack leaves 200 viewers on time through 
           counter(metrics_before, "ocean_rejects_total{reason=\"profile_unavailable\"}"));
     CHECK(log_rate < 4096.0);
     if (kTimingMeasurable) {
-      CHECK(number("frames_ok_pct") >= 99.0);
-      CHECK(window.on_time_share() >= 0.99);
-      CHECK(slowest_health < 0.1);
       CHECK(static_cast<double>(rss_end) <= 1.2 * static_cast<double>(rss_start));
+      if (machine_kept_up) {
+        CHECK(number("frames_ok_pct") >= 99.0);
+        CHECK(window.on_time_share() >= kOnTimeShare);
+        CHECK(slowest_health < 0.1);
+      } else {
+        std::printf("[soak] NOT ASSERTED on a starved machine: on time %.2f %% (load test) and %.2f %% (victims); the "
+                    "unattacked server's clients kept only %.2f %%, slowest /healthz %.1f ms\n",
+                    number("frames_ok_pct"), 100.0 * window.on_time_share(), 100.0 * control_window.on_time_share(),
+                    slowest_health * 1000.0);
+      }
     }
   }
 }

@@ -12,6 +12,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "../../client/loadtest"))
 import find_capacity  # noqa: E402
+from cpu_wait import CpuWait  # noqa: E402
 
 
 def fail(why):
@@ -26,9 +27,12 @@ def main():
                     help="a sanitizer build: its slow server may be loaded by 12 viewers, and may say so")
     args = ap.parse_args()
     script = os.path.join(HERE, "../../client/loadtest/find_capacity.py")
+    wait = CpuWait(tree=True).start()
     run = subprocess.run(["/usr/bin/python3", script, "--build", args.build, "--at", "12", "--duration", "3",
                           "--join-rate", "20", "--server-cpus", "", "--loadtest-cpus", "", "--target", "0"],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
+    wait.stop()
+    print(wait.describe())
     if run.returncode != 0:
         fail(f"find_capacity.py exited {run.returncode}: {run.stderr[-2000:]}")
     row = json.loads(run.stdout.strip().splitlines()[-1])
@@ -43,10 +47,16 @@ def main():
     # Under 32 sessions admission never refuses (AdmissionBudget's floor).
     if server["server_full_refusals"] != 0 or row["refusals"]:
         fail("12 clients refused")
-    if server["overload_warnings"] != 0 and not args.sanitized:
+    # Starved (other programs on the cores), the server is loaded by the wait it measures, and a
+    # try may not be graceful; what must hold whatever the machine is the above and below.
+    starved = wait.starved()
+    if starved:
+        print(f"NOT ASSERTED on a starved machine: {server['overload_warnings']} overload warnings, "
+              f"graceful {find_capacity.graceful(row, 0.0)}")
+    if server["overload_warnings"] != 0 and not args.sanitized and not starved:
         fail("12 clients reported as an overload")
     verdict = find_capacity.graceful(row, 0.0)
-    if not all(verdict.values()):
+    if not all(verdict.values()) and not starved:
         fail(f"an unloaded try is not graceful: {verdict}")
     # The same row as if it had been overloaded: each failure must show in its own line.
     cases = {"admitted_ok": dict(row, admitted_ok_pct=50.0),
