@@ -36,7 +36,8 @@ stage_background() {
   (
     start=$SECONDS
     rc=0
-    nice -n 19 "$@" >"$log" 2>&1 || rc=$?
+    renice -n 19 -p "$BASHPID" >/dev/null  # not nice(1): COMMAND may be a shell function
+    "$@" >"$log" 2>&1 || rc=$?
     echo "$((SECONDS - start)) $rc" >"$_stage_bg_dir/${name//[^A-Za-z0-9]/_}"
   ) &
   _stage_bg_pid[$name]=$!

@@ -3,8 +3,9 @@
 A frame is late either because the server or client is slow, or because the machine gave them no
 CPU: other programs (a compiler, a browser, another test) held both cores. The kernel counts the
 second directly: every thread's run-queue wait, in /proc/PID/task/TID/schedstat (its second
-field, nanoseconds spent runnable but not running). A test samples it over its run and asserts its
-on-time floor only when the wait stayed small; otherwise it prints NOT ASSERTED with both figures.
+field, nanoseconds spent runnable but not running). A test samples it over its run and excuses a
+missed on-time floor only when the wait was large, printing NOT ASSERTED with both figures; a floor
+met is asserted whatever the wait.
 On this 2-core machine, quiet, a load-test scenario's server and clients waited 0.6 % of the run
 (mobile-3g; summed over their threads) and 5.2 % (desktop-lan with desktop-choppy, whose encoder
 and decoder threads take turns); beside one busy loop the desktop run waited 12 %, beside two 28 %."""
@@ -13,8 +14,9 @@ import threading
 import time
 
 # Summed over the measured processes' threads, as a share of the run's wall time: above this the
-# machine is called starved. A quiet run stays far below it, a contended one far above.
-STARVED_WAIT_SHARE = 0.10
+# machine is called starved. Tests side by side within their CPU budgets waited 4.5-22 % in one CI
+# run and every one of them met its floor; a test excuses a missed floor only above this.
+STARVED_WAIT_SHARE = 0.15
 
 
 def _thread_waits(pid):

@@ -279,7 +279,9 @@ TEST_CASE("a two-minute soak of every attack leaves 200 viewers on time through 
     CHECK(log_rate < 4096.0);
     if (kTimingMeasurable) {
       CHECK(static_cast<double>(rss_end) <= 1.2 * static_cast<double>(rss_start));
-      if (machine_kept_up) {
+      // Only a miss is excused, and only when even the unattacked server's clients were late.
+      const bool on_time = number("frames_ok_pct") >= 99.0 && window.on_time_share() >= kOnTimeShare && slowest_health < 0.1;
+      if (on_time || machine_kept_up) {
         CHECK(number("frames_ok_pct") >= 99.0);
         CHECK(window.on_time_share() >= kOnTimeShare);
         CHECK(slowest_health < 0.1);

@@ -81,15 +81,17 @@ def check(scenario, summary, sanitized=False, starved=False):
         print(f"NOT ASSERTED under a sanitizer: frames_ok_pct = {summary['frames_ok_pct']:.2f} "
               f"(floor {OK_PCT_FLOOR[scenario]})", file=sys.stderr)
         return failures
-    if starved:
-        # Other programs held the cores (cpu_wait.py): late frames measure them, not the stream.
-        print(f"NOT ASSERTED on a starved machine: frames_ok_pct = {summary['frames_ok_pct']:.2f} "
-              f"(floor {OK_PCT_FLOOR[scenario]})", file=sys.stderr)
-        return failures
     floor = OK_PCT_FLOOR[scenario]
+    timing = []
     if summary["frames_ok_pct"] < floor:
-        failures.append(f"frames_ok_pct = {summary['frames_ok_pct']:.2f} < {floor}")
-    return failures + SCENARIO_CHECKS.get(scenario, lambda s: [])(summary)
+        timing.append(f"frames_ok_pct = {summary['frames_ok_pct']:.2f} < {floor}")
+    timing += SCENARIO_CHECKS.get(scenario, lambda s: [])(summary)
+    if timing and starved:
+        # Other programs held the cores (cpu_wait.py): a miss measures them, not the stream. Only a
+        # miss is excused: a run that meets its floors on a busy machine still asserts them.
+        print("NOT ASSERTED on a starved machine: " + "; ".join(timing), file=sys.stderr)
+        return failures
+    return failures + timing
 
 
 def main():
