@@ -113,10 +113,14 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
       if (state_ != State::awaiting_welcome) return count_rejection(protocol::Reason::unexpected_message);
       return handle_welcome(protocol::read(*message.body_as_Welcome()), now);
     case wire::Body::UdpReady: {
-      if (state_ != State::streaming || transport != wire::Transport::udp || path_ == Path::tcp) return count_rejection(protocol::Reason::unexpected_message);
+      const bool retrying = path_ == Path::tcp && udp_retry_round_end_ > 0.0;
+      if (state_ != State::streaming || transport != wire::Transport::udp || (path_ == Path::tcp && !retrying))
+        return count_rejection(protocol::Reason::unexpected_message);
       if (message.body_as_UdpReady()->session_id() != welcome_->session_id) {
         return count_rejection(protocol::Reason::bad_session);
       }
+      if (retrying) return return_to_udp(now);
+      if (path_ == Path::udp_proving) udp_since_ = now;
       path_ = Path::udp;  // a repeated UdpReady changes nothing
       return;
     }

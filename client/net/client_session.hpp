@@ -89,6 +89,11 @@ class ClientSession {
   bool tcp_answers(double now);
   void request_keyframe(wire::KeyframeReason reason, double now);
   void fall_back_to_tcp(double now);
+  // On the TCP fallback: runs the rounds of UdpHellos that try UDP again; return_to_udp once one
+  // is answered.
+  void retry_udp(double now);
+  void return_to_udp(double now);
+  bool may_retry_udp() const;
   void close(const std::string& why);
   wire::Transport control_path() const;  // UDP once proven, else TCP
   std::span<const std::uint8_t> aligned(std::span<const std::uint8_t> bytes);
@@ -114,6 +119,10 @@ class ClientSession {
   double welcome_at_ = 0.0;
   double udp_proof_started_ = 0.0;
   double next_udp_hello_ = 0.0;
+  double udp_retry_delay_s_ = 0.0;    // the wait before the next round; 0 = none failed yet
+  double next_udp_retry_ = 0.0;       // when the next round starts (on the TCP fallback)
+  double udp_retry_round_end_ = 0.0;  // the round under way ends then; 0 = none
+  double udp_since_ = 0.0;            // UDP carries the stream since then
   double next_ack_ = 0.0;
   double next_ping_ = 0.0;
   double last_progress_ = 0.0;        // last completed frame (or the Welcome)

@@ -31,6 +31,13 @@ struct ClientSessionConfig {
   // or the silence timeout. A NAT that moved our port is repaired this way: the server moves the
   // stream once the old address has been quiet a while (PROTOCOL.md 5, step 4).
   double udp_reprove_after_s = 0.75;
+  // After a fallback to TCP, UDP is tried again (PROTOCOL.md 5, step 6): a round of UdpHellos as
+  // long as a proof may take, udp_retry_after_s after the fallback, then after twice that, and so
+  // on up to udp_retry_max_s; a UdpReady in a round sends SetTransport{udp} and deltas come on UDP
+  // again. A phone out of a tunnel, or a server back from a stall, so gets its UDP stream back.
+  // The wait starts over once UDP has carried the stream for udp_retry_max_s.
+  double udp_retry_after_s = 1.0;
+  double udp_retry_max_s = 30.0;
   double ping_interval_s = 1.0;         // RTT probe, also the keepalive when no frames arrive
   double keyframe_retry_s = 1.0;        // at most one KeyframeRequest this often (servers rate-limit too)
   double startup_keyframe_after_s = 1.0;  // no frame this long after the Welcome: KeyframeRequest{startup}

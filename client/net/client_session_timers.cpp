@@ -87,6 +87,40 @@ void ClientSession::fall_back_to_tcp(double now) {
   ++stats_.transport_fallbacks;
   path_ = Path::tcp;
   last_progress_ = std::max(last_progress_, now);  // the server answers with a keyframe on TCP
+  // A fallback soon after a return means UDP still fails: wait longer before the next try.
+  udp_retry_delay_s_ = udp_retry_delay_s_ == 0.0 ? config_.udp_retry_after_s
+                                                 : std::min(2.0 * udp_retry_delay_s_, config_.udp_retry_max_s);
+  next_udp_retry_ = now + udp_retry_delay_s_;
+  udp_retry_round_end_ = 0.0;
+}
+
+bool ClientSession::may_retry_udp() const {
+  return path_ == Path::tcp && config_.transport == wire::Transport::udp && welcome_ && welcome_->udp_port != 0 &&
+         config_.udp_retry_after_s > 0.0;
+}
+
+void ClientSession::retry_udp(double now) {
+  if (udp_retry_round_end_ == 0.0) {
+    if (now < next_udp_retry_) return;
+    udp_retry_round_end_ = now + config_.udp_proof_timeout_s;
+    return send_udp_hello(now);
+  }
+  if (now >= udp_retry_round_end_) {  // no UdpReady: the path still fails
+    udp_retry_round_end_ = 0.0;
+    udp_retry_delay_s_ = std::min(2.0 * udp_retry_delay_s_, config_.udp_retry_max_s);
+    next_udp_retry_ = now + udp_retry_delay_s_;
+  } else if (now >= next_udp_hello_) {
+    send_udp_hello(now);
+  }
+}
+
+void ClientSession::return_to_udp(double now) {
+  send(protocol::encode(protocol::SetTransport{wire::Transport::udp}), wire::Transport::tcp);
+  ++stats_.transport_returns;
+  path_ = Path::udp;
+  last_udp_rx_ = udp_since_ = now;
+  udp_retry_round_end_ = 0.0;
+  tcp_probe_ = TcpProbe{};
 }
 
 void ClientSession::update(double now) {
@@ -95,6 +129,9 @@ void ClientSession::update(double now) {
   if (state_ != State::streaming) return;
   if (now - last_rx_ >= config_.idle_timeout_s) return close("the server was silent for idle_timeout_s");
 
+  if (path_ == Path::udp && udp_retry_delay_s_ > 0.0 && now - udp_since_ >= config_.udp_retry_max_s)
+    udp_retry_delay_s_ = 0.0;  // UDP has held a while: a later fallback starts with a short wait
+  if (may_retry_udp()) retry_udp(now);
   if (path_ == Path::udp_proving || path_ == Path::udp) {
     // No UdpReady in time, or a silent UDP path: TCP only if TCP answers meanwhile. A server
     // that stalls (overload, a pause) silences both paths, and a fallback would only add a
@@ -136,6 +173,9 @@ double ClientSession::next_due() const {
   else if (path_ == Path::udp)
     due = std::min({due, last_udp_rx_ + config_.udp_silence_timeout_s,
                     std::max(last_udp_rx_ + config_.udp_reprove_after_s, next_udp_hello_)});
+  else if (may_retry_udp())
+    due = std::min(due, udp_retry_round_end_ == 0.0 ? next_udp_retry_ : std::min(udp_retry_round_end_, next_udp_hello_));
+  if (path_ == Path::udp && udp_retry_delay_s_ > 0.0) due = std::min(due, udp_since_ + config_.udp_retry_max_s);
   const double keyframe_at = decoder_->newest_complete()
                                  ? last_progress_ + config_.stuck_ticks * welcome_->tick_period_s
                                  : welcome_at_ + config_.startup_keyframe_after_s;

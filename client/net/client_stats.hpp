@@ -41,6 +41,7 @@ struct ClientStats {
   std::uint64_t keyframe_requests_sent = 0;
   std::uint64_t udp_hellos_sent = 0;
   std::uint64_t transport_fallbacks = 0;  // SetTransport{tcp} sent
+  std::uint64_t transport_returns = 0;    // SetTransport{udp} sent: back on UDP after a fallback
   std::uint64_t pings_sent = 0;
   std::uint64_t pongs_received = 0;
   std::uint64_t errors_received = 0;      // Error messages from the server
