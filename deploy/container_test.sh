@@ -198,7 +198,7 @@ mport=$(free_port)
 say "running $image as $name (ports 127.0.0.1:$port tcp+udp, metrics 127.0.0.1:$mport)"
 pm run -d --name "$name" --read-only --cap-drop=ALL --security-opt no-new-privileges \
   -p "127.0.0.1:$port:7700/tcp" -p "127.0.0.1:$port:7700/udp" -p "127.0.0.1:$mport:9464/tcp" \
-  "$image" --max-clients 200 --udp-public-port "$port" > /dev/null 2> "$work/run.log" || { cat "$work/run.log" >&2; fail "podman run of $image failed"; }
+  "$image" --max-clients 200 --max-connections-per-ip 0 --connect-rate-per-ip 0 --udp-public-port "$port" > /dev/null 2> "$work/run.log" || { cat "$work/run.log" >&2; fail "podman run of $image failed"; }
 t0=$SECONDS
 wait_ready "http://127.0.0.1:$mport/readyz" "$name"
 say "/readyz answered 200 after $((SECONDS - t0)) s"

@@ -42,6 +42,7 @@ constexpr ReasonEntry kEntries[] = {
     {Reason::unauthorized, wire::ErrorCode::unauthorized, "unauthorized"},
     {Reason::timeout, wire::ErrorCode::timeout, "timeout"},
     {Reason::internal_error, wire::ErrorCode::internal_error, "internal_error"},
+    {Reason::rate_limited, wire::ErrorCode::rate_limited, "rate_limited"},
 };
 
 // Each row pairs a Reason with the schema value of the same name; both must sit at the row's

@@ -46,9 +46,10 @@ enum class Reason : std::uint8_t {
   unauthorized = 26,         // ParamChange with a wrong admin token
   timeout = 27,              // the peer was silent longer than the server's idle limit
   internal_error = 28,       // the server failed; retrying later may help
+  rate_limited = 29,         // a ParamChange beyond the admin rate (the text says when to retry)
 };
 
-inline constexpr std::uint8_t kReasonCount = 29;
+inline constexpr std::uint8_t kReasonCount = 30;
 
 // Stable snake_case name, e.g. "bad_chunk_index", for logs and metrics labels.
 std::string_view to_string(Reason reason);

@@ -1,10 +1,12 @@
-// ocean-server: loads the configuration, then runs the Server until SIGINT or SIGTERM.
+// ocean-server: loads the configuration, then runs the Server until SIGINT or SIGTERM (SIGHUP is
+// logged and ignored, SIGPIPE ignored).
 // The one place exceptions are caught. Exit status (README-server.md): 0 stopped by a signal,
 // 2 a bad option or configuration (also those found only when the server is built: an epoch too
 // far from now, no streamable profile), 1 a failure at run time (an address in use...). Every
 // error goes to stderr as "ocean-server: message".
 #include "config_loader.hpp"
 #include "config_options.hpp"
+#include "log_sink.hpp"
 #include "server.hpp"
 #include "server_log.hpp"
 #include "session_hub.hpp"
@@ -33,6 +35,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    ocean::server::install_log_sink();  // a log pipe whose reader goes away is counted, never fatal
     ocean::server::set_log_level(loaded.config.log_level);
     spdlog::info("ocean-server starting: {}", ocean::server::describe_config(loaded.config));
     const ocean::sim::SceneParams& scene = loaded.config.scene;

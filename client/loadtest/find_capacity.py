@@ -103,11 +103,12 @@ def run_in(args, clients, workdir):
     metrics_port = local_server.free_port()
     server_args, loadtest_args = stream_args(args, ramp, workdir)
     # --max-clients above N: the limit under test is what the server can serve, not a setting
-    # (admission control, where the server has it, decides by itself).
+    # (admission control, where the server has it, decides by itself). Every client comes from
+    # this host's one address: no per-address limits.
     # taskset execs the server, so the pid the load test reads /proc for is the server's.
     argv = pinned(args.server_cpus, [os.path.join(args.build, "server/ocean-server"), "--listen", f"127.0.0.1:{port}",
-                                     "--metrics-listen", f"127.0.0.1:{metrics_port}", "--max-clients", str(clients + 16), "--log-level",
-                                     "warn"] + server_args + args.server_arg)
+                                     "--metrics-listen", f"127.0.0.1:{metrics_port}", "--max-clients", str(clients + 16),
+                                     "--max-connections-per-ip", "0", "--connect-rate-per-ip", "0", "--log-level", "warn"] + server_args + args.server_arg)
     server = local_server.start(argv[0], argv[1:], port, ready_url=f"http://127.0.0.1:{metrics_port}/readyz")
     started = time.monotonic()
     metrics = ""

@@ -55,6 +55,30 @@ void Encoder::set_scene(Tick from, std::uint8_t tag, const SceneModelParams& sce
   predictions_.clear();
 }
 
+namespace {
+
+// Copies a field, clamping values beyond the stream's 2^20 steps to the last step and non-finite
+// ones to 0; returns how many it changed. A scene the server let through should never need it
+// (server/net/servable_scene.hpp): if one does, its stream degrades there and says so, instead of
+// stopping the server.
+std::uint64_t clamped_copy(std::span<const float> in, float step, std::vector<float>& out) {
+  const float limit = static_cast<float>(std::ldexp(static_cast<double>(step), 20) - static_cast<double>(step));
+  std::uint64_t clamped = 0;
+  out.resize(in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const float v = in[i];
+    if (std::fabs(v) <= limit) {
+      out[i] = v;
+      continue;
+    }
+    ++clamped;
+    out[i] = std::isnan(v) ? 0.0f : std::copysign(limit, v);
+  }
+  return clamped;
+}
+
+}  // namespace
+
 void Encoder::add_truth(Tick tick, const TruthView& truth) {
   const std::size_t nn = model_.samples();
   if (truth.height.size() != nn)
@@ -63,46 +87,23 @@ void Encoder::add_truth(Tick tick, const TruthView& truth) {
   if (config_.normals && (truth.slope_x.size() != nn || truth.slope_z.size() != nn))
     throw std::invalid_argument("Encoder::add_truth: slope_x and slope_z need " + std::to_string(nn) +
                                 " samples each when the stream has normals");
-  const double limit = std::ldexp(static_cast<double>(config_.height_step_m), 20);
-  for (float h : truth.height)
-    if (!(std::fabs(h) < limit))
-      throw std::invalid_argument("Encoder::add_truth: height " + std::to_string(h) +
-                                  " m is not finite or beyond 2^20 height steps");
-  if (config_.normals) {
-    const double slope_limit = std::ldexp(static_cast<double>(config_.slope_step), 20);
-    for (std::span<const float> s : {truth.slope_x, truth.slope_z})
-      for (float v : s)
-        if (!(std::fabs(v) < slope_limit))
-          throw std::invalid_argument("Encoder::add_truth: slope " + std::to_string(v) +
-                                      " is not finite or beyond 2^20 slope steps");
-  }
-  if (config_.choppy) {
-    const std::span<const float> fields[5] = {truth.disp_x, truth.disp_z, truth.disp_xx, truth.disp_zz, truth.disp_xz};
-    for (int j = 0; j < 5; ++j) {
-      if (fields[j].size() != nn)
+  const std::span<const float> disp[5] = {truth.disp_x, truth.disp_z, truth.disp_xx, truth.disp_zz, truth.disp_xz};
+  if (config_.choppy)
+    for (const auto& field : disp)
+      if (field.size() != nn)
         throw std::invalid_argument("Encoder::add_truth: the displacement and its three derivatives need " +
                                     std::to_string(nn) + " samples each when the stream is choppy");
-      const double limit_j = std::ldexp(static_cast<double>(j < 2 ? config_.disp_step_m : config_.slope_step), 20);
-      for (float v : fields[j])
-        if (!(std::fabs(v) < limit_j))
-          throw std::invalid_argument(std::string("Encoder::add_truth: ") + (j < 2 ? "displacement " : "displacement derivative ") +
-                                      std::to_string(v) + " is not finite or beyond 2^20 steps");
-    }
-  }
-  if (tick == predictions_tick_) predictions_.clear();  // corrected against the truth it replaces
   TruthFrame& f = truth_[tick];
-  f.height.assign(truth.height.begin(), truth.height.end());
+  saturated_ += clamped_copy(truth.height, config_.height_step_m, f.height);
   if (config_.normals) {
-    f.slope_x.assign(truth.slope_x.begin(), truth.slope_x.end());
-    f.slope_z.assign(truth.slope_z.begin(), truth.slope_z.end());
+    saturated_ += clamped_copy(truth.slope_x, config_.slope_step, f.slope_x);
+    saturated_ += clamped_copy(truth.slope_z, config_.slope_step, f.slope_z);
   }
   if (config_.choppy) {
-    f.disp_x.assign(truth.disp_x.begin(), truth.disp_x.end());
-    f.disp_z.assign(truth.disp_z.begin(), truth.disp_z.end());
-    f.disp_xx.assign(truth.disp_xx.begin(), truth.disp_xx.end());
-    f.disp_zz.assign(truth.disp_zz.begin(), truth.disp_zz.end());
-    f.disp_xz.assign(truth.disp_xz.begin(), truth.disp_xz.end());
+    std::vector<float>* to[5] = {&f.disp_x, &f.disp_z, &f.disp_xx, &f.disp_zz, &f.disp_xz};
+    for (int j = 0; j < 5; ++j) saturated_ += clamped_copy(disp[j], j < 2 ? config_.disp_step_m : config_.slope_step, *to[j]);
   }
+  if (tick == predictions_tick_) predictions_.clear();  // corrected against the truth it replaces
   if (!have_truth_ || tick > newest_) newest_ = tick;
   have_truth_ = true;
   evict();

@@ -75,10 +75,17 @@ class Encoder {
   // first encode, and announced to the decoders before any frame of its ticks reaches them.
   void set_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene);
   const SceneTimeline& scenes() const { return scenes_; }
+  // That scene's model, built ahead elsewhere (SceneTimeline::provide_model): the first frame of
+  // a new scene then costs no model build (a desktop stream's took 50-100 ms).
+  void provide_scene_model(Tick from, const SceneModelParams& scene, std::shared_ptr<const SceneModel> model) {
+    scenes_.provide_model(from, scene, std::move(model));
+  }
 
   // Stores the truth for a tick (copied). Ticks older than newest - history_ticks are evicted
-  // together with their states.
+  // together with their states. A value beyond the stream's 2^20 steps (or not finite) is clamped
+  // to the last step (0) and counted in saturated_samples(); wrong sizes throw invalid_argument.
   void add_truth(Tick tick, const TruthView& truth);
+  std::uint64_t saturated_samples() const { return saturated_; }
 
   // A key needs the truth of its tick (and of tick - 1 when the scene model misses the truth and
   // explicit coefficients are sent). Throws std::invalid_argument when the truth is missing.
@@ -140,6 +147,7 @@ class Encoder {
   Tick newest_ = 0;
   bool have_truth_ = false;
   SampleFields fields_;  // scratch
+  std::uint64_t saturated_ = 0;
 };
 
 }  // namespace ocean::codec

@@ -46,10 +46,17 @@ Tick SceneTimeline::start_of(Tick tick) const {
   return std::prev(it)->first;
 }
 
-StreamConfig SceneTimeline::with_depth(const Held& held) const {
+StreamConfig SceneTimeline::with_depth(const Held& held) const { return model_config(held.entry.scene); }
+
+StreamConfig SceneTimeline::model_config(const SceneModelParams& scene) const {
   StreamConfig c = config_;
-  c.depth_m = held.entry.scene.depth_m;
+  c.depth_m = scene.depth_m;
   return c;
+}
+
+void SceneTimeline::provide_model(Tick from, const SceneModelParams& scene, std::shared_ptr<const SceneModel> model) {
+  const auto it = entries_.find(from);
+  if (it != entries_.end() && it->second->entry.scene == scene && !it->second->model) it->second->model = std::move(model);
 }
 
 const SceneModel& SceneTimeline::model_of(const Held& held) const {

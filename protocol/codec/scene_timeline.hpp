@@ -52,6 +52,11 @@ class SceneTimeline {
   // Models come from `cache` (not owned; it must outlive this timeline) instead of being built
   // here: for decoders sharing a DecodeMemo.
   void share_models(ModelCache* cache) { cache_ = cache; }
+  // The config a scene's model is built with (this stream's, with the scene's depth), and a model
+  // built elsewhere (another thread, ahead of its tick) for the entry from `from`: ignored unless
+  // that entry still holds `scene`. Without it the model is built here on first use.
+  StreamConfig model_config(const SceneModelParams& scene) const;
+  void provide_model(Tick from, const SceneModelParams& scene, std::shared_ptr<const SceneModel> model);
 
   // Forgets entries no longer in force at `tick` or later.
   void forget_before(Tick tick);

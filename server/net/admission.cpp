@@ -43,26 +43,4 @@ void Admission::forget_if_empty(std::map<asio::ip::address, PerAddress>::iterato
   if (it->second.handshaking == 0 && it->second.connections == 0) by_address_.erase(it);
 }
 
-bool Admission::token_failure(const asio::ip::address& address, double now_s) {
-  if (!tokens_.count(address)) make_token_room(now_s);
-  Tokens& mine = tokens_[address];
-  if (mine.failures == 0 || now_s - mine.window_start_s >= limits_.token_window_s) mine = Tokens{0, now_s};
-  ++mine.failures;
-  return mine.failures >= limits_.token_failures_per_address;
-}
-
-bool Admission::tokens_blocked(const asio::ip::address& address, double now_s) const {
-  const auto it = tokens_.find(address);
-  return it != tokens_.end() && it->second.failures >= limits_.token_failures_per_address &&
-         now_s - it->second.window_start_s < limits_.token_window_s;
-}
-
-// Expired windows go first; if every entry is live, the table is full of guessers, and forgetting
-// one of them (the lowest address) only gives that address a fresh budget of a few guesses.
-void Admission::make_token_room(double now_s) {
-  if (tokens_.size() < limits_.max_token_addresses) return;
-  std::erase_if(tokens_, [&](const auto& entry) { return now_s - entry.second.window_start_s >= limits_.token_window_s; });
-  if (tokens_.size() >= limits_.max_token_addresses) tokens_.erase(tokens_.begin());
-}
-
 }  // namespace ocean::server

@@ -277,9 +277,16 @@ const ConfigOption kOptions[] = {
     {"max-handshakes-per-ip", "N", "of those, most from one IP address, in 1..--max-handshakes", ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_handshakes_per_ip); },
      [](const ServerConfig& c) { return std::to_string(c.max_handshakes_per_ip); }},
-    {"max-connections-per-ip", "N", "most connections from one IP address, welcomed or not, in 0..100000; 0 = no limit",
+    {"max-connections-per-ip", "N",
+     "most connections from one IP address, welcomed or not, in 0..100000 (default 64; 0 = no limit): raise it where "
+     "many viewers share an address (a carrier NAT, a proxy, a load test from one host)",
      ValueKind::integer, false, [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.max_connections_per_ip); },
      [](const ServerConfig& c) { return std::to_string(c.max_connections_per_ip); }},
+    {"connect-rate-per-ip", "N",
+     "new connections per second from one address range (IPv4 /24, IPv6 /64; a burst of twice that), in 0..100000 "
+     "(default 50; 0 = no limit); beyond it a connection is closed at accept, before it costs a session",
+     ValueKind::number, false, [](ServerConfig& c, std::string_view v) { return parse_number(v, c.connect_rate_per_ip); },
+     [](const ServerConfig& c) { return show_number(c.connect_rate_per_ip); }},
     {"handshake-timeout", "SECONDS", "close a connection that sends no Hello for this long, in (0, 60]", ValueKind::number,
      false, [](ServerConfig& c, std::string_view v) { return parse_number(v, c.handshake_timeout_s); },
      [](const ServerConfig& c) { return show_number(c.handshake_timeout_s); }},

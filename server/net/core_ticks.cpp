@@ -36,14 +36,29 @@ void SessionCore::announce(const std::vector<AnnouncedScene>& scenes, std::optio
   }
 }
 
+// A frame whose values its stream cannot carry is clamped, never fatal (a scene that slipped past
+// servable_scene): that stream's viewers see those waves flattened, and the log and
+// ocean_samples_saturated_total say so.
+void SessionCore::add_truth(ProfileStream& stream, const sim::Frame& frame) {
+  const std::uint64_t before = stream.saturated_samples();
+  stream.add_truth(tick_, frame);
+  const std::uint64_t clamped = stream.saturated_samples() - before;
+  if (clamped == 0) return;
+  host_.metrics.samples_saturated(stream.profile().name).inc(static_cast<double>(clamped));
+  log_limited(spdlog::level::err, "stream_saturated", stream.profile().name,
+              "tick {}: profile {} clamped {} samples beyond its 2^20 quantization steps; its viewers see those waves "
+              "flattened", tick_, stream.profile().name, clamped);
+}
+
 void SessionCore::on_frames(const std::shared_ptr<const TickFrames>& frames, const Instant& now) {
   if (stopping_) return;
   tick_ = static_cast<Tick>(frames->tick);
+  check_admin_changes(now);  // token checks and changes waiting for the admin budget
   announce(scenes_.announce(tick_));
   scenes_.forget_before(tick_ > protocol::kMaxFrameLag ? tick_ - protocol::kMaxFrameLag : 0);
   for (auto& stream : streams_)
     for (const ProfileFrame& frame : frames->frames)
-      if (frame.profile == &stream->profile()) stream->add_truth(tick_, frame.frame);
+      if (frame.profile == &stream->profile()) add_truth(*stream, frame.frame);
 
   bundles_.clear();  // the bytes of last tick's bundles stay alive while queued
   std::vector<std::pair<const void*, codec::StateId>> bases;

@@ -28,9 +28,9 @@ const char* reason_phrase(int status) {
 std::string HttpReply::to_wire(bool include_body) const {
   std::string out = "HTTP/1.1 " + std::to_string(status) + " " + reason_phrase(status) + "\r\n";
   out += "Content-Type: " + content_type + "\r\n";
-  out += "Content-Length: " + std::to_string(body.size()) + "\r\n";
+  out += "Content-Length: " + std::to_string(content().size()) + "\r\n";
   out += "Connection: close\r\n\r\n";
-  if (include_body) out += body;
+  if (include_body && !shared_body) out += body;
   return out;
 }
 
@@ -63,6 +63,11 @@ void HttpConnection::arm_deadline(std::chrono::steady_clock::duration limit) {
   });
 }
 
+void HttpConnection::evict() {
+  refused("http_evicted");
+  finish();
+}
+
 void HttpConnection::stop() {
   std::error_code ignored;
   deadline_.cancel();
@@ -90,10 +95,15 @@ void HttpConnection::do_read() {
 }
 
 void HttpConnection::do_write(const HttpReply& reply, bool include_body) {
+  writing_ = true;
   reply_bytes_ = reply.to_wire(include_body);
+  if (include_body) reply_body_ = reply.shared_body;
+  const std::size_t size = reply_bytes_.size() + (reply_body_ ? reply_body_->size() : 0);
   arm_deadline(kRequestDeadline + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(static_cast<double>(reply_bytes_.size()) / kSlowestReplyBytesPerS)));
-  asio::async_write(socket_, asio::buffer(reply_bytes_), [self = shared_from_this()](std::error_code error, std::size_t) {
+                                      std::chrono::duration<double>(static_cast<double>(size) / kSlowestReplyBytesPerS)));
+  const std::array<asio::const_buffer, 2> buffers{asio::buffer(reply_bytes_),
+                                                  reply_body_ ? asio::buffer(*reply_body_) : asio::const_buffer()};
+  asio::async_write(socket_, buffers, [self = shared_from_this()](std::error_code error, std::size_t) {
     if (!error) {
       std::error_code ignored;
       self->socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);

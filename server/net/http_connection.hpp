@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 namespace ocean::server {
@@ -20,21 +21,31 @@ struct HttpReply {
   int status = 200;
   std::string content_type = "text/plain; charset=utf-8";
   std::string body;
+  // A large body every reply shares instead of `body` (the web viewer's files): a connection then
+  // holds a pointer to it, not a copy, so many slow downloads cost little memory.
+  std::shared_ptr<const std::string> shared_body = nullptr;
 
-  std::string to_wire(bool include_body) const;  // status line, headers, body
+  std::string_view content() const { return shared_body ? std::string_view(*shared_body) : std::string_view(body); }
+  // The status line and headers, then `body` when include_body and the body is not shared.
+  std::string to_wire(bool include_body) const;
 };
 
 class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
  public:
   using Handler = std::function<HttpReply(const HttpRequest&)>;
   using DoneCallback = std::function<void(const std::shared_ptr<HttpConnection>&)>;
-  // A request refused for the client's fault: "http_bad_request", "http_method" or "http_timeout".
+  // A request refused for the client's fault: "http_bad_request", "http_method", "http_timeout" or
+  // "http_evicted" (HttpServer made room for a newcomer).
   using RefusedCallback = std::function<void(std::string_view reason, const std::string& peer)>;
 
   HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done, RefusedCallback on_refused = {});
 
   void start();
   void stop();  // closes the socket; pending operations complete with an error
+  // Still waiting for its request (not yet writing a reply): what a slow or silent client holds.
+  bool reading() const { return !writing_ && !finished_; }
+  std::chrono::steady_clock::time_point opened() const { return opened_; }
+  void evict();  // closes it as http_evicted
 
  private:
   void arm_deadline(std::chrono::steady_clock::duration limit);  // then: http_timeout, closed
@@ -51,6 +62,9 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   HttpRequestParser parser_;
   std::array<char, 2048> read_buffer_{};
   std::string reply_bytes_;
+  std::shared_ptr<const std::string> reply_body_;  // a shared body, written after reply_bytes_
+  std::chrono::steady_clock::time_point opened_ = std::chrono::steady_clock::now();
+  bool writing_ = false;
   bool finished_ = false;
 };
 

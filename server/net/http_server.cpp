@@ -37,6 +37,13 @@ void HttpServer::stop() {
   connections_.clear();
 }
 
+void HttpServer::evict_oldest_reader() {
+  std::shared_ptr<HttpConnection> oldest;
+  for (const auto& connection : connections_)
+    if (connection->reading() && (!oldest || connection->opened() < oldest->opened())) oldest = connection;
+  if (oldest) oldest->evict();  // its done callback takes it out of connections_
+}
+
 void HttpServer::do_accept() {
   acceptor_.async_accept([this](std::error_code error, asio::ip::tcp::socket socket) {
     if (!acceptor_.is_open()) return;  // stopped
@@ -53,14 +60,19 @@ void HttpServer::do_accept() {
   });
 }
 
-// One host may hold an eighth of the connections only, so it cannot keep out everyone else.
+// One host may hold an eighth of the connections only, so it cannot keep out everyone else; and
+// when every connection is taken, the one that has waited longest for its request (slowloris,
+// a silent socket) makes room for the newcomer: a reader that sends nothing useful cannot keep the
+// page from anyone, while downloads under way are never cut.
 void HttpServer::admit(asio::ip::tcp::socket socket) {
   std::error_code ignored;
   const asio::ip::address peer = socket.remote_endpoint(ignored).address();
   const bool limited = max_connections_ > 0;
   const auto held = per_host_.find(peer);
   const std::size_t from_peer = held == per_host_.end() ? 0 : held->second;
-  if (limited && (connections_.size() >= max_connections_ || from_peer >= std::max<std::size_t>(1, max_connections_ / 8))) {
+  const bool host_full = from_peer >= std::max<std::size_t>(1, max_connections_ / 8);
+  if (limited && !host_full && connections_.size() >= max_connections_) evict_oldest_reader();
+  if (limited && (connections_.size() >= max_connections_ || host_full)) {
     if (on_refused_) on_refused_("http_busy", peer.to_string());
     socket.close(ignored);
     return;

@@ -20,8 +20,9 @@ namespace ocean::server {
 class HttpServer {
  public:
   // Binds at once; throws std::system_error naming the address when it cannot. max_connections
-  // (0: no limit) bounds the open connections, each of which may hold a whole reply, and one host
-  // may hold an eighth of them; one more is closed at once and counted as http_busy.
+  // (0: no limit) bounds the open connections, and one host may hold an eighth of them; one more
+  // from a host at its share is closed at once and counted as http_busy, one more when all are
+  // taken closes the connection that has waited longest for its request (http_evicted).
   HttpServer(asio::io_context& context, const ListenAddress& address, HttpConnection::Handler handler,
                     std::size_t max_connections = 0, std::string_view purpose = "metrics");
 
@@ -33,6 +34,7 @@ class HttpServer {
  private:
   void do_accept();
   void admit(asio::ip::tcp::socket socket);  // or refuse it as http_busy
+  void evict_oldest_reader();
 
   asio::ip::tcp::acceptor acceptor_;
   asio::steady_timer backoff_;  // after EMFILE

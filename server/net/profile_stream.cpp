@@ -31,9 +31,23 @@ ProfileStream::ProfileStream(const Profile& profile, const codec::StreamConfig& 
 
 void ProfileStream::set_scene(Tick from, std::uint32_t serial, const codec::SceneModelParams& scene) {
   encoder_->set_scene(from, static_cast<std::uint8_t>(serial), scene);
+  const codec::StreamConfig config = encoder_->scenes().model_config(scene);
+  pending_models_.push_back({from, scene, std::async(std::launch::async, [config, scene] {
+                               return std::make_shared<const codec::SceneModel>(config, scene);
+                             })});
 }
 
 void ProfileStream::add_truth(Tick tick, const sim::Frame& frame) {
+  // Models built ahead go to the encoder; one that failed is built (and its error met) by the
+  // encoder itself when needed, as before.
+  std::erase_if(pending_models_, [this](PendingModel& p) {
+    if (p.model.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
+    try {
+      encoder_->provide_scene_model(p.from, p.scene, p.model.get());
+    } catch (const std::exception&) {
+    }
+    return true;
+  });
   encoded_.clear();
   encode_seconds_ = 0.0;
   encoder_->add_truth(tick, codec::TruthView{frame.height, frame.slope_x, frame.slope_z, frame.disp_x, frame.disp_z,

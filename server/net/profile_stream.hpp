@@ -14,6 +14,7 @@
 #include "stream_config.hpp"
 
 #include <cstdint>
+#include <future>
 #include <map>
 #include <memory>
 #include <vector>
@@ -43,11 +44,16 @@ class ProfileStream {
   std::uint32_t tick_step() const { return tick_step_; }
   bool is_frame_tick(Tick tick) const { return tick % tick_step_ == 0; }
 
-  // A scene announced to the clients (SceneUpdate), in force from tick `from` on.
+  // A scene announced to the clients (SceneUpdate), in force from tick `from` on. Its scene model
+  // is built on a thread of its own meanwhile (the lead gives it a second) and handed to the
+  // encoder when done: built at its first frame on the network thread instead, a desktop stream's
+  // stalled every viewer's tick by about 100 ms.
   void set_scene(Tick from, std::uint32_t serial, const codec::SceneModelParams& scene);
 
   // Every tick. Forgets the previous tick's encodings.
   void add_truth(Tick tick, const sim::Frame& frame);
+  // Samples the encoder clamped to its 2^20 steps so far (codec::Encoder::add_truth).
+  std::uint64_t saturated_samples() const { return encoder_->saturated_samples(); }
 
   // A key of the newest tick added (the scene model's state plus corrections).
   bool can_key(Tick tick) const { return have_newest_ && newest_tick_ == tick; }
@@ -78,6 +84,12 @@ class ProfileStream {
   Tick newest_tick_ = 0;
   bool have_newest_ = false;
   double mean_delta_bytes_ = 0.0;
+  struct PendingModel {
+    Tick from;
+    codec::SceneModelParams scene;
+    std::future<std::shared_ptr<const codec::SceneModel>> model;
+  };
+  std::vector<PendingModel> pending_models_;  // being built; handed over by add_truth when ready
 };
 
 // The codec options every stream uses: chunks that fit one UDP datagram as a FrameChunk.

@@ -71,7 +71,7 @@ ListenAddress udp_address(const ServerConfig& config, std::uint16_t tcp_port) {
 
 Server::Server(ServerConfig config)
     : config_(std::move(config)),
-      signals_(context_, SIGINT, SIGTERM),
+      signals_(context_, SIGINT, SIGTERM, SIGHUP),
       metrics_(registry_),
       cookie_key_(cookie_key_from(config_)),
       tcp_(context_, open_tcp_acceptor(context_, config_.listen, "clients"), StreamKind::tcp),
@@ -197,6 +197,14 @@ void Server::stop() {
 void Server::do_await_stop() {
   signals_.async_wait([this](std::error_code error, int signal_number) {
     if (error) return;  // cancelled by do_stop
+    if (signal_number == SIGHUP) {
+      // Tools and operators send it expecting a reload, or nothing; it must never stop a server.
+      // Every setting is read at start, so there is nothing to reload: say so, go on serving.
+      metrics_.sighups.inc();
+      spdlog::info("signal SIGHUP received: nothing to reload (the configuration is read at start; restart the "
+                   "server to change it); still serving");
+      return do_await_stop();
+    }
     spdlog::info("signal {} received, shutting down", signal_number == SIGINT ? "SIGINT" : "SIGTERM");
     do_stop();
   });

@@ -4,6 +4,7 @@
 
 #include "config_options.hpp"
 #include "profile.hpp"
+#include "servable_scene.hpp"
 
 #include <spdlog/common.h>
 
@@ -83,6 +84,9 @@ std::string validate_server_config(const ServerConfig& config) {
   if (config.max_connections_per_ip < 0 || config.max_connections_per_ip > kMaxClientsLimit)
     return "--max-connections-per-ip " + std::to_string(config.max_connections_per_ip) + ": must be in 0.." +
            std::to_string(kMaxClientsLimit) + " (0 = no limit)";
+  if (!(config.connect_rate_per_ip >= 0.0) || config.connect_rate_per_ip > kMaxClientsLimit)
+    return "--connect-rate-per-ip " + std::to_string(config.connect_rate_per_ip) + ": must be in 0.." +
+           std::to_string(kMaxClientsLimit) + " connections a second (0 = no limit)";
   if (!(config.handshake_timeout_s > 0.0) || config.handshake_timeout_s > 60.0)
     return "--handshake-timeout " + std::to_string(config.handshake_timeout_s) + ": must be in (0, 60] seconds";
   if (config.udp_redundancy < 0 || config.udp_redundancy > kMaxUdpRedundancy)
@@ -96,7 +100,16 @@ std::string validate_server_config(const ServerConfig& config) {
     return "--admin-token-file '" + config.admin_token_file + "': the token is empty";
   if (config.web_listen && !config.ws_listen)
     return "--web-listen serves the browser viewer, which connects over WebSocket: give --ws-listen too";
-  return validate_profiles(config);
+  if (std::string error = validate_profiles(config); !error.empty()) return error;
+  // Every scene it will compute, the scheduled ones too, must fit every offered stream.
+  std::vector<const Profile*> offered;
+  for (const std::string& name : config.profiles) offered.push_back(find_profile(std::string_view(name)));
+  if (std::string error = servable_scene(config.scene, offered); !error.empty()) return "the scene: " + error;
+  for (std::size_t i = 0; i < schedule.changes().size(); ++i)
+    if (std::string error = servable_scene(schedule.changes()[i].scene, offered); !error.empty())
+      return "schedule entry " + std::to_string(i + 1) + " (tick " + std::to_string(schedule.changes()[i].tick) +
+             "): " + error;
+  return {};
 }
 
 SceneSchedule make_schedule(const ServerConfig& config, std::string& error) {

@@ -57,10 +57,15 @@ struct ServerConfig {
   // refused (AdmissionBudget); none: only max_clients.
   std::optional<double> admission_target = 0.85;  // AdmissionBudget::kDefaultTarget
   // Connections before their Hello (they never hold a viewer slot): all of them, per address, and
-  // how long one may stay silent. Per-address connections, welcomed or not: 0 = no limit (NAT).
+  // how long one may stay silent.
   int max_handshakes = 256;
   int max_handshakes_per_ip = 32;
-  int max_connections_per_ip = 0;
+  // 64: one address cannot hold every viewer slot (300 WebSocket sessions from one did, with no
+  // limit); behind a carrier NAT or a proxy that many viewers may share one, so raise it there.
+  int max_connections_per_ip = 64;
+  // New connections per second from one address range (an IPv4 /24, an IPv6 /64), a burst of
+  // twice that; beyond it a connection is closed at accept (ConnectRate). 0 = no limit.
+  double connect_rate_per_ip = 50.0;
   double handshake_timeout_s = 3.0;
   int udp_redundancy = 2;                         // earlier unacked frames copied into each datagram
   std::string admin_token_file;                   // empty = admin interface disabled

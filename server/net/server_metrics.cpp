@@ -1,5 +1,7 @@
 #include "server_metrics.hpp"
 
+#include "log_sink.hpp"
+
 #include "chunk_format.hpp"
 #include "protocol_version.hpp"
 
@@ -74,6 +76,9 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
                                            "UdpHellos refused because they would move a live proven address.")),
       udp_rebinds_reclaimed(registry.counter("ocean_udp_rebinds_reclaimed_total",
                                              "UDP moves undone because the address moved away from spoke again.")),
+      sighups(registry.counter("ocean_sighups_total", "SIGHUPs received: logged, nothing reloaded, still serving.")),
+      log_write_failures(registry.counter("ocean_log_write_failures_total",
+                                          "Log lines that could not be written (the log's reader gone, a full disk).")),
       registry_(registry),
       resident_bytes_(registry.gauge("process_resident_memory_bytes", "Resident memory of the server process, bytes.")),
       cpu_seconds_(registry.gauge("process_cpu_seconds_total", "User and system CPU time of the server process, seconds.")),
@@ -93,6 +98,7 @@ Summary& ServerMetrics::encode_seconds(std::string_view profile) {
 }
 
 void ServerMetrics::update_process() {
+  log_write_failures.inc(static_cast<double>(LogSink::failed_writes()) - log_write_failures.value());
   // /proc/self/stat fields 14 and 15 (utime, stime) in clock ticks; statm's second field in pages.
   if (std::FILE* stat = std::fopen("/proc/self/stat", "r")) {
     char buffer[1024] = {};
@@ -164,6 +170,12 @@ Counter& ServerMetrics::sessions_ended(std::string_view reason) {
   return registry_.counter("ocean_sessions_ended_total",
                            "Welcomed client sessions that closed, by reason (client_bye, peer_closed, idle_timeout...).",
                            {{"reason", std::string(reason)}});
+}
+
+Counter& ServerMetrics::samples_saturated(std::string_view profile) {
+  return registry_.counter("ocean_samples_saturated_total",
+                           "Frame values a stream clamped to its 2^20 quantization steps (its viewers see them flattened).",
+                           {{"profile", std::string(profile)}});
 }
 
 Counter& ServerMetrics::log_suppressed(std::string_view reason) {

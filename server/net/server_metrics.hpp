@@ -48,6 +48,8 @@ class ServerMetrics {
   Counter& udp_rebinds;             // proven UDP addresses moved to a new port (NAT rebinding)
   Counter& udp_rebinds_refused;     // UdpHellos that would move a live proven address (replays)
   Counter& udp_rebinds_reclaimed;   // moves undone because the old address spoke again
+  Counter& sighups;                 // SIGHUPs received (logged and ignored: nothing is reloadable)
+  Counter& log_write_failures;      // log lines that could not be written (a reader gone, a full disk)
 
   Counter& frames_computed(std::string_view profile);
   Summary& encode_seconds(std::string_view profile);  // encoder time of that profile in a tick that encoded
@@ -58,7 +60,8 @@ class ServerMetrics {
   // process_* (memory, CPU, descriptors, start time) read from /proc now: call before rendering.
   void update_process();
   Counter& sessions_ended(std::string_view reason);  // welcomed sessions closed, by the link's reason
-  Counter& log_suppressed(std::string_view reason);  // log lines left out by the rate limit (server_log.hpp)
+  Counter& log_suppressed(std::string_view reason);
+  Counter& samples_saturated(std::string_view profile);  // values a stream clamped to its 2^20 steps  // log lines left out by the rate limit (server_log.hpp)
 
  private:
   MetricsRegistry& registry_;

@@ -40,6 +40,7 @@ struct Session {
   bool ending = false;                      // Bye or Error sent, closing after a flush
   bool admitted = false;                    // counted by Admission (its address's connections)
   int token_failures = 0;                   // ParamChanges with a wrong admin token
+  bool change_waiting = false;              // its ParamChange waits in the admin queue
   BaselineTracker baselines;
   std::deque<RecentFrame> recent_udp;       // the last kMaxUdpRedundancy single-chunk UDP frames
   std::uint64_t tcp_frames_mark = 0;        // link->enqueued_total() after the last frame queued on it

@@ -1,6 +1,5 @@
 #include "session_core.hpp"
 
-#include "admin_token.hpp"
 #include "core_helpers.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
@@ -26,7 +25,9 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
       admission_(AdmissionLimits{host_.config.max_handshakes, host_.config.max_handshakes_per_ip,
                                  host_.config.max_connections_per_ip}),
       tick_(start_tick),
-      key_budget_(options.key_bytes_per_s, std::max(1.0, 0.5 * options.key_bytes_per_s), 0.0) {
+      key_budget_(options.key_bytes_per_s, std::max(1.0, 0.5 * options.key_bytes_per_s), 0.0),
+      token_checks_(options.token_checks_per_s, options.token_check_burst, 0.0),
+      scene_changes_(options.scene_changes_per_s, options.scene_change_burst, 0.0) {
   for (const std::string& name : host_.config.profiles) {
     const Profile* profile = find_profile(std::string_view(name));
     if (!profile) continue;
@@ -313,52 +314,6 @@ protocol::Welcome SessionCore::welcome(const Session& session) const {
   }
   welcome.max_message_bytes = protocol::kDefaultMaxMessageBytes;
   return welcome;
-}
-
-// True when the token is refused (answered, and the connection closed after a few guesses).
-bool SessionCore::token_refused(Session& session, const std::string& token, const Instant& now) {
-  const asio::ip::address address = session.link->address();
-  if (admission_.tokens_blocked(address, now.monotonic_s)) {
-    refuse(session, protocol::Reason::unauthorized,
-           "unauthorized in ParamChange.admin_token: too many wrong tokens from this address; try later", "token_guessing");
-    return true;
-  }
-  if (same_token(token, host_.config.admin_token)) return false;
-  const bool address_spent = admission_.token_failure(address, now.monotonic_s);
-  if (++session.token_failures >= options_.token_failures_per_connection || address_spent) {
-    refuse(session, protocol::Reason::unauthorized,
-           "unauthorized in ParamChange.admin_token: too many wrong tokens; closing", "token_guessing");
-    return true;
-  }
-  log_limited(spdlog::level::warn, "unauthorized", session.peer(), "param_change refused session={} peer={} reason=unauthorized",
-              session.id, session.peer());
-  host_.metrics.rejects("unauthorized").inc();
-  send_control(session, protocol::encode(protocol::Error{
-                            protocol::Reason::unauthorized,
-                            "unauthorized in ParamChange.admin_token: expected the server's admin token"}));
-  return true;
-}
-
-void SessionCore::on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& wire_change,
-                                  const Instant& now) {
-  const protocol::ParamChange change = protocol::read(wire_change);
-  if (token_refused(*session, change.admin_token, now)) return;
-  const Tick from = tick_ + scenes_.lead_ticks();
-  sim::SceneParams scene = scenes_.in_force(from).scene;
-  if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;
-  if (change.wind_dir_deg) scene.wind_dir_deg = *change.wind_dir_deg;
-  if (change.amplitude) scene.amplitude = *change.amplitude;
-  if (change.choppiness) scene.choppiness = *change.choppiness;
-  if (change.spectrum) scene.spectrum = static_cast<sim::SpectrumKind>(*change.spectrum);
-  if (const std::string error = sim::validate(scene); !error.empty())
-    return send_control(*session, protocol::encode(protocol::Error{protocol::Reason::out_of_range, error.substr(0, 256)}));
-  if (host_.request_scene) host_.request_scene(scene, static_cast<std::int64_t>(from));
-  announce({scenes_.add_admin(tick_, scene)}, session->id, change.request_id);
-  host_.metrics.param_changes.inc();
-  spdlog::info("param_change accepted session={} peer={} request={} from tick {}: wind={} m/s dir={} deg amplitude={} "
-               "choppiness={}",
-               session->id, session->peer(), change.request_id, from, scene.wind_speed_mps, scene.wind_dir_deg,
-               scene.amplitude, scene.choppiness);
 }
 
 void SessionCore::update_client_gauges() {

@@ -11,6 +11,7 @@
 #include "admission.hpp"
 #include "bundle_key.hpp"
 #include "link.hpp"
+#include "message_types.hpp"
 #include "profile_stream.hpp"
 #include "scene_announcements.hpp"
 #include "server_config.hpp"
@@ -22,6 +23,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <map>
@@ -64,6 +66,14 @@ struct SessionCoreOptions {
   double udp_rebind_quiet_max_s = 60.0;
   // ParamChanges with a wrong admin token a connection may send before it is closed.
   int token_failures_per_connection = 3;
+  // Admin tokens looked at per second over all connections (and its burst), first come first
+  // served: however many addresses guess, they guess this fast together, and a right token waits
+  // its turn instead of being refused with them. Applied changes per second (and burst): each one
+  // rebuilds every stream's scene model and sends every viewer a SceneUpdate.
+  double token_checks_per_s = 5.0;
+  double token_check_burst = 10.0;
+  double scene_changes_per_s = 1.0;
+  double scene_change_burst = 4.0;
 };
 
 // What the core needs from the server around it; none of it a socket or a clock.
@@ -132,8 +142,12 @@ class SessionCore {
   void on_closed(const std::shared_ptr<Session>& session, const std::string& reason);
   void evict_oldest_handshake(const Session& newcomer, const std::string& limit);
   void on_hello(const std::shared_ptr<Session>& session, const wire::Hello& hello, const Instant& now);
+  // Admin ParamChanges (core_admin.cpp): queued for their token check, checked at the admin rate
+  // first come first served, applied at the change rate.
   void on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& change, const Instant& now);
-  bool token_refused(Session& session, const std::string& token, const Instant& now);
+  void check_admin_changes(const Instant& now);
+  bool token_refused(Session& session, const std::string& token);
+  void apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now);
   // Ack, KeyframeRequest and Ping mean the same on any transport; `reply` carries the Pong.
   void on_session_message(Session& session, const wire::Message& message, Link& reply, const Instant& now);
   void on_udp_hello(Session& session, const wire::Message& message, std::size_t datagram_bytes, bool proven,
@@ -160,6 +174,8 @@ class SessionCore {
   bool key_due(const Session& session, double now_s) const { return now_s - session.last_key_s >= options_.key_interval_s; }
   void sweep_timeouts(double now_s);
   void record_tick_stats(std::vector<std::pair<const void*, codec::StateId>>& bases);
+  // This tick's truth to a stream; values it must clamp are counted and logged.
+  void add_truth(ProfileStream& stream, const sim::Frame& frame);
   // Tells every stream and every session of scenes that take effect within the lead.
   void announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester = {},
                 std::uint32_t request_id = 0);
@@ -187,7 +203,7 @@ class SessionCore {
   CoreTickStats last_tick_;
   FrameObserver observer_;
   TickObserver tick_observer_;
-  std::array<Counter*, 29> datagram_rejects_{};  // by protocol::Reason, made up front: no allocation per datagram
+  std::array<Counter*, protocol::kReasonCount> datagram_rejects_{};  // by protocol::Reason, made up front: no allocation per datagram
   alignas(8) std::array<std::uint8_t, protocol::kMaxDatagram> datagram_{};
   std::unordered_map<BundleKey, SharedBytes, BundleKeyHash> bundles_;  // this tick's, by their chunks
   struct UdpTally {
@@ -199,6 +215,13 @@ class SessionCore {
   std::size_t session_limit_ = std::numeric_limits<std::size_t>::max();
   std::uint64_t rotate_from_ = 0;  // where this tick's walk over the sessions starts
   TokenBucket key_budget_;
+  struct PendingChange {
+    std::weak_ptr<Session> session;
+    protocol::ParamChange change;
+  };
+  std::deque<PendingChange> admin_queue_;  // one per connection at most, oldest first
+  TokenBucket token_checks_;               // admin tokens looked at, all connections together
+  TokenBucket scene_changes_;              // admin changes applied
   std::vector<const ProfileStream*> roots_full_;
   std::uint64_t streams_released_ = 0;  // this key tick: no new root, joiners wait
 };

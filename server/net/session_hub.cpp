@@ -34,7 +34,8 @@ constexpr double kWarnEvery_s = 10.0;
 SessionHub::SessionHub(Server& server, SessionCoreOptions options)
     : server_(server),
       core_(host_of(server), options, tick_now(server.config())),
-      budget_(server.config().admission_target.value_or(AdmissionBudget::kDefaultTarget)) {
+      budget_(server.config().admission_target.value_or(AdmissionBudget::kDefaultTarget)),
+      connect_rate_(server.config().connect_rate_per_ip, std::max(10.0, 2.0 * server.config().connect_rate_per_ip)) {
   server_.set_connection_handler(
       [this](asio::ip::tcp::socket socket, Server::StreamKind kind) { on_connection(std::move(socket), kind); });
   server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
@@ -48,6 +49,20 @@ SessionHub::SessionHub(Server& server, SessionCoreOptions options)
 }
 
 void SessionHub::on_connection(asio::ip::tcp::socket socket, Server::StreamKind kind) {
+  const char* transport = kind == Server::StreamKind::tcp ? "tcp" : "ws";
+  {
+    std::error_code error;
+    const asio::ip::tcp::endpoint peer = socket.remote_endpoint(error);
+    if (error) return;  // gone already
+    if (!connect_rate_.allow(peer.address(), now_instant().monotonic_s)) {
+      // Closed before it costs a session: churn from one range stays cheap, and is not counted as
+      // the cost of serving sessions (AdmissionBudget).
+      server_.metrics().rejects("connect_rate").inc();
+      log_reject(transport, peer.address().to_string(), "connect_rate");
+      socket.close(error);
+      return;
+    }
+  }
   if (const int bytes = core_.options().socket_send_buffer_bytes; bytes > 0) {
     std::error_code ignored;
     socket.set_option(asio::socket_base::send_buffer_size(bytes), ignored);
@@ -101,7 +116,7 @@ void SessionHub::account(double busy_s, double now_s) {
   // The kernel's figures count what timing the handlers misses: the thread's wait for its core
   // when another process or thread keeps it busy. Every tick is late then while the handlers
   // report little work (a busy loop beside the server: timed work 32 %, on time 39 %).
-  LoadPeriod period{window_busy_s_, 0.0, wall_s, sessions};
+  LoadPeriod period{window_busy_s_, 0.0, wall_s, sessions, window_busy_s_};
   const std::optional<ThreadSchedule> schedule = this_thread_schedule();
   if (schedule && window_schedule_) {
     period.waited_s = std::max(0.0, schedule->waited_s - window_schedule_->waited_s);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "admission_budget.hpp"
+#include "connect_rate.hpp"
 #include "server.hpp"
 #include "session_core.hpp"
 #include "thread_schedule.hpp"
@@ -33,6 +34,7 @@ class SessionHub {
   Server& server_;
   SessionCore core_;
   AdmissionBudget budget_;
+  ConnectRate connect_rate_;
   double window_start_s_ = 0.0;
   double window_busy_s_ = 0.0;
   std::optional<ThreadSchedule> window_schedule_;  // the network thread's at the window's start

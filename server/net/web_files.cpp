@@ -34,7 +34,8 @@ std::optional<WebFiles> WebFiles::load(const std::string& root, std::uint16_t ws
       error = "--web-root '" + root + "' has no " + name + " (build the web viewer with -DOCEAN_BUILD_WEB=ON)";
       return std::nullopt;
     }
-    HttpReply reply{200, content_type(name), std::string(std::istreambuf_iterator<char>(in), {})};
+    HttpReply reply{200, content_type(name), {},
+                    std::make_shared<const std::string>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>())};
     files.replies_["/" + name] = std::move(reply);
   }
   files.replies_["/"] = files.replies_["/index.html"];
@@ -50,7 +51,7 @@ HttpReply WebFiles::reply(const HttpRequest& request) const {
 
 std::size_t WebFiles::total_bytes() const {
   std::size_t n = 0;
-  for (const auto& [target, reply] : replies_) n += reply.body.size();
+  for (const auto& [target, reply] : replies_) n += reply.content().size();
   return n;
 }
 

@@ -17,8 +17,10 @@ namespace ocean::server {
 
 class WebFiles {
  public:
-  // Each connection to the page listener may hold a whole reply (the module is 0.7 MB).
-  static constexpr std::size_t kMaxConnections = 64;
+  // Connections to the page listener at once (one host: an eighth). Replies share the files, so a
+  // connection costs a socket and its buffers; the descriptors stay well inside a default
+  // RLIMIT_NOFILE of 1024 beside the viewers'.
+  static constexpr std::size_t kMaxConnections = 256;
 
   // The files a web root must hold (the output of -DOCEAN_BUILD_WEB=ON).
   static const std::vector<std::string>& names();

@@ -8,10 +8,12 @@
 
 namespace ocean::server {
 
-bool OriginPolicy::accepts(const std::string& origin, const std::string& host) const {
-  if (origin.empty()) return true;
-  if (std::any_of(allowed.begin(), allowed.end(), [&](const std::string& a) { return a == "*" || a == origin; }))
+bool OriginPolicy::accepts(const std::optional<std::string>& header, const std::string& host) const {
+  if (!header) return true;
+  const std::string& origin = *header;
+  if (std::any_of(allowed.begin(), allowed.end(), [&](const std::string& a) { return a == "*" || (a == origin && !a.empty()); }))
     return true;
+  if (origin.empty()) return false;
   if (page_port == 0 || host.empty()) return false;
   // Host is "name:port", "[v6]:port" or a bare name; the page's Origin has the same name.
   const std::size_t bracket = host.rfind(']');
@@ -36,7 +38,9 @@ WebSocketLink::WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue
 
 WebSocketProtocol::Handlers WebSocketLink::protocol_handlers() {
   WebSocketProtocol::Handlers handlers;
-  handlers.accept_origin = [this](const std::string& origin, const std::string& host) { return origins_.accepts(origin, host); };
+  handlers.accept_origin = [this](const std::optional<std::string>& origin, const std::string& host) {
+    return origins_.accepts(origin, host);
+  };
   handlers.on_message = [this](const std::uint8_t* data, std::size_t size) {
     if (!closed_ && !closing_ && on_message_) on_message_(std::span<const std::uint8_t>(data, size), now_instant());
   };

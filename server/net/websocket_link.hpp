@@ -12,13 +12,15 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <optional>
 #include <vector>
 
 namespace ocean::server {
 
 // Which browser pages may connect: a handshake's Origin must be one of these exactly
-// ("https://ocean.example:8443"), or anything with "*". A client that sends no Origin (not a
-// browser: a native tool or a test) is always let in, as over plain TCP.
+// ("https://ocean.example:8443"), or anything with "*". A client that sends no Origin header (not
+// a browser: a native tool or a test) is always let in, as over plain TCP; one that sends an empty
+// Origin only with "*" (browsers always name the page; an empty one hides where it comes from).
 // Which pages may open a WebSocket. Besides the allow-list, the server's own page (--web-listen,
 // page_port) is let in under whatever name the browser reached this host by: its Origin is
 // http(s)://HOST:page_port where HOST is the handshake's own Host header, so another site's page
@@ -26,7 +28,8 @@ namespace ocean::server {
 struct OriginPolicy {
   std::vector<std::string> allowed;
   std::uint16_t page_port = 0;  // 0: no page is served
-  bool accepts(const std::string& origin, const std::string& host = "") const;
+  // origin: the Origin header's value, nullopt when the handshake had none.
+  bool accepts(const std::optional<std::string>& origin, const std::string& host = "") const;
 };
 
 class WebSocketLink final : public SocketStreamLink {

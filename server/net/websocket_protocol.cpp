@@ -60,7 +60,11 @@ WebSocketProtocol::WebSocketProtocol(Handlers handlers, std::size_t max_message_
     return websocketpp::lib::error_code();
   });
   con->set_validate_handler([self](websocketpp::connection_hdl) {
-    if (self->handlers.accept_origin && self->handlers.accept_origin(self->connection->get_origin(), self->connection->get_request_header("Host"))) return true;
+    const auto& headers = self->connection->get_request().get_headers();
+    const bool has_origin = headers.find("Origin") != headers.end();  // the map ignores case
+    const std::optional<std::string> origin = has_origin ? std::optional<std::string>(self->connection->get_origin()) : std::nullopt;
+    if (self->handlers.accept_origin && self->handlers.accept_origin(origin, self->connection->get_request_header("Host")))
+      return true;
     self->connection->set_status(websocketpp::http::status_code::forbidden);
     self->end("origin_refused");
     return false;

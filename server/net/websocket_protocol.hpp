@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ocean::server {
@@ -16,8 +17,9 @@ namespace ocean::server {
 class WebSocketProtocol {
  public:
   struct Handlers {
-    // The handshake's Origin and Host headers ("" when the client sent none): false refuses it with 403.
-    std::function<bool(const std::string& origin, const std::string& host)> accept_origin;
+    // The handshake's Origin header (nullopt when it sent none, "" when it sent an empty one) and
+    // Host header ("" when none): false refuses it with 403.
+    std::function<bool(const std::optional<std::string>& origin, const std::string& host)> accept_origin;
     // One whole binary message.
     std::function<void(const std::uint8_t* data, std::size_t size)> on_message;
     // Bytes to write to the socket, in order.

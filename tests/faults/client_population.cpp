@@ -186,7 +186,14 @@ std::uint64_t ClientPopulation::keyframes(std::size_t client) const {
 bool ClientPopulation::on_udp(std::size_t client) const {
   return on_io([this, client] {
     const client::ClientSession* s = tracks_.at(client).connection->session();
-    return s && s->stats().transport_fallbacks == 0 && s->stats().udp.messages_in > 0;
+    return s && s->path() == client::ClientSession::Path::udp && s->stats().udp.messages_in > 0;
+  });
+}
+
+std::pair<std::uint64_t, std::uint64_t> ClientPopulation::transport_changes(std::size_t client) const {
+  return on_io([this, client] {
+    const client::ClientSession* s = tracks_.at(client).connection->session();
+    return s ? std::pair(s->stats().transport_fallbacks, s->stats().transport_returns) : std::pair<std::uint64_t, std::uint64_t>();
   });
 }
 

@@ -61,9 +61,11 @@ class ClientPopulation {
   std::optional<protocol::Welcome> welcome(std::size_t client) const;
   // Sessions started per client (TCP connects); 1 each when nobody was dropped.
   std::vector<std::uint64_t> connects() const;
-  // Frames the client's sessions completed as keyframes, and whether it is on UDP now.
+  // Frames the client's sessions completed as keyframes, and whether its deltas come on UDP now.
   std::uint64_t keyframes(std::size_t client) const;
   bool on_udp(std::size_t client) const;
+  // Its session's fallbacks to TCP and returns to UDP so far.
+  std::pair<std::uint64_t, std::uint64_t> transport_changes(std::size_t client) const;
 
  private:
   struct Track {

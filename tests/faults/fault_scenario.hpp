@@ -61,10 +61,11 @@ struct FaultMeasure {
 
 class FaultScenario {
  public:
-  explicit FaultScenario(const std::vector<std::string>& server_args)
+  // udp_clients: the well-behaved UDP viewers (100 where the finding is about the others).
+  explicit FaultScenario(const std::vector<std::string>& server_args, int udp_clients = kUdpClients)
       : server_(fault_server(server_args)),
         control_server_(fault_server(server_args)),
-        population_(server_.tcp_port(), kUdpClients, kTcpClients, kMobile),
+        population_(server_.tcp_port(), udp_clients, kTcpClients, kMobile),
         control_(control_server_.tcp_port(), kControlClients - 1, 1, kMobile) {}
 
   ServerProcess& server() { return server_; }

@@ -61,6 +61,15 @@ std::optional<double> metric_value(const std::string& metrics, const std::string
   return std::nullopt;
 }
 
+double scrape(std::uint16_t metrics_port, const std::string& series) {
+  const auto reply = http_get(metrics_port, "/metrics");
+  return reply ? metric_value(reply->body, series).value_or(0.0) : -1.0;
+}
+
+double rejects(std::uint16_t metrics_port, const std::string& reason) {
+  return scrape(metrics_port, "ocean_rejects_total{reason=\"" + reason + "\"}");
+}
+
 double metric_sum(const std::string& metrics, const std::string& name) {
   std::istringstream lines(metrics);
   std::string line;

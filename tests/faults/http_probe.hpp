@@ -20,5 +20,9 @@ std::optional<HttpReply> http_get(std::uint16_t port, const std::string& path, d
 std::optional<double> metric_value(const std::string& metrics, const std::string& series);
 // Sum over every series of a metric name (all label sets).
 double metric_sum(const std::string& metrics, const std::string& name);
+// `series` read from the server's /metrics now: 0 when absent, -1 when it does not answer.
+double scrape(std::uint16_t metrics_port, const std::string& series);
+// ocean_rejects_total{reason} read from the server's /metrics now, as scrape().
+double rejects(std::uint16_t metrics_port, const std::string& reason);
 
 }  // namespace ocean::faults

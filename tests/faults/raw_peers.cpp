@@ -18,6 +18,20 @@
 #include "verify_message.hpp"
 
 namespace ocean::faults {
+
+ParamChangeAnswer send_param_change(RawTcp& admin, const protocol::ParamChange& change, double timeout_s) {
+  if (!admin.send(protocol::encode(change))) return {};
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < until) {
+    const auto message = admin.read_message(0.2);
+    if (!message) continue;
+    if (const auto* update = std::get_if<protocol::SceneUpdate>(&*message); update && update->request_id == change.request_id)
+      return {true, std::nullopt};
+    if (const auto* error = std::get_if<protocol::Error>(&*message)) return {false, error->code};
+  }
+  return {};
+}
+
 namespace {
 
 sockaddr_in loopback(std::uint16_t port, const char* ip = "127.0.0.1") {
@@ -30,9 +44,13 @@ sockaddr_in loopback(std::uint16_t port, const char* ip = "127.0.0.1") {
 
 }  // namespace
 
-RawTcp::RawTcp(std::uint16_t port, int receive_buffer_bytes) {
+RawTcp::RawTcp(std::uint16_t port, int receive_buffer_bytes, const char* local_ip) {
   fd_ = ::socket(AF_INET, SOCK_STREAM, 0);
   if (fd_ < 0) return;
+  if (local_ip) {
+    const sockaddr_in local = loopback(0, local_ip);
+    if (::bind(fd_, reinterpret_cast<const sockaddr*>(&local), sizeof local) != 0) return;
+  }
   if (receive_buffer_bytes > 0) ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &receive_buffer_bytes, sizeof receive_buffer_bytes);
   timeval tv{1, 0};
   ::setsockopt(fd_, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv);

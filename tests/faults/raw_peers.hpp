@@ -16,8 +16,10 @@ namespace ocean::faults {
 
 class RawTcp {
  public:
-  // receive_buffer_bytes > 0 sets SO_RCVBUF before connecting (a small window for a stalled reader).
-  RawTcp(std::uint16_t port, int receive_buffer_bytes = 0);
+  // receive_buffer_bytes > 0 sets SO_RCVBUF before connecting (a small window for a stalled reader);
+  // local_ip binds the connection to that loopback address (another address range than 127.0.0.1:
+  // "127.0.1.2").
+  explicit RawTcp(std::uint16_t port, int receive_buffer_bytes = 0, const char* local_ip = nullptr);
   ~RawTcp();
   RawTcp(RawTcp&& other) noexcept;
   RawTcp(const RawTcp&) = delete;
@@ -48,6 +50,14 @@ class RawTcp {
   protocol::TcpFramer framer_;
   std::vector<std::uint8_t> pending_;  // read but not yet fed
 };
+
+// A ParamChange sent on an admin session and its answer: a SceneUpdate naming its request_id
+// (applied), or an Error; neither within timeout_s: both empty.
+struct ParamChangeAnswer {
+  bool applied = false;
+  std::optional<protocol::Reason> error;
+};
+ParamChangeAnswer send_param_change(RawTcp& admin, const protocol::ParamChange& change, double timeout_s);
 
 class RawUdp {
  public:

@@ -62,6 +62,7 @@ std::string config_text(const std::string& token_file, std::int64_t change_tick)
          "listen = \"127.0.0.1:0\"\nmetrics-listen = \"127.0.0.1:0\"\nsize = 64\npatch = 64.0\n"
          "spectrum = \"jonswap\"\nwind-speed = 12.0\nseed = 7\ntick-rate = 30\n"
          "epoch = 2026-01-01T00:00:00Z\nprofiles = [\"mobile\", \"lite\"]\nmax-clients = 260\n"
+         "max-connections-per-ip = 0\nconnect-rate-per-ip = 0\n"  // every viewer and attacker shares this host's address
          "admin-token-file = \"" + token_file + "\"\n"
          "[[schedule]]\ntick = " + std::to_string(change_tick) + "\nwind-speed = 17.0\nwind-dir = 60.0\n";
 }

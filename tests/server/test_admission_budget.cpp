@@ -80,3 +80,20 @@ TEST_CASE("admission: the door opens again as the load falls", "[admission]") {
   steady(budget, 0.2, 0.0, 1000);
   CHECK(budget.admits(100000));
 }
+
+TEST_CASE("admission: work for connections that never said Hello does not close the door", "[admission]") {
+  // 100 sessions cost 10 % of the thread; strangers churning connections take 70 % more and make it
+  // wait 10 % for a CPU. Counted as session cost (main) that is a load of 1.1: no room at all.
+  AdmissionBudget churned(0.85);
+  for (int i = 0; i < 20; ++i) churned.observe(LoadPeriod{0.8, 0.1, 1.0, 100, 0.1});
+  CHECK(churned.load() == Approx(1.1).margin(0.002));
+  CHECK(churned.session_load() == Approx(1.1 / 8).margin(0.002));  // the waits shared out alike
+  CHECK(churned.admits(110));
+  CHECK(churned.capacity() == AdmissionBudget::kUnlimited);  // 0.14: far from the target
+  // The same sessions costing the whole 80 % themselves close it as before.
+  AdmissionBudget loaded(0.85);
+  for (int i = 0; i < 20; ++i) loaded.observe(LoadPeriod{0.8, 0.1, 1.0, 100, 0.8});
+  CHECK(!loaded.admits(100));
+  CHECK(loaded.capacity() >= 75);  // 100 x 0.85 / 1.1
+  CHECK(loaded.capacity() <= 78);
+}

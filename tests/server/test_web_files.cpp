@@ -30,12 +30,12 @@ TEST_CASE("WebFiles serves the page, its script and module with their types, and
   std::string error;
   const auto files = WebFiles::load(root.string(), 7701, error);
   REQUIRE(files);
-  CHECK(files->reply(get("/")).body == "contents of index.html");
+  CHECK(files->reply(get("/")).content() == "contents of index.html");
   CHECK(files->reply(get("/")).content_type == "text/html; charset=utf-8");
-  CHECK(files->reply(get("/index.html")).body == "contents of index.html");
+  CHECK(files->reply(get("/index.html")).content() == "contents of index.html");
   CHECK(files->reply(get("/ocean-web.js")).content_type == "text/javascript; charset=utf-8");
   CHECK(files->reply(get("/ocean-web.wasm")).content_type == "application/wasm");
-  CHECK(files->reply(get("/ocean-web.json")).body == "{\"ws_port\": 7701}\n");
+  CHECK(files->reply(get("/ocean-web.json")).content() == "{\"ws_port\": 7701}\n");
   // Any other name - a file that exists in the folder, a path out of it - is 404.
   std::ofstream(root / "secret.txt") << "not served";
   for (const char* target : {"/secret.txt", "/../index.html", "/web/index.html", "index.html", "/INDEX.HTML"})
@@ -54,7 +54,9 @@ TEST_CASE("WebFiles names the first file a web root lacks") {
 
 TEST_CASE("the server's own page opens a WebSocket under any host name; other pages do not") {
   const OriginPolicy policy{{"https://ocean.example"}, 8080};
-  CHECK(policy.accepts("", "anything"));                                        // no Origin: not a browser
+  CHECK(policy.accepts(std::nullopt, "anything"));                              // no Origin: not a browser
+  CHECK_FALSE(policy.accepts("", "anything"));                                  // an empty one: where from?
+  CHECK(OriginPolicy{{"*"}, 0}.accepts("", "anything"));                        // ... unless any is allowed
   CHECK(policy.accepts("https://ocean.example", "10.0.0.2:7701"));              // the allow-list
   CHECK(policy.accepts("http://10.0.0.2:8080", "10.0.0.2:7701"));               // the page, by address
   CHECK(policy.accepts("http://sea.lan:8080", "sea.lan:7701"));                 // ... by name

@@ -175,11 +175,11 @@ TEST_CASE("the page server (--web-listen) serves the page, names the WebSocket p
   CHECK(own->ws_status == 101);
   CHECK(other_port->ws_status == 403);
   CHECK(other_name->ws_status == 403);
-  // One host holds at most an eighth of the page listener's 64 connections: idle ones included.
+  // One host holds at most an eighth of the page listener's connections: idle ones included.
   {
     asio::io_context context;
     std::vector<asio::ip::tcp::socket> idle;
-    for (int i = 0; i < 8; ++i) {
+    for (std::size_t i = 0; i < WebFiles::kMaxConnections / 8; ++i) {
       idle.emplace_back(context);
       idle.back().connect({asio::ip::make_address("127.0.0.1"), web});
     }

@@ -65,7 +65,7 @@ std::optional<ListeningPorts> parse_listening_line(const std::string& log) {
   const std::string line = log.substr(start + 9, end - start - 9);
   const auto tcp = port_of(line, "tcp"), udp = port_of(line, "udp"), metrics = port_of(line, "metrics");
   if (!tcp || !udp || !metrics || *tcp == 0) return std::nullopt;
-  return ListeningPorts{*tcp, *udp, *metrics, port_of(line, "ws").value_or(0)};
+  return ListeningPorts{*tcp, *udp, *metrics, port_of(line, "ws").value_or(0), port_of(line, "web").value_or(0)};
 }
 
 ServerProcess::ServerProcess(ServerOptions options)

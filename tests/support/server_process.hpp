@@ -31,7 +31,8 @@ struct ListeningPorts {
   std::uint16_t tcp = 0;
   std::uint16_t udp = 0;
   std::uint16_t metrics = 0;
-  std::uint16_t ws = 0;  // --ws-listen
+  std::uint16_t ws = 0;   // --ws-listen
+  std::uint16_t web = 0;  // --web-listen
 };
 std::optional<ListeningPorts> parse_listening_line(const std::string& log);
 
@@ -66,6 +67,7 @@ class ServerProcess {
   std::uint16_t tcp_port() const { return ports_.tcp; }
   std::uint16_t metrics_port() const { return ports_.metrics; }
   std::uint16_t ws_port() const { return ports_.ws; }
+  std::uint16_t web_port() const { return ports_.web; }
 
   void signal(int number);
   // The exit status, or -1 when it did not exit normally (a signal) or not within `seconds`.

@@ -1,0 +1,100 @@
+// SessionCore's admin side: ParamChanges wait in one queue for their token check, which runs at
+// token_checks_per_s over every connection together, first come first served (one waiting change
+// per connection); a right token's change is applied when the scene is servable and the change
+// rate allows. So guessing is bounded however many addresses guess, and an operator who shares an
+// address (a NAT, a bastion) with a guesser waits a few checks, never a lockout.
+#include "session_core.hpp"
+
+#include "admin_token.hpp"
+#include "message_builders.hpp"
+#include "message_readers.hpp"
+#include "servable_scene.hpp"
+#include "server_log.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <spdlog/fmt/fmt.h>
+
+namespace ocean::server {
+
+void SessionCore::on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& wire_change,
+                                  const Instant& now) {
+  // An admin tool waits for each answer; a connection that streams changes without reading them
+  // is a guesser, and answering each would only fill its queue: it is closed.
+  if (session->change_waiting)
+    return refuse(*session, protocol::Reason::rate_limited,
+                  "rate_limited: a ParamChange before the previous one was answered; closing");
+  session->change_waiting = true;
+  admin_queue_.push_back({session, protocol::read(wire_change)});
+  check_admin_changes(now);
+}
+
+// Runs on every change queued and every tick: as many checks as the budget has tokens.
+void SessionCore::check_admin_changes(const Instant& now) {
+  while (!admin_queue_.empty()) {
+    const std::shared_ptr<Session> session = admin_queue_.front().session.lock();
+    if (!session || session->closed || session->ending) {
+      admin_queue_.pop_front();
+      continue;
+    }
+    if (!token_checks_.try_take(1, now.monotonic_s)) return;
+    const protocol::ParamChange change = std::move(admin_queue_.front().change);
+    admin_queue_.pop_front();
+    session->change_waiting = false;
+    if (!token_refused(*session, change.admin_token)) apply_param_change(*session, change, now);
+  }
+}
+
+// True when the token is refused (answered, and the connection closed after a few guesses).
+bool SessionCore::token_refused(Session& session, const std::string& token) {
+  if (same_token(token, host_.config.admin_token)) return false;
+  if (++session.token_failures >= options_.token_failures_per_connection) {
+    refuse(session, protocol::Reason::unauthorized,
+           "unauthorized in ParamChange.admin_token: too many wrong tokens; closing", "token_guessing");
+    return true;
+  }
+  log_limited(spdlog::level::warn, "unauthorized", session.peer(), "param_change refused session={} peer={} reason=unauthorized",
+              session.id, session.peer());
+  host_.metrics.rejects("unauthorized").inc();
+  send_control(session, protocol::encode(protocol::Error{
+                            protocol::Reason::unauthorized,
+                            "unauthorized in ParamChange.admin_token: expected the server's admin token"}));
+  return true;
+}
+
+void SessionCore::apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now) {
+  const Tick from = tick_ + scenes_.lead_ticks();
+  sim::SceneParams scene = scenes_.in_force(from).scene;
+  if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;
+  if (change.wind_dir_deg) scene.wind_dir_deg = *change.wind_dir_deg;
+  if (change.amplitude) scene.amplitude = *change.amplitude;
+  if (change.choppiness) scene.choppiness = *change.choppiness;
+  if (change.spectrum) scene.spectrum = static_cast<sim::SpectrumKind>(*change.spectrum);
+  std::vector<const Profile*> offered;
+  for (const auto& stream : streams_) offered.push_back(&stream->profile());
+  if (const std::string error = servable_scene(scene, offered); !error.empty()) {
+    log_limited(spdlog::level::warn, "param_change_refused", session.peer(),
+                "param_change refused session={} peer={} reason=out_of_range: {}", session.id, session.peer(), error);
+    host_.metrics.rejects("out_of_range").inc();
+    return send_control(session, protocol::encode(protocol::Error{protocol::Reason::out_of_range,
+                                                                  error.substr(0, protocol::kMaxTextBytes)}));
+  }
+  if (!scene_changes_.try_take(1, now.monotonic_s)) {
+    const double wait_s = scene_changes_.wait_s(1, now.monotonic_s);
+    host_.metrics.rejects("rate_limited").inc();
+    return send_control(session, protocol::encode(protocol::Error{
+                                     protocol::Reason::rate_limited,
+                                     fmt::format("rate_limited: at most {:g} scene changes a second (a burst of {:g}); "
+                                                 "retry in {:.1f} s",
+                                                 options_.scene_changes_per_s, options_.scene_change_burst, wait_s + 0.05)}));
+  }
+  if (host_.request_scene) host_.request_scene(scene, static_cast<std::int64_t>(from));
+  announce({scenes_.add_admin(tick_, scene)}, session.id, change.request_id);
+  host_.metrics.param_changes.inc();
+  spdlog::info("param_change accepted session={} peer={} request={} from tick {}: wind={} m/s dir={} deg amplitude={} "
+               "choppiness={}",
+               session.id, session.peer(), change.request_id, from, scene.wind_speed_mps, scene.wind_dir_deg,
+               scene.amplitude, scene.choppiness);
+}
+
+}  // namespace ocean::server
