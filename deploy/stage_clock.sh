@@ -59,8 +59,11 @@ stage_wait() {
 
 stage_tree() { _stage_trees+=("$1"); }
 
+# The run's status is kept: under set -e -o pipefail a failing command in the report (sort killed
+# by SIGPIPE when head has its ten lines) would otherwise replace it (CI once ended 141, not 8).
 _stage_report() {
-  local i total=$((SECONDS - _stage_run_start))
+  local rc=$? i total=$((SECONDS - _stage_run_start))
+  set +e +o pipefail
   {
     echo
     echo "================================ stage times ================================"
@@ -80,10 +83,11 @@ _stage_report() {
     done
     if [[ -n $lines ]]; then
       echo "--------------------------- ten slowest tests (s) ---------------------------"
-      printf '%s' "$lines" | sort -rn | head -10 | awk '{s=$1; $1=""; printf "%8.1f %s\n", s, $0}'
+      printf '%s' "$lines" | sort -rn | awk 'NR <= 10' | awk '{s=$1; $1=""; printf "%8.1f %s\n", s, $0}'
     fi
     echo "============================================================================="
   } >&2
   rm -rf "$_stage_bg_dir"
+  exit "$rc"
 }
 trap _stage_report EXIT

@@ -192,3 +192,17 @@ TEST_CASE("the page server (--web-listen) serves the page, names the WebSocket p
   CHECK(harness.server().metrics().rejects("http_busy").value() == 1);
   std::filesystem::remove_all(root);
 }
+
+TEST_CASE("the ws gauge counts WebSocket viewers and returns to 0 when the last one leaves") {
+  SessionHarness harness(websocket_config());
+  Gauge& ws = harness.server().metrics().clients("mobile", "ws");
+  auto viewer = harness.ws_client("http://viewer.example:8080");
+  viewer->hello(tcp_hello());
+  REQUIRE(pump_until({viewer.get()}, [&] { return viewer->completed_heights.size() >= 5; }));
+  CHECK(ws.value() == 1.0);
+  viewer.reset();  // the browser tab closes
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (ws.value() != 0.0 && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  CHECK(ws.value() == 0.0);  // main: stayed 1 (update_client_gauges seeded only tcp and udp)
+  harness.stop();
+}
