@@ -30,6 +30,10 @@ int main(int argc, char** argv) {
                stdout);
     return 0;
   }
+  if (loaded.outcome == ConfigLoadResult::Outcome::show_json) {
+    std::fputs(loaded.message.c_str(), stdout);
+    return 0;
+  }
   if (loaded.outcome == ConfigLoadResult::Outcome::error) {
     std::fprintf(stderr, "ocean-server: %s\n", loaded.message.c_str());
     return 2;

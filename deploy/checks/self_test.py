@@ -53,12 +53,7 @@ def self_test(deploy_dir, check):
         for relative, find, replace, expected in breakages:
             copy_dir = pathlib.Path(scratch) / "deploy"
             shutil.rmtree(copy_dir, ignore_errors=True)
-            # The option table lives beside deploy/ in the source tree; keep that layout.
             shutil.copytree(deploy_dir, copy_dir, ignore=shutil.ignore_patterns("__pycache__"))
-            options_source = deploy_dir.parent / "server" / "net" / "config_options.cpp"
-            if options_source.is_file():
-                (pathlib.Path(scratch) / "server" / "net").mkdir(parents=True, exist_ok=True)
-                shutil.copy(options_source, pathlib.Path(scratch) / "server" / "net")
             target = copy_dir / relative
             text = target.read_text()
             if find not in text:

@@ -1,19 +1,31 @@
 """An ocean-server TOML config: it parses, names only options the server has, schedules only
-weather, and pins what replicas must agree on. The option table is read from the server's source
-(server/net/config_options.cpp) so the check follows the server, not a copy of its option list.
+weather, and pins what replicas must agree on. The option table is the server's own
+(ocean-server --help-json), so the check follows the server, not a copy of its option list.
 """
+import json
 import re
+import subprocess
 import tomllib
 
-def server_options(deploy_dir):
-    """{option name: schedulable} from the server's option table, or None when it is not there."""
-    source = deploy_dir.parent / "server" / "net" / "config_options.cpp"
-    if not source.is_file():
-        return None
-    # The value name is a string literal or a named constant (the sim's name lists).
-    entry = re.compile(r'\{"([a-z0-9-]+)",\s*(?:"[^"]*"|\w+),\s*"(?:[^"\\]|\\.)*",\s*ValueKind::\w+,\s*(true|false)')
-    options = {m.group(1): m.group(2) == "true" for m in entry.finditer(source.read_text())}
-    return options or None
+
+def server_tables(server):
+    """ocean-server --help-json as a dict ({"options": [...], "profiles": [...]}); raises
+    RuntimeError naming the problem when the binary cannot give it."""
+    try:
+        done = subprocess.run([str(server), "--help-json"], capture_output=True, text=True, timeout=30)
+    except OSError as error:
+        raise RuntimeError(f"{server}: cannot run it: {error}") from error
+    if done.returncode != 0:
+        raise RuntimeError(f"{server} --help-json exited {done.returncode}: {done.stderr.strip()}")
+    try:
+        return json.loads(done.stdout)
+    except json.JSONDecodeError as error:
+        raise RuntimeError(f"{server} --help-json printed no JSON: {error}") from error
+
+
+def server_options(server):
+    """{option name: schedulable} from the server's option table."""
+    return {option["name"]: option["schedulable"] for option in server_tables(server)["options"]}
 
 
 def port_of(address):

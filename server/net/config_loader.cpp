@@ -1,7 +1,8 @@
 #include "config_loader.hpp"
 
-#include "config_options.hpp"
 #include "ascii_text.hpp"
+#include "config_options.hpp"
+#include "options_json.hpp"
 
 #include <algorithm>
 #include <CLI/CLI.hpp>
@@ -219,6 +220,8 @@ std::string config_help(std::string_view program) {
                    std::string(option.help) + " [default: " + option.show(defaults) + "]")
         ->type_name(std::string(option.value_name));
   app.add_option("--config", ignored, "TOML file with any of these options (see below)")->type_name("FILE");
+  bool ignored_flag = false;
+  app.add_flag("--help-json", ignored_flag, "print the options (with their defaults) and the stream profiles as JSON, for tools, and exit");
   app.footer(std::string(kFileHelp));
   return app.help();
 }
@@ -235,6 +238,8 @@ ConfigLoadResult load_config(const std::vector<std::string>& args) {
                         ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast));  // the last one wins
   std::string config_file;
   app.add_option("--config", config_file);
+  bool help_json = false;
+  app.add_flag("--help-json", help_json);
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 wants them last-first
   if (!reversed.empty()) reversed.pop_back();
@@ -246,6 +251,11 @@ ConfigLoadResult load_config(const std::vector<std::string>& args) {
     return result;
   } catch (const CLI::ParseError& e) {
     result.message = std::string(e.what()) + " (run with --help for the options)";
+    return result;
+  }
+  if (help_json) {
+    result.outcome = ConfigLoadResult::Outcome::show_json;
+    result.message = options_json();
     return result;
   }
 

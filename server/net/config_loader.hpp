@@ -18,10 +18,10 @@ inline constexpr std::size_t kMaxConfigBytes = 1u << 20;
 inline constexpr std::size_t kMaxScheduleEntries = 10000;
 
 struct ConfigLoadResult {
-  enum class Outcome { run, show_help, error };
+  enum class Outcome { run, show_help, show_json, error };
   Outcome outcome = Outcome::error;
   ServerConfig config;  // valid when outcome == run
-  std::string message;  // the help text, or the error naming the option and what is allowed
+  std::string message;  // the help text (--help, or --help-json's JSON), or the error naming the option and what is allowed
 };
 
 // args[0] is the program name, as in argv.

@@ -1,6 +1,7 @@
 #include "config_options.hpp"
 
 #include "epoch.hpp"
+#include "profile.hpp"
 #include "quoted.hpp"
 #include "scene_names.hpp"
 
@@ -98,6 +99,14 @@ std::string apply_name(Kind& target, std::string_view value, std::optional<Kind>
 // The value names --help shows: "phillips|jonswap" and "cos2s|donelan-banner|hasselmann".
 const std::string kSpectrumChoices = sim::join_names(sim::spectrum_names(), "|", "|");
 const std::string kSpreadingChoices = sim::join_names(sim::spreading_names(), "|", "|");
+
+// --profiles' help names every profile of protocol/profile.hpp, in its order.
+std::string profiles_help() {
+  std::string names;
+  for (const Profile& profile : all_profiles()) names += (names.empty() ? "" : ", ") + std::string(profile.name);
+  return "comma-separated stream profiles to offer (" + names + "); each grid <= --size";
+}
+const std::string kProfilesHelp = profiles_help();
 
 std::string join(const std::vector<std::string>& items) {
   std::string out;
@@ -243,8 +252,7 @@ const ConfigOption kOptions[] = {
        return error;
      },
      [](const ServerConfig& c) { return std::to_string(c.epoch_unix_ms); }},
-    {"profiles", "LIST", "comma-separated stream profiles to offer (mobile, desktop, desktop-choppy, mobile-choppy, lite); each grid <= --size",
-     ValueKind::text_list, false,
+    {"profiles", "LIST", kProfilesHelp, ValueKind::text_list, false,
      [](ServerConfig& c, std::string_view v) {
        c.profiles = split_list(v);
        return std::string();

@@ -1,5 +1,6 @@
 #include "config_loader.hpp"
 #include "config_options.hpp"
+#include "profile.hpp"
 #include "temp_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -80,7 +81,7 @@ TEST_CASE("flags set every kind of option", "[config]") {
   CHECK(c.ws_origins == std::vector<std::string>{"https://ocean.example:8443", "http://localhost:8080"});
 }
 
-TEST_CASE("--help documents every option", "[config]") {
+TEST_CASE("the --help text documents every option", "[config]") {
   const ConfigLoadResult r = load({"--help"});
   REQUIRE(r.outcome == Outcome::show_help);
   for (const ConfigOption& option : config_options()) {
@@ -90,6 +91,25 @@ TEST_CASE("--help documents every option", "[config]") {
   }
   CHECK(r.message.find("--config") != std::string::npos);
   CHECK(r.message.find("[[schedule]]") != std::string::npos);
+}
+
+TEST_CASE("the --help-json output lists every option with its default and every profile, and --profiles' help names them",
+          "[config]") {
+  const ConfigLoadResult r = load({"--help-json"});
+  REQUIRE(r.outcome == Outcome::show_json);
+  const ServerConfig defaults;
+  for (const ConfigOption& option : config_options()) {
+    INFO(option.name);
+    CHECK(r.message.find("{\"name\": \"" + std::string(option.name) + "\", \"value_name\"") != std::string::npos);
+  }
+  const std::string profiles_help(find_config_option("profiles")->help);
+  for (const ocean::Profile& profile : ocean::all_profiles()) {
+    INFO(profile.name);
+    CHECK(r.message.find("{\"id\": " + std::to_string(profile.id) + ", \"name\": \"" + std::string(profile.name) + "\"") !=
+          std::string::npos);
+    CHECK(profiles_help.find(profile.name) != std::string::npos);
+  }
+  CHECK(r.message.find("\"default\": \"" + std::to_string(defaults.max_clients) + "\"") != std::string::npos);
 }
 
 TEST_CASE("a TOML file sets options and flags override it", "[config]") {
