@@ -98,7 +98,8 @@ struct CoreTickStats {
 
 class SessionCore {
  public:
-  // Called for every frame queued to a session (tests compare reconstructions with it).
+  // Called for every frame queued to a session, after its links have it: a client on another
+  // thread may complete the frame first (tests compare reconstructions with it).
   using FrameObserver = std::function<void(std::uint64_t session_id, const SharedFrame& frame)>;
   using TickObserver = std::function<void(const CoreTickStats& stats)>;
 

@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
+#include <condition_variable>
 #include <functional>
 #include <future>
 #include <map>
@@ -36,6 +38,7 @@ class SessionHarness {
     hub_.core().set_frame_observer([this](std::uint64_t session, const SharedFrame& frame) {
       std::lock_guard lock(mutex_);
       sent_[{session, frame.encoded->reconstruction.tick}] = frame.encoded->reconstruction.height;
+      recorded_.notify_all();
     });
     hub_.core().set_tick_observer([this](const CoreTickStats& stats) {
       std::lock_guard lock(mutex_);
@@ -66,16 +69,16 @@ class SessionHarness {
   }
   // What the encoder said session `session` shows at `tick` (empty if nothing was sent).
   std::vector<float> sent_height(std::uint64_t session, Tick tick) {
-    std::lock_guard lock(mutex_);
-    const auto found = sent_.find({session, tick});
+    std::unique_lock lock(mutex_);
+    const auto found = await_sent(lock, session, tick);
     return found == sent_.end() ? std::vector<float>{} : found->second;
   }
   // Every tick the client completed equals, bit for bit, what the encoder said it would show.
   void check_reconstructions(const SessionTestClient& client) {
     REQUIRE(client.welcome);
-    std::lock_guard lock(mutex_);
+    std::unique_lock lock(mutex_);
     for (const auto& [tick, heights] : client.completed_heights) {
-      const auto found = sent_.find({client.welcome->session_id, tick});
+      const auto found = await_sent(lock, client.welcome->session_id, tick);
       REQUIRE(found != sent_.end());
       REQUIRE(found->second == heights);
     }
@@ -86,8 +89,17 @@ class SessionHarness {
   SessionHub hub_;
   std::future<void> done_;
   std::mutex mutex_;
-  std::map<std::pair<std::uint64_t, Tick>, std::vector<float>> sent_;
+  std::condition_variable recorded_;
+  using Sent = std::map<std::pair<std::uint64_t, Tick>, std::vector<float>>;
+  Sent sent_;
   std::vector<CoreTickStats> ticks_;
+
+  // The observer runs on the network thread after the frame went to the links, so a client may
+  // have completed it first (seen under TSan): a missing record gets a moment to arrive.
+  Sent::const_iterator await_sent(std::unique_lock<std::mutex>& lock, std::uint64_t session, Tick tick) {
+    recorded_.wait_for(lock, std::chrono::seconds(2), [&] { return sent_.count({session, tick}) > 0; });
+    return sent_.find({session, tick});
+  }
 };
 
 // Pumps every client until the condition holds; false after `limit` (generous: a loaded machine).
