@@ -2,7 +2,7 @@
 // alone (no draw): the root-mean-square of the heights, slopes, choppy displacement and its
 // derivatives summed over the lattice's modes. A stream quantizes each field to a fixed number of
 // steps (the codec carries at most 2^20 each way), so a scene whose waves would not fit is refused
-// before it is simulated, with these figures in the reason (server/net/servable_scene.hpp).
+// before it is simulated, with these figures in the reason (server/net/config/servable_scene.hpp).
 #pragma once
 
 #include "scene_params.hpp"

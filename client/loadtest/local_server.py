@@ -167,7 +167,7 @@ def weather_state(k):
 
 
 def weather_front(tick_rate_hz, now_tick, first_change_s, horizon_s):
-    """Every schedulable scene key (server/net/config_options.cpp: spectrum, spreading,
+    """Every schedulable scene key (server/net/config/config_options.cpp: spectrum, spreading,
     wind-speed, wind-dir, fetch, amplitude, depth, choppiness, small-wave) changes every
     WEATHER_FRONT_PERIOD_S, the first change first_change_s from now, until horizon_s."""
     period = round(WEATHER_FRONT_PERIOD_S * tick_rate_hz)

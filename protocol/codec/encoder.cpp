@@ -59,7 +59,7 @@ namespace {
 
 // Copies a field, clamping values beyond the stream's 2^20 steps to the last step and non-finite
 // ones to 0; returns how many it changed. A scene the server let through should never need it
-// (server/net/servable_scene.hpp): if one does, its stream degrades there and says so, instead of
+// (server/net/config/servable_scene.hpp): if one does, its stream degrades there and says so, instead of
 // stopping the server.
 std::uint64_t clamped_copy(std::span<const float> in, float step, std::vector<float>& out) {
   const float limit = static_cast<float>(std::ldexp(static_cast<double>(step), 20) - static_cast<double>(step));
