@@ -83,7 +83,7 @@ _stage_report() {
     done
     if [[ -n $lines ]]; then
       echo "--------------------------- ten slowest tests (s) ---------------------------"
-      printf '%s' "$lines" | sort -rn | awk 'NR <= 10' | awk '{s=$1; $1=""; printf "%8.1f %s\n", s, $0}'
+      printf '%s' "$lines" | sort -rn | awk 'NR <= 10 {s=$1; $1=""; printf "%8.1f %s\n", s, $0}'
     fi
     echo "============================================================================="
   } >&2

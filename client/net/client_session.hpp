@@ -92,6 +92,7 @@ class ClientSession {
   // On the TCP fallback: runs the rounds of UdpHellos that try UDP again; return_to_udp once one
   // is answered.
   void retry_udp(double now);
+  void back_off_udp_retry(double now);
   void return_to_udp(double now);
   bool may_retry_udp() const;
   void close(const std::string& why);

@@ -88,10 +88,15 @@ void ClientSession::fall_back_to_tcp(double now) {
   path_ = Path::tcp;
   last_progress_ = std::max(last_progress_, now);  // the server answers with a keyframe on TCP
   // A fallback soon after a return means UDP still fails: wait longer before the next try.
+  back_off_udp_retry(now);
+  udp_retry_round_end_ = 0.0;
+}
+
+// The first try after udp_retry_after_s, then each twice as late, up to udp_retry_max_s.
+void ClientSession::back_off_udp_retry(double now) {
   udp_retry_delay_s_ = udp_retry_delay_s_ == 0.0 ? config_.udp_retry_after_s
                                                  : std::min(2.0 * udp_retry_delay_s_, config_.udp_retry_max_s);
   next_udp_retry_ = now + udp_retry_delay_s_;
-  udp_retry_round_end_ = 0.0;
 }
 
 bool ClientSession::may_retry_udp() const {
@@ -107,8 +112,7 @@ void ClientSession::retry_udp(double now) {
   }
   if (now >= udp_retry_round_end_) {  // no UdpReady: the path still fails
     udp_retry_round_end_ = 0.0;
-    udp_retry_delay_s_ = std::min(2.0 * udp_retry_delay_s_, config_.udp_retry_max_s);
-    next_udp_retry_ = now + udp_retry_delay_s_;
+    back_off_udp_retry(now);
   } else if (now >= next_udp_hello_) {
     send_udp_hello(now);
   }

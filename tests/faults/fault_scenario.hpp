@@ -22,6 +22,11 @@
 
 namespace ocean::faults {
 
+// Seconds on the steady clock since `start`.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 using test_support::ServerProcess;
 
 // Every fault server: loopback TCP/UDP and metrics on ports the kernel picks, then the test's flags.

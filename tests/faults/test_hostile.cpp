@@ -32,8 +32,6 @@ using std::chrono::milliseconds;
 
 namespace {
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
 test_support::ServerOptions small_server(std::vector<std::string> more = {}) {
   test_support::ServerOptions options;
   options.args = {"--listen", "127.0.0.1:0", "--metrics-listen", "127.0.0.1:0", "--size", "64", "--profiles", "mobile,lite"};

@@ -24,16 +24,16 @@
 #include "message_builders.hpp"
 #include "raw_peers.hpp"
 #include "server_process.hpp"
+#include "temp_file.hpp"
 
 using namespace ocean::faults;
 using ocean::test_support::ServerProcess;
+using ocean::test_support::TempFile;
 namespace proto = ocean::protocol;
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
 namespace {
-
-double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 proto::Hello hello(const char* name) { return proto::Hello{1, 0, ocean::wire::Transport::tcp, name}; }
 
@@ -127,17 +127,18 @@ TEST_CASE("connections churned from one address range as fast as one process can
   });
   stop = true;
   for (auto& t : churners) t.join();
+  const double closed_at_accept = rejects(s.server().metrics_port(), "connect_rate");
   std::printf("[lockouts] %llu connections churned in %.1f s (%.0f a second) from one /24: %d of 10 newcomers welcomed, "
               "%.0f closed at accept (connect_rate), %.0f refused server_full; network thread busy %.2f, waiting %.2f, "
               "admission capacity %.0f (0: none)\n",
               static_cast<unsigned long long>(churned.load()), m.seconds, static_cast<double>(churned.load()) / m.seconds,
-              welcomed, rejects(s.server().metrics_port(), "connect_rate"), rejects(s.server().metrics_port(), "server_full"),
+              welcomed, closed_at_accept, rejects(s.server().metrics_port(), "server_full"),
               scrape(s.server().metrics_port(), "ocean_network_busy_ratio"),
               scrape(s.server().metrics_port(), "ocean_network_cpu_wait_ratio"),
               scrape(s.server().metrics_port(), "ocean_admission_capacity"));
   check_population(s, m);
   CHECK(welcomed == 10);  // main: 1 of 11 at 13 400 a second ("overload ... admitting at most 68")
-  CHECK(rejects(s.server().metrics_port(), "connect_rate") > 0.0);
+  CHECK(closed_at_accept > 0.0);
 }
 
 TEST_CASE("slow and idle connections from many addresses never keep the page from anyone", "[lockouts]") {
@@ -180,14 +181,15 @@ TEST_CASE("slow and idle connections from many addresses never keep the page fro
     for (int i = 0; i < 10; ++i) idle.push_back(std::make_unique<RawTcp>(web, 0, loopback(4, 1 + a).c_str()));
   std::this_thread::sleep_for(milliseconds(300));
   const int beside_flood = page_loads(web, 10);
+  const double evicted = rejects(server.metrics_port(), "http_evicted");
   std::printf("[lockouts] page loads: %d of 10 beside 64 slowloris connections from 8 addresses (%d reopened), %d of 10 "
               "beside 100 idle ones from 100 addresses, %d of 10 beside 400 (%.0f evicted)\n",
-              under_slowloris, reopened.load(), beside_idle, beside_flood, rejects(server.metrics_port(), "http_evicted"));
+              under_slowloris, reopened.load(), beside_idle, beside_flood, evicted);
   CHECK(server.alive());
   CHECK(under_slowloris == 10);  // main: 0 of 11
   CHECK(beside_idle == 10);      // main: 0 of 10
   CHECK(beside_flood == 10);
-  CHECK(rejects(server.metrics_port(), "http_evicted") > 0.0);
+  CHECK(evicted > 0.0);
 }
 
 TEST_CASE("one address holds at most 64 connections by default, and an empty WebSocket Origin is refused",
@@ -220,11 +222,10 @@ TEST_CASE("one address holds at most 64 connections by default, and an empty Web
 
 TEST_CASE("guessing from 50 addresses is as slow as from one, and the operator behind a guesser's address gets in",
           "[lockouts]") {
-  const std::string token_file = "/tmp/ocean-lockouts-token-" + std::to_string(::getpid());
-  std::ofstream(token_file) << "the-operators-token\n";
+  const TempFile token_file("the-operators-token\n");  // removed however the test ends
   // Viewer slots for every guesser: one refused server_full that reconnected at once would churn
   // its /24 past --connect-rate-per-ip, which closes the range (the operator's too) at accept.
-  FaultScenario s({"--size", "64", "--profiles", "mobile,lite", "--max-clients", "200", "--admin-token-file", token_file});
+  FaultScenario s({"--size", "64", "--profiles", "mobile,lite", "--max-clients", "200", "--admin-token-file", token_file.path()});
   start_population(s);
   std::atomic<bool> stop{false};
   std::atomic<std::uint64_t> guesses{0};
@@ -266,14 +267,13 @@ TEST_CASE("guessing from 50 addresses is as slow as from one, and the operator b
     change.request_id = 4242;
     change.wind_speed_mps = 12.0;
     const auto start = Clock::now();
-    if (send_param_change(admin, change, 20.0).applied) took = since(start);
+    if (send_param_change(admin, change, 20.0).applied) took = seconds_since(start);
   });
   stop = true;
   for (auto& t : guessers) t.join();
-  std::remove(token_file.c_str());
   const double looked = rejects(s.server().metrics_port(), "unauthorized") + rejects(s.server().metrics_port(), "token_guessing") -
                         looked_before;
-  const double counted_s = since(counting);
+  const double counted_s = seconds_since(counting);
   std::printf("[lockouts] 53 guessers from 50 addresses for %.1f s: %.0f tokens looked at (%llu answered), the operator's change "
               "applied after %.1f s\n",
               counted_s, looked, static_cast<unsigned long long>(guesses.load()), took);
@@ -285,9 +285,8 @@ TEST_CASE("guessing from 50 addresses is as slow as from one, and the operator b
 
 TEST_CASE("admin changes as fast as they are answered apply a few, refuse the rest with a reason, and skip no tick",
           "[lockouts]") {
-  const std::string token_file = "/tmp/ocean-lockouts-token2-" + std::to_string(::getpid());
-  std::ofstream(token_file) << "the-operators-token\n";
-  FaultScenario s({"--size", "64", "--profiles", "mobile,lite,desktop", "--admin-token-file", token_file});
+  const TempFile token_file("the-operators-token\n");
+  FaultScenario s({"--size", "64", "--profiles", "mobile,lite,desktop", "--admin-token-file", token_file.path()});
   start_population(s);
   const double skipped_before = scrape(s.server().metrics_port(), "ocean_ticks_skipped_total");
   int applied = 0, rate_limited = 0;
@@ -305,7 +304,6 @@ TEST_CASE("admin changes as fast as they are answered apply a few, refuse the re
     }
     std::this_thread::sleep_for(milliseconds(1500));  // the last ones' lead
   });
-  std::remove(token_file.c_str());
   const double skipped = scrape(s.server().metrics_port(), "ocean_ticks_skipped_total") - skipped_before;
   std::printf("[lockouts] 30 admin changes in %.1f s: %d applied, %d rate_limited, %.0f ticks skipped; slowest tick "
               "simulated in %.1f ms, served in %.1f ms\n",

@@ -20,18 +20,18 @@
 #include "message_builders.hpp"
 #include "raw_peers.hpp"
 #include "server_process.hpp"
+#include "temp_file.hpp"
 
 extern char** environ;
 
 using namespace ocean::faults;
 using ocean::test_support::ServerProcess;
+using ocean::test_support::TempFile;
 namespace proto = ocean::protocol;
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
 namespace {
-
-double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 proto::Hello hello(std::uint8_t profile = 1) { return proto::Hello{profile, 0, ocean::wire::Transport::tcp, "operator"}; }
 
@@ -39,9 +39,7 @@ proto::Hello hello(std::uint8_t profile = 1) { return proto::Hello{profile, 0, o
 struct PipedServer {
   explicit PipedServer(std::vector<std::string> args) {
     REQUIRE(::pipe(fds) == 0);
-    const std::string binary = std::string(std::getenv("OCEAN_BUILD_DIR") ? std::getenv("OCEAN_BUILD_DIR") : ".") +
-                               "/server/ocean-server";
-    args.insert(args.begin(), binary);
+    args.insert(args.begin(), ocean::test_support::server_binary());
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -50,7 +48,7 @@ struct PipedServer {
     posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
     posix_spawn_file_actions_adddup2(&actions, fds[1], 2);
     posix_spawn_file_actions_addclose(&actions, fds[0]);
-    REQUIRE(::posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ) == 0);
+    REQUIRE(::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) == 0);
     posix_spawn_file_actions_destroy(&actions);
     ::close(fds[1]);
   }
@@ -66,7 +64,7 @@ struct PipedServer {
     std::string text;
     const auto start = Clock::now();
     char buffer[4096];
-    while (since(start) < timeout_s) {
+    while (seconds_since(start) < timeout_s) {
       const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
       if (n <= 0) return std::nullopt;
       text.append(buffer, static_cast<std::size_t>(n));
@@ -140,17 +138,18 @@ TEST_CASE("after a 3 s stall of the server its UDP viewers come back to UDP", "[
   const auto resumed = Clock::now();
   int on_udp = 0;
   double took = 0.0;
-  while (since(resumed) < 10.0) {
+  while (seconds_since(resumed) < 10.0) {
     std::this_thread::sleep_for(milliseconds(250));
     on_udp = 0;
     for (std::size_t i = 0; i < 100; ++i) on_udp += s.population().on_udp(i);
-    took = since(resumed);
+    took = seconds_since(resumed);
     if (on_udp >= 100) break;
   }
   std::uint64_t fallbacks = 0, returns = 0;
   for (std::size_t i = 0; i < 100; ++i) {
-    fallbacks += s.population().transport_changes(i).first;
-    returns += s.population().transport_changes(i).second;
+    const auto [fell_back, returned] = s.population().transport_changes(i);  // one round trip to its thread
+    fallbacks += fell_back;
+    returns += returned;
   }
   std::printf("[operator] 3 s SIGSTOP: %d of 100 UDP viewers on UDP %.1f s after SIGCONT (%llu fell back to TCP, %llu "
               "came back)\n",
@@ -163,10 +162,9 @@ TEST_CASE("after a 3 s stall of the server its UDP viewers come back to UDP", "[
 TEST_CASE("admin scenes at the corners of the ranges leave a server of every profile serving, and flags it cannot "
           "carry stop it at start with the figures",
           "[operator]") {
-  const std::string token_file = "/tmp/ocean-operator-token-" + std::to_string(::getpid());
-  std::ofstream(token_file) << "the-operators-token\n";
+  const TempFile token_file("the-operators-token\n");  // removed however the test ends
   FaultScenario s({"--size", "256", "--profiles", "mobile,lite,desktop,desktop-choppy,mobile-choppy", "--admin-token-file",
-                   token_file});
+                   token_file.path()});
   start_population(s);
   // A viewer of each other profile, reading what the server sends (not decoding: a count).
   std::vector<std::unique_ptr<RawTcp>> viewers;
@@ -221,7 +219,6 @@ TEST_CASE("admin scenes at the corners of the ranges leave a server of every pro
     }
     std::this_thread::sleep_for(milliseconds(2500));  // past the last change's lead
   });
-  std::remove(token_file.c_str());
   int viewers_streaming = 0;
   for (auto& v : viewers) {  // each still gets frames after the changes
     int messages = 0;

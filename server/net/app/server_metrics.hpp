@@ -60,8 +60,8 @@ class ServerMetrics {
   // process_* (memory, CPU, descriptors, start time) read from /proc now: call before rendering.
   void update_process();
   Counter& sessions_ended(std::string_view reason);  // welcomed sessions closed, by the link's reason
-  Counter& log_suppressed(std::string_view reason);
-  Counter& samples_saturated(std::string_view profile);  // values a stream clamped to its 2^20 steps  // log lines left out by the rate limit (server_log.hpp)
+  Counter& log_suppressed(std::string_view reason);      // log lines left out by the rate limit (server_log.hpp)
+  Counter& samples_saturated(std::string_view profile);  // values a stream clamped to its 2^20 steps
 
  private:
   MetricsRegistry& registry_;

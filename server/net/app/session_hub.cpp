@@ -35,7 +35,8 @@ SessionHub::SessionHub(Server& server, SessionCoreOptions options)
     : server_(server),
       core_(host_of(server), options, tick_now(server.config())),
       budget_(server.config().admission_target.value_or(AdmissionBudget::kDefaultTarget)),
-      connect_rate_(server.config().connect_rate_per_ip, std::max(10.0, 2.0 * server.config().connect_rate_per_ip)) {
+      connect_rate_(server.config().connect_rate_per_ip, std::max(10.0, 2.0 * server.config().connect_rate_per_ip)),
+      connect_rate_rejects_(server.metrics().rejects("connect_rate")) {
   server_.set_connection_handler(
       [this](asio::ip::tcp::socket socket, Server::StreamKind kind) { on_connection(std::move(socket), kind); });
   server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
@@ -57,7 +58,7 @@ void SessionHub::on_connection(asio::ip::tcp::socket socket, Server::StreamKind 
     if (!connect_rate_.allow(peer.address(), now_instant().monotonic_s)) {
       // Closed before it costs a session: churn from one range stays cheap, and is not counted as
       // the cost of serving sessions (AdmissionBudget).
-      server_.metrics().rejects("connect_rate").inc();
+      connect_rate_rejects_.inc();
       log_reject(transport, peer.address().to_string(), "connect_rate");
       socket.close(error);
       return;

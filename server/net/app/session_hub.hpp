@@ -35,6 +35,7 @@ class SessionHub {
   SessionCore core_;
   AdmissionBudget budget_;
   ConnectRate connect_rate_;
+  Counter& connect_rate_rejects_;  // looked up once: churn at tens of thousands a second lands here
   double window_start_s_ = 0.0;
   double window_busy_s_ = 0.0;
   std::optional<ThreadSchedule> window_schedule_;  // the network thread's at the window's start

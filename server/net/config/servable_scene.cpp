@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 namespace ocean::server {
 namespace {
@@ -27,8 +29,21 @@ std::string fits(const char* field, double rms, double step, const char* unit, c
          " RMS): lower the amplitude, the wind speed or the choppiness";
 }
 
-std::string lattice_fits(const sim::SceneParams& lattice, const Profile& profile, const std::string& where) {
-  const sim::FieldExtent e = sim::expected_extent(lattice);
+// Each lattice's extent once: profiles share lattices (mobile and mobile-choppy one grid, the
+// desktops their cascades), and each extent is a sum over every mode of the lattice.
+class Extents {
+ public:
+  const sim::FieldExtent& of(const sim::SceneParams& lattice) {
+    for (const auto& [params, extent] : known_)
+      if (params == lattice) return extent;
+    return known_.emplace_back(lattice, sim::expected_extent(lattice)).second;
+  }
+
+ private:
+  std::vector<std::pair<sim::SceneParams, sim::FieldExtent>> known_;
+};
+
+std::string lattice_fits(const sim::FieldExtent& e, const Profile& profile, const std::string& where) {
   std::string error = fits("heights", e.height_m, profile.height_step_m, " m", profile, where);
   if (error.empty() && profile.normals) error = fits("slopes", e.slope, profile.slope_step, "", profile, where);
   if (error.empty() && profile.choppy)
@@ -42,12 +57,13 @@ std::string lattice_fits(const sim::SceneParams& lattice, const Profile& profile
 
 std::string servable_scene(const sim::SceneParams& scene, std::span<const Profile* const> profiles) {
   if (std::string error = sim::validate(scene); !error.empty()) return error;
+  Extents extents;
   for (const Profile* profile : profiles) {
     if (profile->cascades.empty()) {
       sim::SceneParams lattice = scene;  // the profile's grid of the scene's own lattice
       lattice.size_x = std::min(scene.size_x, static_cast<int>(profile->grid));
       lattice.size_z = std::min(scene.size_z, static_cast<int>(profile->grid));
-      if (std::string error = lattice_fits(lattice, *profile, ""); !error.empty()) return error;
+      if (std::string error = lattice_fits(extents.of(lattice), *profile, ""); !error.empty()) return error;
       continue;
     }
     for (std::size_t c = 0; c < profile->cascades.size(); ++c) {
@@ -57,7 +73,8 @@ std::string servable_scene(const sim::SceneParams& scene, std::span<const Profil
       } catch (const sim::ParamError& e) {
         return "profile '" + std::string(profile->name) + "' cannot realize its " + e.what();
       }
-      if (std::string error = lattice_fits(lattice, *profile, " on cascade " + std::to_string(c)); !error.empty())
+      if (std::string error = lattice_fits(extents.of(lattice), *profile, " on cascade " + std::to_string(c));
+          !error.empty())
         return error;
     }
   }
