@@ -1,8 +1,8 @@
 // Cascade: one of several lattices that realize a scene's spectrum together, so that the sea they
 // sum to repeats no sooner than the largest of them. Each is the scene's patch times patch_scale,
 // sampled grid x grid, keeping the waves of its band (cycles per its own patch) and drawing its own
-// Gaussians. The sim (sim/cascade_scene.hpp) and the codec (cascade_scene_model.hpp) derive a
-// cascade's scene from these numbers by the same rule.
+// Gaussians. model/cascade_scene.hpp derives a cascade's scene from these numbers, for the sim and
+// the codec alike.
 #pragma once
 
 #include "common/wave_band.hpp"

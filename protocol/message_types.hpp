@@ -36,7 +36,7 @@ struct StreamParams {
   bool operator==(const StreamParams&) const = default;
 };
 
-// Mirrors sim/scene_params.hpp, except depth_m: 0 here means deep water (infinity there).
+// Mirrors model/scene_params.hpp, except depth_m: 0 here means deep water (infinity there).
 struct SceneParams {
   std::uint16_t size_x = 256;
   std::uint16_t size_z = 256;

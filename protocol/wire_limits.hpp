@@ -52,7 +52,7 @@ inline constexpr std::size_t kMaxClientNameBytes = 64;
 inline constexpr std::size_t kMaxAdminTokenBytes = 128;
 inline constexpr std::size_t kMaxTextBytes = 256;
 
-// Scene ranges: exactly what sim/scene_params.cpp validate() accepts, so every scene the
+// Scene ranges: exactly what model/scene_params.cpp validate() accepts, so every scene the
 // sim runs passes the wire check (depth differs only in encoding: 0 on the wire = deep water).
 inline constexpr std::uint16_t kMinSceneSize = 16;
 inline constexpr std::uint16_t kMaxSceneSize = 2048;

@@ -42,16 +42,16 @@ int main(int argc, char** argv) {
     ocean::server::install_log_sink();  // a log pipe whose reader goes away is counted, never fatal
     ocean::server::set_log_level(loaded.config.log_level);
     spdlog::info("ocean-server starting: {}", ocean::server::describe_config(loaded.config));
-    const ocean::sim::SceneParams& scene = loaded.config.scene;
-    if (scene.spectrum == ocean::sim::SpectrumKind::phillips &&
-        (scene.spreading != ocean::sim::SceneParams{}.spreading || scene.fetch_m != ocean::sim::SceneParams{}.fetch_m))
+    const ocean::model::SceneParams& scene = loaded.config.scene;
+    if (scene.spectrum == ocean::model::SpectrumKind::phillips &&
+        (scene.spreading != ocean::model::SceneParams{}.spreading || scene.fetch_m != ocean::model::SceneParams{}.fetch_m))
       spdlog::warn("--spreading and --fetch shape JONSWAP only; the Phillips spectrum ignores them "
                    "(its own |k.w|^2 factor spreads it): use --spectrum jonswap");
     ocean::server::Server server(std::move(loaded.config));
     ocean::server::SessionHub sessions(server);
     server.run();
     return 0;
-  } catch (const std::invalid_argument& e) {  // sim::ParamError too: the configuration's fault
+  } catch (const std::invalid_argument& e) {  // model::ParamError too: the configuration's fault
     std::fprintf(stderr, "ocean-server: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {

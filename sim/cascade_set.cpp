@@ -5,7 +5,7 @@ namespace ocean::sim {
 CascadeSet::CascadeSet(const SceneParams& scene, std::span<const Cascade> cascades) {
   oceans_.reserve(cascades.size());
   for (std::size_t i = 0; i < cascades.size(); ++i)
-    oceans_.emplace_back(cascade_scene(scene, cascades[i], static_cast<int>(i)));
+    oceans_.emplace_back(model::cascade_scene(scene, cascades[i], static_cast<int>(i)));
 }
 
 void CascadeSet::evaluate(double t, Frame& out, FrameRequest request) {

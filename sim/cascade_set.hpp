@@ -4,6 +4,7 @@
 #pragma once
 
 #include "cascade_scene.hpp"
+#include "cascade_frame.hpp"
 #include "ocean.hpp"
 
 #include <span>

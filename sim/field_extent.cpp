@@ -1,7 +1,6 @@
 #include "field_extent.hpp"
 
-#include "initial_amplitude.hpp"
-#include "spectrum.hpp"
+#include "sea_model.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // before it is simulated, with these figures in the reason (server/net/config/servable_scene.hpp).
 #pragma once
 
-#include "scene_params.hpp"
+#include "sea_model.hpp"
 
 namespace ocean::sim {
 

@@ -1,8 +1,7 @@
 // Building a band's ModeTable from h0 and the dispersion relation.
 #include "mode_table.hpp"
 
-#include "dispersion.hpp"
-#include "initial_amplitude.hpp"
+#include "sea_model.hpp"
 
 #include <cmath>
 #include <complex>

@@ -3,8 +3,7 @@
 // mode are zero, so a band keeps exactly the modes with |kx| < n_x/2 and |kz| < n_z/2.
 #pragma once
 
-#include "scene_params.hpp"
-#include "spectrum.hpp"
+#include "sea_model.hpp"
 
 #include <cstddef>
 #include <vector>

@@ -3,10 +3,7 @@
 #include "ocean.hpp"
 
 #include "band_evaluator.hpp"
-#include "dispersion.hpp"
-#include "initial_amplitude.hpp"
-#include "param_message.hpp"
-#include "spectrum.hpp"
+#include "sea_model.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "frame.hpp"
-#include "scene_params.hpp"
+#include "sea_model.hpp"
 
 #include <complex>
 #include <memory>

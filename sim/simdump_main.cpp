@@ -20,7 +20,7 @@ namespace {
 
 using ocean::sim::Frame;
 using ocean::sim::FrameRequest;
-using ocean::sim::SceneParams;
+using ocean::model::SceneParams;
 
 struct Options {
   SceneParams scene;
@@ -31,8 +31,8 @@ struct Options {
   bool choppy = false;
   bool no_slopes = false;
   double lambda = 1.0;
-  std::string spectrum = std::string(ocean::sim::spectrum_name(SceneParams{}.spectrum));
-  std::string spreading = std::string(ocean::sim::spreading_name(SceneParams{}.spreading));
+  std::string spectrum = std::string(ocean::model::spectrum_name(SceneParams{}.spectrum));
+  std::string spreading = std::string(ocean::model::spreading_name(SceneParams{}.spreading));
   bool summary = false;
   bool hash = false;
   bool json = false;
@@ -98,9 +98,9 @@ void print_summary(const ocean::sim::Ocean& ocean, const Options& o, const Tick&
   std::printf("  grid       %d x %d%s\n", f.n_x, f.n_z, o.band ? " (band of the full grid)" : " (full frame)");
   std::printf("  full grid  %d x %d over a %g x %g m patch (dx = %g m)\n", p.size_x, p.size_z, p.patch_x_m,
               p.patch_z_m, p.patch_x_m / f.n_x);
-  std::string spectrum_name(ocean::sim::spectrum_name(p.spectrum));
-  if (p.spectrum == ocean::sim::SpectrumKind::jonswap)
-    spectrum_name += " (" + std::string(ocean::sim::spreading_name(p.spreading)) + ")";
+  std::string spectrum_name(ocean::model::spectrum_name(p.spectrum));
+  if (p.spectrum == ocean::model::SpectrumKind::jonswap)
+    spectrum_name += " (" + std::string(ocean::model::spreading_name(p.spreading)) + ")";
   std::printf("  spectrum   %s, wind %g m/s towards %g deg, fetch %g m, amplitude %g, depth %g m, seed %" PRIu64
               "\n",
               spectrum_name.c_str(), p.wind_speed_mps, p.wind_dir_deg, p.fetch_m, p.amplitude, p.depth_m, p.seed);
@@ -127,7 +127,7 @@ void print_json(const ocean::sim::Ocean& ocean, const Options& o, const Tick& ti
   std::snprintf(hash, sizeof hash, "%016" PRIx64, ocean::sim::frame_hash(f));
   ocean::common::JsonWriter json(ocean::common::JsonWriter::Style::compact);
   json.integer("n_x", f.n_x).integer("n_z", f.n_z).number("time_s", f.time_s, 17);
-  json.text("spectrum", ocean::sim::spectrum_name(ocean.params().spectrum));
+  json.text("spectrum", ocean::model::spectrum_name(ocean.params().spectrum));
   json.number("height_min", h.min, 9).number("height_max", h.max, 9).number("height_std", h.std, 9);
   json.number("hs", 4.0 * h.std, 9).number("expected_hs", 4.0 * std::sqrt(ocean.expected_variance()), 9);
   json.number("max_slope", max_slope(f), 9).fixed("tick_ms", tick.median_ms, 4);
@@ -154,12 +154,12 @@ int main(int argc, char** argv) {
   app.add_option("--lambda", o.lambda, "choppiness used with --choppy")->capture_default_str();
   app.add_flag("--no-slopes", o.no_slopes, "skip the slope fields");
   app.add_option("--seed", s.seed, "random seed of h0");
-  using ocean::sim::join_names;
-  app.add_option("--spectrum", o.spectrum, join_names(ocean::sim::spectrum_names(), ", ", " or "))
-      ->check(CLI::IsMember(ocean::sim::spectrum_names()))
+  using ocean::model::join_names;
+  app.add_option("--spectrum", o.spectrum, join_names(ocean::model::spectrum_names(), ", ", " or "))
+      ->check(CLI::IsMember(ocean::model::spectrum_names()))
       ->capture_default_str();
-  app.add_option("--spreading", o.spreading, "JONSWAP spreading: " + join_names(ocean::sim::spreading_names(), ", ", " or "))
-      ->check(CLI::IsMember(ocean::sim::spreading_names()))
+  app.add_option("--spreading", o.spreading, "JONSWAP spreading: " + join_names(ocean::model::spreading_names(), ", ", " or "))
+      ->check(CLI::IsMember(ocean::model::spreading_names()))
       ->capture_default_str();
   app.add_option("--wind", s.wind_speed_mps, "wind speed U10 in m/s")->capture_default_str();
   app.add_option("--wind-dir", s.wind_dir_deg, "direction the wind blows towards, degrees from +x to +z");
@@ -171,8 +171,8 @@ int main(int argc, char** argv) {
 
   if (o.size) s.size_x = s.size_z = o.size;
   if (o.patch_m) s.patch_x_m = s.patch_z_m = o.patch_m;
-  s.spectrum = *ocean::sim::spectrum_from_name(o.spectrum);  // IsMember checked the names
-  s.spreading = *ocean::sim::spreading_from_name(o.spreading);
+  s.spectrum = *ocean::model::spectrum_from_name(o.spectrum);  // IsMember checked the names
+  s.spreading = *ocean::model::spreading_from_name(o.spreading);
   s.choppiness = o.choppy ? o.lambda : 0.0;
 
   try {
@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
       print_json(ocean, o, tick);
     else
       print_summary(ocean, o, tick);
-  } catch (const ocean::sim::ParamError& e) {
+  } catch (const ocean::model::ParamError& e) {
     std::fprintf(stderr, "ocean-simdump: %s\n", e.what());
     return 2;
   }

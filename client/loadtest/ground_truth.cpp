@@ -31,7 +31,7 @@ void GroundTruth::set_scene(Tick effective_tick, const protocol::SceneParams& sc
 }
 
 GroundTruth::SceneEntry GroundTruth::entry(Tick effective_tick, const protocol::SceneParams& scene) const {
-  const sim::SceneParams params = scene_wire::to_sim(scene);
+  const model::SceneParams params = scene_wire::to_scene(scene);
   return SceneEntry{effective_tick, scene, std::make_unique<sim::Ocean>(params),
                     cascades_.empty() ? nullptr : std::make_unique<sim::CascadeSet>(params, cascades_)};
 }

@@ -44,7 +44,7 @@ class Decoder {
   // The scene in force from tick `from` on (the Welcome's and every SceneUpdate's, with the
   // update's serial mod 256 as tag). Chunks of ticks with no known scene, or naming another tag,
   // are refused as unknown_scene. Throws std::invalid_argument when the scene does not fit.
-  void add_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene) { scenes_.add(from, tag, scene); }
+  void add_scene(Tick from, std::uint8_t tag, const model::SceneParams& scene) { scenes_.add(from, tag, scene); }
   const SceneTimeline& scenes() const { return scenes_; }
 
   // Takes one chunk; on any error nothing inside the decoder changes.

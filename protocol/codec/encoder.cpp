@@ -49,7 +49,7 @@ Encoder::Encoder(const StreamConfig& config, EncoderOptions options)
     throw std::invalid_argument("EncoderOptions.key_velocity_extra_bits must be in [0, 16]");
 }
 
-void Encoder::set_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene) {
+void Encoder::set_scene(Tick from, std::uint8_t tag, const model::SceneParams& scene) {
   scenes_.add(from, tag, scene);
   advanced_.clear();  // advanced under the timeline as it was
   predictions_.clear();
@@ -177,8 +177,8 @@ std::shared_ptr<const EncodedFrame> Encoder::explicit_key(Tick tick) {
   const double step = static_cast<double>(config_.height_step_m);
   std::vector<std::int64_t> f1(nn), f0(nn);
   for (std::size_t i = 0; i < nn; ++i) {
-    f1[i] = to_fixed(static_cast<double>(t1.height[i]) / step, kHeightFracBits);
-    f0[i] = to_fixed(static_cast<double>(t0.height[i]) / step, kHeightFracBits);
+    f1[i] = model::to_fixed(static_cast<double>(t1.height[i]) / step, kHeightFracBits);
+    f0[i] = model::to_fixed(static_cast<double>(t0.height[i]) / step, kHeightFracBits);
   }
   HalfSpectrum s1, s0;
   model_.spectrum_of(f1.data(), s1);

@@ -73,11 +73,11 @@ class Encoder {
 
   // The scene in force from tick `from` on, as the clients learn it (SceneUpdate): needed before the
   // first encode, and announced to the decoders before any frame of its ticks reaches them.
-  void set_scene(Tick from, std::uint8_t tag, const SceneModelParams& scene);
+  void set_scene(Tick from, std::uint8_t tag, const model::SceneParams& scene);
   const SceneTimeline& scenes() const { return scenes_; }
   // That scene's model, built ahead elsewhere (SceneTimeline::provide_model): the first frame of
   // a new scene then costs no model build (a desktop stream's took 50-100 ms).
-  void provide_scene_model(Tick from, const SceneModelParams& scene, std::shared_ptr<const SceneModel> model) {
+  void provide_scene_model(Tick from, const model::SceneParams& scene, std::shared_ptr<const SceneModel> model) {
     scenes_.provide_model(from, scene, std::move(model));
   }
 

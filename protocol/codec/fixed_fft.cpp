@@ -19,9 +19,9 @@ FixedFft::FixedFft(int n) : n_(n) {
   cos_.resize(n / 2);
   sin_.resize(n / 2);
   for (int j = 0; j < n / 2; ++j) {
-    const double angle = kTwoPi * j / n;
-    cos_[j] = to_fixed(det_cos(angle), kTwiddleBits);
-    sin_[j] = to_fixed(det_sin(angle), kTwiddleBits);
+    const double angle = model::kTwoPi * j / n;
+    cos_[j] = model::to_fixed(model::det_cos(angle), kTwiddleBits);
+    sin_[j] = model::to_fixed(model::det_sin(angle), kTwiddleBits);
   }
   bitrev_ = bit_reversal(n);
   // The exact shortcuts in the butterflies rely on w(n/4) = (0, 1) exactly.

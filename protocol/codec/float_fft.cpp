@@ -184,9 +184,9 @@ FloatFft::FloatFft(int n) : n_(n) {
   cos_.resize(n / 2);
   sin_.resize(n / 2);
   for (int j = 0; j < n / 2; ++j) {
-    const double angle = kTwoPi * j / n;
-    cos_[j] = static_cast<float>(det_cos(angle));
-    sin_[j] = static_cast<float>(det_sin(angle));
+    const double angle = model::kTwoPi * j / n;
+    cos_[j] = static_cast<float>(model::det_cos(angle));
+    sin_[j] = static_cast<float>(model::det_sin(angle));
   }
   bitrev_ = bit_reversal(n);
   block_.resize(static_cast<std::size_t>(2) * kBlockRows * n);

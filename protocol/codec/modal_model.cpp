@@ -3,7 +3,9 @@
 #include "modal_model.hpp"
 
 #include "channel_pair.hpp"
-#include "det_math.hpp"
+#include "arithmetic.hpp"
+#include "dispersion.hpp"
+#include "scene_params.hpp"
 #include "fft_bin.hpp"
 #include "field_conversion.hpp"
 #include "fixed_point.hpp"
@@ -41,21 +43,21 @@ ModalModel::ModalModel(const StreamConfig& config)
   for (const StreamConfig::Lattice& l : lattices_) {
     const int n = l.n, hc = n / 2 + 1;
     for (int r = 0; r < n; ++r) {
-      const double kz = kTwoPi * signed_index(r, n) / l.patch_z_m;
+      const double kz = model::kTwoPi * signed_index(r, n) / l.patch_z_m;
       for (int c = 0; c < hc; ++c) {
-        const double kx = kTwoPi * signed_index(c, n) / l.patch_x_m;
+        const double kx = model::kTwoPi * signed_index(c, n) / l.patch_x_m;
         const double k = std::sqrt(kx * kx + kz * kz);
-        const double w = det_angular_frequency(k, config.gravity_mps2, config.depth_m);
-        a_.push_back(to_fixed(2.0 * det_cos(w * dt), kRecurrenceBits));
+        const double w = model::angular_frequency<model::Det>(k, config.gravity_mps2, model::scene_depth(config.depth_m));
+        a_.push_back(model::to_fixed(2.0 * model::det_cos(w * dt), kRecurrenceBits));
       }
     }
     auto grid = std::make_unique<Grid>(n);
     grid->kx.assign(hc, 0.0f);
     grid->kz.assign(n, 0.0f);
     if (normals_) {
-      for (int c = 0; c < n / 2; ++c) grid->kx[c] = static_cast<float>(kTwoPi * c / l.patch_x_m * factor);
+      for (int c = 0; c < n / 2; ++c) grid->kx[c] = static_cast<float>(model::kTwoPi * c / l.patch_x_m * factor);
       for (int r = 0; r < n; ++r)
-        if (r != n / 2) grid->kz[r] = static_cast<float>(kTwoPi * signed_index(r, n) / l.patch_z_m * factor);
+        if (r != n / 2) grid->kz[r] = static_cast<float>(model::kTwoPi * signed_index(r, n) / l.patch_z_m * factor);
     }
     for (int r = 0; r < n; ++r) {
       if (r == n / 2) continue;
@@ -139,9 +141,9 @@ void ModalModel::build_choppy_factors(double choppiness) {
       const int n = l.n, hc = n / 2 + 1;
       for (int r = 0; r < n; ++r) {
         if (r == n / 2) continue;
-        const double kz = kTwoPi * signed_index(r, n) / l.patch_z_m;
+        const double kz = model::kTwoPi * signed_index(r, n) / l.patch_z_m;
         for (int c = 0; c < n / 2; ++c) {
-          const double kx = kTwoPi * c / l.patch_x_m;
+          const double kx = model::kTwoPi * c / l.patch_x_m;
           const double k = std::sqrt(kx * kx + kz * kz);
           if (k == 0.0) continue;
           const std::size_t at = l.modes_at + static_cast<std::size_t>(r) * hc + c;

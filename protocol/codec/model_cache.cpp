@@ -14,9 +14,9 @@ auto find_or_build(Entries& entries, std::size_t keep, Same same, Build build) {
 
 }  // namespace
 
-std::shared_ptr<const SceneModel> ModelCache::scene_model(const StreamConfig& stream, const SceneModelParams& scene) {
+std::shared_ptr<const SceneModel> ModelCache::scene_model(const StreamConfig& stream, const model::SceneParams& scene) {
   // Choppiness does not shape heights: scenes differing only in it share one model.
-  SceneModelParams heights = scene;
+  model::SceneParams heights = scene;
   heights.choppiness = 0.0;
   return find_or_build(
       scenes_, kKeep, [&](const SceneEntry& e) { return e.stream == stream && e.scene == heights; },

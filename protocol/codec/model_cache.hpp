@@ -16,7 +16,7 @@ namespace ocean::codec {
 class ModelCache {
  public:
   // `stream` already carries the scene's depth (as SceneTimeline builds them).
-  std::shared_ptr<const SceneModel> scene_model(const StreamConfig& stream, const SceneModelParams& scene);
+  std::shared_ptr<const SceneModel> scene_model(const StreamConfig& stream, const model::SceneParams& scene);
   std::shared_ptr<const ModalModel> recurrence(const StreamConfig& stream);
 
  private:
@@ -25,7 +25,7 @@ class ModelCache {
   static constexpr std::size_t kKeep = 8;
   struct SceneEntry {
     StreamConfig stream;
-    SceneModelParams scene;
+    model::SceneParams scene;
     std::shared_ptr<const SceneModel> model;
   };
   struct RecurrenceEntry {

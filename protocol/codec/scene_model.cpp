@@ -2,21 +2,23 @@
 // per-tick evaluation h(k, t) = a e^{-iwt} + b e^{+iwt}, as the sim's band evaluator does it.
 #include "scene_model.hpp"
 
-#include "cascade_scene_model.hpp"
-#include "det_math.hpp"
+#include "arithmetic.hpp"
+#include "cascade_scene.hpp"
+#include "dispersion.hpp"
 #include "fft_bin.hpp"
-#include "scene_amplitude.hpp"
-#include "scene_spectrum.hpp"
+#include "initial_amplitude.hpp"
+#include "spectrum.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 #include <string>
 
 namespace ocean::codec {
 namespace {
 
-const SceneModelParams& require_valid(const StreamConfig& stream, const SceneModelParams& scene) {
+const model::SceneParams& require_valid(const StreamConfig& stream, const model::SceneParams& scene) {
   std::string err = validate(stream);
   if (!err.empty()) throw std::invalid_argument("scene model: stream config: " + err);
   err = validate(scene);
@@ -28,7 +30,7 @@ const SceneModelParams& require_valid(const StreamConfig& stream, const SceneMod
   // The recurrence the decoder advances with is built from the stream's physics; a scene with other
   // physics would predict a different ocean from the one the stream advances.
   if (stream.patch_x_m != scene.patch_x_m || stream.patch_z_m != scene.patch_z_m ||
-      stream.gravity_mps2 != scene.gravity_mps2 || stream.depth_m != scene.depth_m)
+      stream.gravity_mps2 != scene.gravity_mps2 || stream.depth_m != model::wire_depth(scene.depth_m))
     throw std::invalid_argument("scene model: the stream's patch, gravity and depth must equal the scene's");
   return scene;
 }
@@ -44,43 +46,41 @@ double tick_time_s(std::int64_t tick, int rate_hz) {
   return static_cast<double>(seconds) + static_cast<double>(tick - seconds * rate_hz) / rate_hz;
 }
 
-SceneModel::SceneModel(const StreamConfig& stream, const SceneModelParams& scene)
+SceneModel::SceneModel(const StreamConfig& stream, const model::SceneParams& scene)
     : scene_(require_valid(stream, scene)), rate_hz_(stream.effective_tick_rate_hz()) {
   const double unit = static_cast<double>(stream.height_step_m) / 65536.0;
   const std::vector<StreamConfig::Lattice> lattices = stream.lattices();
   for (std::size_t i = 0; i < lattices.size(); ++i) {
     const StreamConfig::Lattice& l = lattices[i];
     // A cascade's waves are its own scene's (CODEC.md 7.7); one lattice is the scene itself.
-    const SceneModelParams own =
-        stream.cascades.empty() ? scene_ : cascade_scene_model(scene_, stream.cascades[i], static_cast<int>(i));
-    add_lattice(l, own, unit, stream.gravity_mps2, stream.depth_m);
+    const model::SceneParams own =
+        stream.cascades.empty() ? scene_ : model::cascade_scene(scene_, stream.cascades[i], static_cast<int>(i));
+    add_lattice(l, own, unit);
   }
   total_modes_ = stream.modes();
 }
 
-void SceneModel::add_lattice(const StreamConfig::Lattice& l, const SceneModelParams& scene, double unit,
-                             double gravity_mps2, double depth_m) {
-  const SceneSpectrum spectrum(scene);
+void SceneModel::add_lattice(const StreamConfig::Lattice& l, const model::SceneParams& scene, double unit) {
+  const model::Spectrum<model::Det> spectrum(scene);
   const int n = l.n, hc = n / 2 + 1;
   const double scale = static_cast<double>(n) * static_cast<double>(n) / unit;
   lattices_.push_back({n, l.modes_at});
   for (int r = 0; r < n; ++r) {
     const int kz = signed_index(r, n);
     if (r == n / 2) continue;  // Nyquist row
-    const double wz = kTwoPi * kz / l.patch_z_m;
+    const double wz = model::kTwoPi * kz / l.patch_z_m;
     for (int c = 0; c < n / 2; ++c) {  // column n/2 is the Nyquist column
       if (c == 0 && kz <= 0) continue;  // DC, and the kx = 0 partners mirrored in state_at
-      const double wx = kTwoPi * c / l.patch_x_m;
-      const SceneComplex a = scene_initial_amplitude(scene, spectrum, c, kz);
-      const SceneComplex h = scene_initial_amplitude(scene, spectrum, -c, -kz);
-      const SceneComplex b{h.re, -h.im};
+      const double wx = model::kTwoPi * c / l.patch_x_m;
+      const std::complex<double> a = model::initial_amplitude(scene, spectrum, c, kz);
+      const std::complex<double> b = std::conj(model::initial_amplitude(scene, spectrum, -c, -kz));
       Mode m;
       m.index = static_cast<std::int32_t>(l.modes_at) + r * hc + c;
-      m.omega = det_angular_frequency(std::sqrt(wx * wx + wz * wz), gravity_mps2, depth_m);
-      m.sum_re = (a.re + b.re) * scale;
-      m.sum_im = (a.im + b.im) * scale;
-      m.diff_re = (a.re - b.re) * scale;
-      m.diff_im = (a.im - b.im) * scale;
+      m.omega = model::angular_frequency<model::Det>(model::Det::hypot(wx, wz), scene.gravity_mps2, scene.depth_m);
+      m.sum_re = (a.real() + b.real()) * scale;
+      m.sum_im = (a.imag() + b.imag()) * scale;
+      m.diff_re = (a.real() - b.real()) * scale;
+      m.diff_im = (a.imag() - b.imag()) * scale;
       if (m.sum_re == 0.0 && m.sum_im == 0.0 && m.diff_re == 0.0 && m.diff_im == 0.0) continue;
       if (!(std::fabs(m.sum_re) + std::fabs(m.diff_im) < kMaxUnits &&
             std::fabs(m.sum_im) + std::fabs(m.diff_re) < kMaxUnits))
@@ -110,15 +110,15 @@ void SceneModel::state_at(std::uint64_t tick, ModalState& out) const {
       phase[i] = modes_[at + i].omega * t_cur;
       phase[kBlock + i] = modes_[at + i].omega * t_prev;
     }
-    det_cos_sin(phase, count, cos_p, sin_p);
-    det_cos_sin(phase + kBlock, count, cos_p + kBlock, sin_p + kBlock);
+    model::det_cos_sin(phase, count, cos_p, sin_p);
+    model::det_cos_sin(phase + kBlock, count, cos_p + kBlock, sin_p + kBlock);
     for (std::size_t i = 0; i < count; ++i) {
       const Mode& m = modes_[at + i];
       for (int which = 0; which < 2; ++which) {
         HalfSpectrum& s = which == 0 ? out.cur : out.prev;
         const double c = cos_p[which * kBlock + i], sn = sin_p[which * kBlock + i];
-        s.re[m.index] = to_fixed(m.sum_re * c + m.diff_im * sn, 0);
-        s.im[m.index] = to_fixed(m.sum_im * c - m.diff_re * sn, 0);
+        s.re[m.index] = model::to_fixed(m.sum_re * c + m.diff_im * sn, 0);
+        s.im[m.index] = model::to_fixed(m.sum_im * c - m.diff_re * sn, 0);
       }
     }
   }

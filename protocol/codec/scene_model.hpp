@@ -1,13 +1,12 @@
 // SceneModel: the ocean's state at any tick predicted from the scene parameters and the seed alone,
 // bit-identically on every platform, so that a key frame costs only corrections and a weather
-// change costs nothing. The codec keeps its own copy of the sim's formulas (scene_spectrum,
-// scene_spreading, scene_amplitude) written with det_ functions: clients never link the sim, and
-// the sim's libm results differ between platforms in the last bits, which would break the
-// closed loop. CODEC.md 7.6 is the normative description.
+// change costs nothing. It evaluates the sea model (model/) in the Det arithmetic: the sim's libm
+// results differ between platforms in the last bits, which would break the closed loop. CODEC.md
+// 7.6 is the normative description.
 #pragma once
 
 #include "modal_model.hpp"
-#include "scene_model_params.hpp"
+#include "scene_params.hpp"
 #include "stream_config.hpp"
 
 #include <cstdint>
@@ -26,7 +25,7 @@ class SceneModel {
   // std::invalid_argument when the stream grid exceeds size_x/size_z, the stream's patch, gravity
   // or depth differ from the scene's, or the values are unusable (invalid, or a mode too large
   // for int64 units).
-  SceneModel(const StreamConfig& stream, const SceneModelParams& scene);
+  SceneModel(const StreamConfig& stream, const model::SceneParams& scene);
 
   // The decoder state the scene predicts: out.cur = X(tick), out.prev = X(tick - 1) (tick 0: prev =
   // X(-1), time may be negative), X = the unnormalized DFT of the stream's band-limited height field
@@ -35,7 +34,7 @@ class SceneModel {
   // n/2+1..n-1 the conjugates of rows n-r).
   void state_at(std::uint64_t tick, ModalState& out) const;
 
-  const SceneModelParams& scene() const { return scene_; }
+  const model::SceneParams& scene() const { return scene_; }
 
  private:
   // One nonzero mode: h(t) n^2 / u = (sum_re cos p + diff_im sin p) + i (sum_im cos p - diff_re sin p)
@@ -50,10 +49,9 @@ class SceneModel {
     int n;
     std::size_t modes_at;
   };
-  void add_lattice(const StreamConfig::Lattice& lattice, const SceneModelParams& scene, double unit,
-                   double gravity_mps2, double depth_m);
+  void add_lattice(const StreamConfig::Lattice& lattice, const model::SceneParams& scene, double unit);
 
-  SceneModelParams scene_;
+  model::SceneParams scene_;
   int rate_hz_;
   std::vector<Mode> modes_;  // every lattice's, their indices into the stream's half spectrum
   std::vector<LatticeAt> lattices_;

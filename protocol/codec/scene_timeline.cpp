@@ -19,7 +19,7 @@ SceneTimeline::SceneTimeline(SceneTimeline&&) noexcept = default;
 SceneTimeline& SceneTimeline::operator=(SceneTimeline&&) noexcept = default;
 SceneTimeline::~SceneTimeline() = default;
 
-void SceneTimeline::add(Tick from, std::uint8_t tag, const SceneModelParams& scene) {
+void SceneTimeline::add(Tick from, std::uint8_t tag, const model::SceneParams& scene) {
   if (config_.cascades.empty() && (scene.size_x < config_.grid || scene.size_z < config_.grid))
     throw std::invalid_argument("SceneTimeline::add: the scene's grid " + std::to_string(scene.size_x) + "x" +
                                 std::to_string(scene.size_z) + " is smaller than the stream's " +
@@ -48,13 +48,13 @@ Tick SceneTimeline::start_of(Tick tick) const {
 
 StreamConfig SceneTimeline::with_depth(const Held& held) const { return model_config(held.entry.scene); }
 
-StreamConfig SceneTimeline::model_config(const SceneModelParams& scene) const {
+StreamConfig SceneTimeline::model_config(const model::SceneParams& scene) const {
   StreamConfig c = config_;
-  c.depth_m = scene.depth_m;
+  c.depth_m = model::wire_depth(scene.depth_m);
   return c;
 }
 
-void SceneTimeline::provide_model(Tick from, const SceneModelParams& scene, std::shared_ptr<const SceneModel> model) {
+void SceneTimeline::provide_model(Tick from, const model::SceneParams& scene, std::shared_ptr<const SceneModel> model) {
   const auto it = entries_.find(from);
   if (it != entries_.end() && it->second->entry.scene == scene && !it->second->model) it->second->model = std::move(model);
 }

@@ -20,7 +20,7 @@ class SceneTimeline {
  public:
   struct Entry {
     std::uint8_t tag = 0;     // SceneUpdate.serial mod 256; every chunk names the tag of its tick
-    SceneModelParams scene;
+    model::SceneParams scene;
   };
 
   explicit SceneTimeline(const StreamConfig& config);
@@ -30,7 +30,7 @@ class SceneTimeline {
 
   // The scene in force from `from` on (replacing an entry of the same tick). Throws
   // std::invalid_argument when the scene does not fit the stream (grid larger than its size).
-  void add(Tick from, std::uint8_t tag, const SceneModelParams& scene);
+  void add(Tick from, std::uint8_t tag, const model::SceneParams& scene);
   // The entry in force at `tick`, or nullptr before the first one.
   const Entry* at(Tick tick) const;
   // The first tick of the entry in force at `tick` (at(tick) must not be null).
@@ -55,8 +55,8 @@ class SceneTimeline {
   // The config a scene's model is built with (this stream's, with the scene's depth), and a model
   // built elsewhere (another thread, ahead of its tick) for the entry from `from`: ignored unless
   // that entry still holds `scene`. Without it the model is built here on first use.
-  StreamConfig model_config(const SceneModelParams& scene) const;
-  void provide_model(Tick from, const SceneModelParams& scene, std::shared_ptr<const SceneModel> model);
+  StreamConfig model_config(const model::SceneParams& scene) const;
+  void provide_model(Tick from, const model::SceneParams& scene, std::shared_ptr<const SceneModel> model);
 
   // Forgets entries no longer in force at `tick` or later.
   void forget_before(Tick tick);

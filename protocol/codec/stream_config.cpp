@@ -16,7 +16,7 @@ StreamConfig StreamConfig::from_profile(const Profile& profile, double patch_x_m
   c.patch_x_m = patch_x_m;
   c.patch_z_m = patch_z_m;
   c.gravity_mps2 = gravity_mps2;
-  c.depth_m = depth_m;  // 0 = deep water, as on the wire (scene_wire::wire_depth converts the sim's)
+  c.depth_m = depth_m;  // 0 = deep water, as on the wire (model::wire_depth converts a scene's)
   return c;
 }
 

@@ -54,7 +54,7 @@ struct StreamConfig {
   std::size_t modes() const;    // every lattice's n (n/2 + 1)
 
   // The profile's grid/rate/steps/channels with the scene's patch and physics.
-  // depth_m as on the wire: 0 for deep water (scene_wire::wire_depth converts the sim's infinity).
+  // depth_m as on the wire: 0 for deep water (model::wire_depth converts a scene's infinity).
   static StreamConfig from_profile(const Profile& profile, double patch_x_m, double patch_z_m,
                                    double gravity_mps2, double depth_m);
 

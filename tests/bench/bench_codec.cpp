@@ -32,6 +32,7 @@
 namespace {
 
 using namespace ocean;
+namespace model = ocean::model;
 using codec::Chunk;
 using codec::StreamConfig;
 
@@ -231,7 +232,7 @@ int run_codec(int argc, char** argv) {
       std::fprintf(stderr, "ocean-bench codec: unknown profile '%s'\n", name.c_str());
       return 2;
     }
-    sim::SceneParams scene;
+    model::SceneParams scene;
     if (p->choppy) scene.choppiness = choppiness;
     if (wind_mps >= 0.0) scene.wind_speed_mps = wind_mps;
     sim::Ocean ocean(scene);
@@ -244,10 +245,10 @@ int run_codec(int argc, char** argv) {
       else
         ocean.evaluate_band(t, p->grid, p->grid, out, sim::FrameRequest{true, p->choppy});
     };
-    const codec::SceneModelParams model = codec::scene_model_params(scene_wire::to_wire(scene));
+    const model::SceneParams model = scene_wire::to_scene(scene_wire::to_wire(scene));
     const int n = p->grid;
     const StreamConfig config =
-        StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene_wire::wire_depth(scene.depth_m));
+        StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, model::wire_depth(scene.depth_m));
     const int frames = std::max(8, static_cast<int>(seconds * p->rate_hz));
     const std::size_t m = config.samples();
 

@@ -18,7 +18,7 @@ namespace {
 using ocean::sim::Frame;
 using ocean::sim::FrameRequest;
 using ocean::sim::Ocean;
-using ocean::sim::SceneParams;
+using ocean::model::SceneParams;
 
 // CPU time of this thread: on a shared machine it leaves out the time other processes held the core
 // (cache pollution from them remains), so it is reported next to the wall-clock figures.
@@ -63,7 +63,7 @@ int run_sim(int argc, char** argv) {
     SceneParams params;
     params.size_x = params.size_z = size;
     params.choppiness = choppiness;
-    if (const std::string error = ocean::sim::validate(params); !error.empty()) {
+    if (const std::string error = ocean::model::validate(params); !error.empty()) {
       std::fprintf(stderr, "ocean-bench sim: %s\n", error.c_str());
       return 2;
     }

@@ -3,7 +3,6 @@
 // side by side, and synthesis and the output conversion spread over it give the bits they give on
 // one thread. Here because
 // these tests also run under ThreadSanitizer.
-#include "../codec/sim_scene.hpp"
 #include "decoder.hpp"
 #include "encoder.hpp"
 #include "frame_reconstruction.hpp"
@@ -26,6 +25,7 @@
 #include <vector>
 
 using namespace ocean;
+namespace model = ocean::model;
 
 TEST_CASE("WorkerPool runs every job of every call exactly once") {
   for (int helpers : {0, 1, 3}) {
@@ -101,8 +101,8 @@ TEST_CASE("a decoder lent threads decodes a storm to the bits of one without") {
   // tile and coarse cascade.
   config.grid = 128;
   config.cascades = {{1, 128, {8, 0}}, {8, 64, {0, 64}}};
-  codec::SceneModelParams scene;
-  scene.spectrum = codec::ModelSpectrum::jonswap;
+  model::SceneParams scene;
+  scene.spectrum = model::SpectrumKind::jonswap;
   scene.wind_speed_mps = 20.0;
   scene.choppiness = 1.2;
   WorkerPool pool(2);
@@ -113,7 +113,7 @@ TEST_CASE("a decoder lent threads decodes a storm to the bits of one without") {
   encoder.set_scene(0, 1, scene);
   alone.add_scene(0, 1, scene);
   spread.add_scene(0, 1, scene);
-  sim::CascadeSet cascades(codec::test::to_sim(scene), config.cascades);
+  sim::CascadeSet cascades(scene, config.cascades);
   sim::Frame frame;
   std::map<Tick, codec::StateId> ids;
   const Tick first = 1'000'000'000;

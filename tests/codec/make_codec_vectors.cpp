@@ -22,6 +22,7 @@
 #include "message_builders.hpp"
 #include "scene_model.hpp"
 #include "state_hash.hpp"
+#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 #include "wire_limits.hpp"
 
@@ -134,7 +135,7 @@ TruthView model_truth(const StreamConfig& stream, const protocol::SceneParams& s
                       const std::vector<Push>& pushed, ReconstructedFrame& storage, const std::vector<Noise>& noise = {}) {
   StreamConfig with_depth = stream;
   with_depth.depth_m = scene.depth_m;
-  const SceneModel model(with_depth, scene_model_params(scene));
+  const SceneModel model(with_depth, scene_wire::to_scene(scene));
   ModalState state;
   model.state_at(tick, state);
   ModalModel modal(with_depth);
@@ -197,7 +198,7 @@ class Writer {
     text_ << "scene from=0 serial=" << w.scene_serial << " tag=" << (w.scene_serial % 256) << " " << scene_fields(w.scene)
           << "\n";
     decoder_ = std::make_unique<Decoder>(c, client_decoder_options(w));
-    decoder_->add_scene(0, static_cast<std::uint8_t>(w.scene_serial), scene_model_params(w.scene));
+    decoder_->add_scene(0, static_cast<std::uint8_t>(w.scene_serial), scene_wire::to_scene(w.scene));
     config_ = c;
     positions_.assign(std::begin(kSamplePositions), std::end(kSamplePositions));
     const std::vector<StreamConfig::Lattice> lattices = c.lattices();
@@ -213,7 +214,7 @@ class Writer {
     text_ << "scene_update hex=" << hex(protocol::encode(u)) << "\n";
     text_ << "scene from=" << u.effective_tick << " serial=" << u.serial << " tag=" << (u.serial % 256) << " "
           << scene_fields(u.scene) << "\n";
-    decoder_->add_scene(u.effective_tick, static_cast<std::uint8_t>(u.serial), scene_model_params(u.scene));
+    decoder_->add_scene(u.effective_tick, static_cast<std::uint8_t>(u.serial), scene_wire::to_scene(u.scene));
   }
 
   // The scene model's state of `tick` (before any correction), for checking a scene model alone.
@@ -337,8 +338,8 @@ void lite_modeled(Writer& w) {
   const StreamConfig& c = w.config();
   const Tick change = kKeyTick + 9;
   Encoder enc(c, server_encoder_options());
-  enc.set_scene(0, 0, scene_model_params(scene0));
-  enc.set_scene(change, 1, scene_model_params(scene1));
+  enc.set_scene(0, 0, scene_wire::to_scene(scene0));
+  enc.set_scene(change, 1, scene_wire::to_scene(scene1));
   const protocol::SceneUpdate update{0, change, scene1, 1};
 
   ReconstructedFrame truth;
@@ -411,7 +412,7 @@ void lite_explicit(Writer& w) {
   const protocol::Welcome welcome = welcome_of(scene0);
   const StreamConfig c = decoder_config(welcome);
   Encoder enc(c, server_encoder_options());
-  enc.set_scene(0, 0, scene_model_params(scene0));
+  enc.set_scene(0, 0, scene_wire::to_scene(scene0));
   ReconstructedFrame truth;
   for (Tick t = kKeyTick - 1; t <= kKeyTick + 4; ++t) enc.add_truth(t, model_truth(c, other, t, {}, truth));
   const auto key = enc.encode_key(kKeyTick);
@@ -447,8 +448,8 @@ void mobile_choppy(Writer& w) {
   REQUIRE(c.choppy);
   REQUIRE(c.grid == 64);
   Encoder enc(c, server_encoder_options());
-  enc.set_scene(0, 0, scene_model_params(scene0));
-  enc.set_scene(change, 1, scene_model_params(scene1));
+  enc.set_scene(0, 0, scene_wire::to_scene(scene0));
+  enc.set_scene(change, 1, scene_wire::to_scene(scene1));
   const protocol::SceneUpdate update{0, change, scene1, 1};
 
   // K+3's truth is noisy in disp_x and disp_xz (about half the samples each, 0.6 to 7.4 steps):
@@ -541,8 +542,8 @@ void desktop_cascaded(Writer& w) {
   const Tick change = kKeyTick + 2;
   const protocol::SceneUpdate update{0, change, scene1, 1};
   Encoder enc(c, server_encoder_options());
-  enc.set_scene(0, 0, scene_model_params(scene));
-  enc.set_scene(change, 1, scene_model_params(scene1));
+  enc.set_scene(0, 0, scene_wire::to_scene(scene));
+  enc.set_scene(change, 1, scene_wire::to_scene(scene1));
   constexpr std::uint32_t kCoarse = 256u * 256;  // the cascade's first sample
   ReconstructedFrame truth;
   for (Tick t = kKeyTick - 1; t <= kKeyTick + 3; ++t) {

@@ -26,11 +26,11 @@ inline TruthView view_of(const SyntheticFrame& f) { return {f.height, f.slope_x,
 
 // The scene both sides are told of. The synthetic ocean is not this scene, so its keys fall back
 // to explicit coefficients; test_scene_model.cpp covers modeled keys against the real sim.
-inline SceneModelParams test_scene(const StreamConfig& c) {
-  SceneModelParams s;
+inline model::SceneParams test_scene(const StreamConfig& c) {
+  model::SceneParams s;
   s.patch_x_m = c.patch_x_m;
   s.patch_z_m = c.patch_z_m;
-  s.depth_m = c.depth_m;
+  s.depth_m = model::scene_depth(c.depth_m);
   s.gravity_mps2 = c.gravity_mps2;
   s.size_x = s.size_z = std::max<int>(256, c.grid);
   return s;

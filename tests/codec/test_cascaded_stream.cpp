@@ -8,7 +8,6 @@
 #include "decoder.hpp"
 #include "encoder.hpp"
 #include "ocean.hpp"
-#include "sim_scene.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -21,13 +20,13 @@
 #include <vector>
 
 using namespace ocean::codec;
-using ocean::codec::test::to_sim;
+namespace model = ocean::model;
 
 namespace {
 
-SceneModelParams storm() {
-  SceneModelParams s;
-  s.spectrum = ModelSpectrum::jonswap;
+model::SceneParams storm() {
+  model::SceneParams s;
+  s.spectrum = model::SpectrumKind::jonswap;
   s.wind_speed_mps = 20.0;
   s.wind_dir_deg = 30.0;
   s.choppiness = 1.2;
@@ -70,8 +69,8 @@ TEST_CASE("a storm's cascades stream as one stream within half a step of their s
   const StreamConfig config = cascaded_stream();
   REQUIRE(validate(config).empty());
   CHECK(config.samples() == 2u * 64 * 64);
-  const SceneModelParams scene = storm();
-  ocean::sim::CascadeSet sims(to_sim(scene), config.cascades);
+  const model::SceneParams scene = storm();
+  ocean::sim::CascadeSet sims(scene, config.cascades);
   Encoder encoder(config);
   Decoder decoder(config);
   encoder.set_scene(0, 1, scene);
@@ -123,10 +122,10 @@ TEST_CASE("an explicit key of lattices of different sizes decodes bit for bit wi
   StreamConfig config = cascaded_stream();
   config.cascades = {{1, 64, {4, 0}}, {8, 32, {0, 16}}};
   REQUIRE(validate(config).empty());
-  const SceneModelParams announced = storm();
-  SceneModelParams truth_scene = announced;
+  const model::SceneParams announced = storm();
+  model::SceneParams truth_scene = announced;
   truth_scene.seed = 12;
-  ocean::sim::CascadeSet sims(to_sim(truth_scene), config.cascades);
+  ocean::sim::CascadeSet sims(truth_scene, config.cascades);
   Encoder encoder(config);
   Decoder decoder(config);
   encoder.set_scene(0, 1, announced);
@@ -168,8 +167,8 @@ TEST_CASE("cascaded chunks and plain streams refuse each other", "[cascade]") {
   const StreamConfig cascaded = cascaded_stream();
   StreamConfig plain = cascaded;
   plain.cascades.clear();
-  const SceneModelParams scene = storm();
-  ocean::sim::CascadeSet sims(to_sim(scene), cascaded.cascades);
+  const model::SceneParams scene = storm();
+  ocean::sim::CascadeSet sims(scene, cascaded.cascades);
   Encoder encoder(cascaded);
   encoder.set_scene(0, 1, scene);
   const ocean::sim::Frame truth = truth_at(sims, 1.0);
@@ -179,7 +178,7 @@ TEST_CASE("cascaded chunks and plain streams refuse each other", "[cascade]") {
   other.add_scene(0, 1, scene);
   CHECK(other.accept(view(key->chunks.at(0))) == ChunkError::wrong_dimensions);
 
-  ocean::sim::Ocean one(to_sim(scene));
+  ocean::sim::Ocean one(scene);
   ocean::sim::Frame f;
   one.evaluate_band(1.0, 64, 64, f, {true, true});
   Encoder plain_encoder(plain);

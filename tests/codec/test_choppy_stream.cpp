@@ -3,12 +3,11 @@
 // corrections after its modeled key; every channel of every frame is within half its step of the
 // sim, and the Jacobian the decoder forms from them matches the sim's where foam is decided. A
 // change of choppiness is a scene change: no key, and the next frames already show the new lambda.
-#include "cascade_scene_model.hpp"
+#include "cascade_scene.hpp"
 #include "decoder.hpp"
 #include "encoder.hpp"
 #include "ocean.hpp"
 #include "scene_model.hpp"
-#include "sim_scene.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -19,13 +18,13 @@
 #include <vector>
 
 using namespace ocean::codec;
-using ocean::codec::test::to_sim;
+namespace model = ocean::model;
 
 namespace {
 
-SceneModelParams storm(double choppiness) {
-  SceneModelParams s;
-  s.spectrum = ModelSpectrum::jonswap;
+model::SceneParams storm(double choppiness) {
+  model::SceneParams s;
+  s.spectrum = model::SpectrumKind::jonswap;
   s.wind_speed_mps = 20.0;
   s.wind_dir_deg = 30.0;
   s.choppiness = choppiness;
@@ -90,8 +89,8 @@ Run stream(const StreamConfig& config, std::uint64_t first, std::uint64_t last, 
     encoder.set_scene(change_at, 2, scene_at(change_at));
     decoder.add_scene(change_at, 2, scene_at(change_at));
   }
-  ocean::sim::Ocean before(to_sim(scene_at(0)));
-  ocean::sim::Ocean after(to_sim(scene_at(change_at)));
+  ocean::sim::Ocean before(scene_at(0));
+  ocean::sim::Ocean after(scene_at(change_at));
   Run run;
   ocean::sim::Frame frame;
   StateId previous{};
@@ -159,7 +158,7 @@ TEST_CASE("each cascade of a storm streams like a scene of its own", "[choppy][c
   const std::uint64_t first = 3000, last = first + 20;
   const Run base = stream(plain, first, last, 0, [](std::uint64_t) { return storm(1.2); });
   for (const auto& [cascade, index] : {std::pair{ocean::Cascade{8, 64, {0, 32}}, 1}, std::pair{ocean::Cascade{1, 64, {4, 0}}, 0}}) {
-    const SceneModelParams scene = cascade_scene_model(storm(1.2), cascade, index);
+    const model::SceneParams scene = model::cascade_scene(storm(1.2), cascade, index);
     StreamConfig config = plain;
     config.patch_x_m = scene.patch_x_m;
     config.patch_z_m = scene.patch_z_m;

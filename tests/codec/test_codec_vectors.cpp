@@ -9,6 +9,7 @@
 #include "frame_records.hpp"
 #include "message_readers.hpp"
 #include "state_hash.hpp"
+#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 #include "verify_message.hpp"
 #include "wire_limits.hpp"
@@ -135,7 +136,7 @@ Counts run_sequence(const std::string& name) {
       const std::uint32_t serial = update ? update->serial : welcome->scene_serial;
       const protocol::SceneParams& scene = update ? update->scene : welcome->scene;
       check_scene_line(line, from, serial, scene);
-      decoder->add_scene(from, static_cast<std::uint8_t>(serial), scene_model_params(scene));
+      decoder->add_scene(from, static_cast<std::uint8_t>(serial), scene_wire::to_scene(scene));
     } else if (line.kind == "scene_update") {
       const Aligned bytes(unhex(line.at("hex")));
       const wire::Message& message = verified(bytes);

@@ -9,6 +9,7 @@
 
 using namespace ocean::codec;
 using namespace ocean::codec::test;
+namespace model = ocean::model;
 using ocean::Tick;
 
 namespace {
@@ -89,7 +90,7 @@ TEST_CASE("a memo advances a shared baseline step by step, out of order and acro
   const SyntheticOcean ocean(32, 128.0, 120, 5, 0.4);
   const double dt = 1.0 / config.rate_hz;
   constexpr Tick kSceneChange = 24;
-  SceneModelParams storm = test_scene(config);
+  model::SceneParams storm = test_scene(config);
   storm.wind_speed_mps *= 1.5;
   Encoder enc = test_encoder(config, wide_encoder());
   enc.set_scene(kSceneChange, 1, storm);

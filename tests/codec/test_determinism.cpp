@@ -13,6 +13,7 @@
 
 using namespace ocean::codec;
 using namespace ocean::codec::test;
+namespace model = ocean::model;
 
 TEST_CASE("two decoders and the encoder agree on the state hash after hundreds of frames") {
   const StreamConfig c = test_config(32, 30);
@@ -65,7 +66,7 @@ TEST_CASE("the fixed-point recurrence follows exact rotation of a mode for thous
   ModalState s = model.zero_state();
   const int hc = model.n() / 2 + 1;
   const int at = 3 * hc + 5;  // kz index 3, kx index 5
-  const double kx = kTwoPi * 5 / c.patch_x_m, kz = kTwoPi * 3 / c.patch_z_m;
+  const double kx = model::kTwoPi * 5 / c.patch_x_m, kz = model::kTwoPi * 3 / c.patch_z_m;
   const double w = std::sqrt(c.gravity_mps2 * std::hypot(kx, kz));
   const double theta = w / c.rate_hz;
   const double amp = std::ldexp(1.0, 40);

@@ -16,6 +16,7 @@
 #include <vector>
 
 using namespace ocean::codec;
+namespace model = ocean::model;
 
 namespace {
 
@@ -42,9 +43,9 @@ void reference_1d(std::vector<float>& re, std::vector<float>& im, int n) {
           wr = 0.0f;
           wi = 1.0f;
         } else if (j != 0) {
-          const double angle = ocean::codec::kTwoPi * (j * stride) / n;
-          wr = static_cast<float>(det_cos(angle));
-          wi = static_cast<float>(det_sin(angle));
+          const double angle = ocean::model::kTwoPi * (j * stride) / n;
+          wr = static_cast<float>(model::det_cos(angle));
+          wi = static_cast<float>(model::det_sin(angle));
         }
         const float p = re[b] * wr, q = im[b] * wi, u = re[b] * wi, v = im[b] * wr;
         const float tr = p - q, ti = u + v;

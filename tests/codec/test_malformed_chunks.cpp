@@ -10,6 +10,7 @@
 
 using namespace ocean::codec;
 using namespace ocean::codec::test;
+namespace model = ocean::model;
 
 namespace {
 
@@ -213,7 +214,7 @@ TEST_CASE("malformed chunks are refused with their reason and change nothing") {
 TEST_CASE("a scene that does not describe the stream refuses its chunks and changes nothing") {
   Fixture fx;
   // From tick 6 on the decoder is told of a scene of another patch: its model cannot be built.
-  SceneModelParams wrong = test_scene(fx.config);
+  model::SceneParams wrong = test_scene(fx.config);
   wrong.patch_x_m = 100.0;
   fx.dec.add_scene(6, 0, wrong);
   fx.expect(fx.next->chunks[0], ChunkError::unknown_scene);

@@ -3,11 +3,9 @@
 // years at 240 Hz; the predicted state agrees with the decoder's own recurrence; it is
 // deterministic; and it is cheap enough to run per key frame.
 #include "cascade_scene.hpp"
-#include "cascade_scene_model.hpp"
 #include "modal_model.hpp"
 #include "ocean.hpp"
 #include "scene_model.hpp"
-#include "sim_scene.hpp"
 #include "state_hash.hpp"
 
 #include <catch2/catch.hpp>
@@ -22,19 +20,19 @@
 #include <vector>
 
 using namespace ocean::codec;
-using ocean::codec::test::to_sim;
+namespace model = ocean::model;
 
 namespace {
 
 constexpr std::uint64_t kTicks[] = {0, 1, 12345, (std::uint64_t{1} << 32) + 7, 76'000'000'000};
 
-StreamConfig stream_for(const SceneModelParams& s, int grid, std::uint16_t tick_rate_hz = 240) {
+StreamConfig stream_for(const model::SceneParams& s, int grid, std::uint16_t tick_rate_hz = 240) {
   StreamConfig c;
   c.grid = static_cast<std::uint16_t>(grid);
   c.patch_x_m = s.patch_x_m;
   c.patch_z_m = s.patch_z_m;
   c.gravity_mps2 = s.gravity_mps2;
-  c.depth_m = s.depth_m;
+  c.depth_m = model::wire_depth(s.depth_m);
   c.rate_hz = 30;
   c.tick_rate_hz = tick_rate_hz;
   return c;
@@ -42,44 +40,44 @@ StreamConfig stream_for(const SceneModelParams& s, int grid, std::uint16_t tick_
 
 struct NamedScene {
   std::string name;
-  SceneModelParams scene;
+  model::SceneParams scene;
 };
 
 std::vector<NamedScene> test_scenes() {
   std::vector<NamedScene> v;
   v.push_back({"phillips default", {}});
-  for (ModelSpreading spreading : {ModelSpreading::cos2s, ModelSpreading::donelan_banner, ModelSpreading::hasselmann}) {
-    SceneModelParams s;
-    s.spectrum = ModelSpectrum::jonswap;
+  for (model::SpreadingKind spreading : {model::SpreadingKind::cos2s, model::SpreadingKind::donelan_banner, model::SpreadingKind::hasselmann}) {
+    model::SceneParams s;
+    s.spectrum = model::SpectrumKind::jonswap;
     s.spreading = spreading;
     v.push_back({"jonswap spreading " + std::to_string(static_cast<int>(spreading)), s});
   }
   for (double depth : {8.0, 30.0}) {
-    SceneModelParams s;
-    s.spectrum = ModelSpectrum::jonswap;
+    model::SceneParams s;
+    s.spectrum = model::SpectrumKind::jonswap;
     s.depth_m = depth;
     v.push_back({"jonswap depth " + std::to_string(static_cast<int>(depth)) + " m", s});
-    s.spectrum = ModelSpectrum::phillips;
+    s.spectrum = model::SpectrumKind::phillips;
     v.push_back({"phillips depth " + std::to_string(static_cast<int>(depth)) + " m", s});
   }
   {
-    SceneModelParams s;
+    model::SceneParams s;
     s.wind_dir_deg = 37.0;
     v.push_back({"phillips wind 37 deg", s});
-    s.spectrum = ModelSpectrum::jonswap;
-    s.spreading = ModelSpreading::cos2s;
+    s.spectrum = model::SpectrumKind::jonswap;
+    s.spreading = model::SpreadingKind::cos2s;
     v.push_back({"jonswap cos2s wind 37 deg", s});
   }
   {
-    SceneModelParams s;
+    model::SceneParams s;
     s.amplitude = 3.0;
     v.push_back({"phillips amplitude 3", s});
   }
   {
-    SceneModelParams s;
+    model::SceneParams s;
     s.seed = (std::uint64_t{1} << 63) + 5;
     v.push_back({"phillips seed 2^63+5", s});
-    s.spectrum = ModelSpectrum::jonswap;
+    s.spectrum = model::SpectrumKind::jonswap;
     s.wind_speed_mps = 4.0;
     s.fetch_m = 5e6;  // light wind, long fetch: narrow spreading, large s
     s.wind_dir_deg = -120.0;
@@ -87,12 +85,12 @@ std::vector<NamedScene> test_scenes() {
   }
   {
     // A storm's two cascades: 2048 m keeping waves longer than 64 m, 256 m keeping the shorter.
-    SceneModelParams storm;
-    storm.spectrum = ModelSpectrum::jonswap;
+    model::SceneParams storm;
+    storm.spectrum = model::SpectrumKind::jonswap;
     storm.wind_speed_mps = 20.0;
     storm.wind_dir_deg = 20.0;
-    v.push_back({"jonswap storm coarse cascade", cascade_scene_model(storm, {8, 64, {0, 32}}, 1)});
-    v.push_back({"jonswap storm fine cascade", cascade_scene_model(storm, {1, 64, {4, 0}}, 0)});
+    v.push_back({"jonswap storm coarse cascade", model::cascade_scene(storm, {8, 64, {0, 32}}, 1)});
+    v.push_back({"jonswap storm fine cascade", model::cascade_scene(storm, {1, 64, {4, 0}}, 0)});
   }
   return v;
 }
@@ -146,7 +144,7 @@ TEST_CASE("tick_time_s splits whole seconds like TickClock::sim_time_s", "[scene
 TEST_CASE("scene model heights match the sim's band frames", "[scene_model]") {
   double worst_height = 0.0, worst_slope = 0.0;
   for (const NamedScene& named : test_scenes()) {
-    ocean::sim::Ocean ocean(to_sim(named.scene));
+    ocean::sim::Ocean ocean(named.scene);
     ocean::sim::Frame probe;
     ocean.evaluate_band(1.0, 64, 64, probe);
     const double amplitude = max_height_m(probe);
@@ -183,9 +181,9 @@ TEST_CASE("scene model heights match the sim's band frames", "[scene_model]") {
   std::printf("scene model vs sim: worst max |dh| %.2e m, worst max |dslope| %.2e\n", worst_height, worst_slope);
 }
 
-TEST_CASE("a cascade's scene is derived alike by the sim and the codec", "[scene_model][cascade]") {
-  SceneModelParams scene;
-  scene.spectrum = ModelSpectrum::jonswap;
+TEST_CASE("a cascade's scene: the scene's weather on the cascade's lattice, band and seed", "[scene_model][cascade]") {
+  model::SceneParams scene;
+  scene.spectrum = model::SpectrumKind::jonswap;
   scene.patch_x_m = 300.0;
   scene.patch_z_m = 200.0;
   scene.size_x = 512;
@@ -194,20 +192,21 @@ TEST_CASE("a cascade's scene is derived alike by the sim and the codec", "[scene
     scene.small_wave_m = small_wave;
     for (int index : {0, 1, 2}) {
       const ocean::Cascade cascade{index == 0 ? 1 : 4 * index, 128, {index == 0 ? 8 : 0, index == 0 ? 0 : 32 * index}};
-      const SceneModelParams model = cascade_scene_model(scene, cascade, index);
-      const ocean::sim::SceneParams sim = ocean::sim::cascade_scene(to_sim(scene), cascade, index);
+      const model::SceneParams own = model::cascade_scene(scene, cascade, index);
       INFO("cascade " << index << " small_wave_m " << small_wave);
-      CHECK(to_sim(model) == sim);
-      CHECK(model.patch_x_m == 300.0 * cascade.patch_scale);
-      CHECK(model.size_x == 128);
-      CHECK(model.band == cascade.band);
-      CHECK(model.small_wave_m == (small_wave > 0.0 ? small_wave : 0.5 * 200.0 / 256));
-      CHECK((model.seed == scene.seed) == (index == 0));
+      CHECK(own.patch_x_m == 300.0 * cascade.patch_scale);
+      CHECK(own.patch_z_m == 200.0 * cascade.patch_scale);
+      CHECK(own.size_x == 128);
+      CHECK(own.size_z == 128);
+      CHECK(own.band == cascade.band);
+      CHECK(own.small_wave_m == (small_wave > 0.0 ? small_wave : 0.5 * 200.0 / 256));
+      CHECK((own.seed == scene.seed) == (index == 0));
+      CHECK(own.wind_speed_mps == scene.wind_speed_mps);
     }
   }
-  CHECK_THROWS_WITH(cascade_scene_model(scene, {0, 64, {}}, 1), Catch::Contains("patch_scale"));
-  CHECK_THROWS_WITH(cascade_scene_model(scene, {2, 64, {8, 8}}, 1), Catch::Contains("band"));
-  CHECK_THROWS_AS(ocean::sim::cascade_scene(to_sim(scene), {2, 48, {}}, 1), ocean::sim::ParamError);
+  CHECK_THROWS_WITH(model::cascade_scene(scene, {0, 64, {}}, 1), Catch::Contains("patch_scale"));
+  CHECK_THROWS_WITH(model::cascade_scene(scene, {2, 64, {8, 8}}, 1), Catch::Contains("band"));
+  CHECK_THROWS_AS(model::cascade_scene(scene, {2, 48, {}}, 1), model::ParamError);
 }
 
 TEST_CASE("every mode matches the sim's double-precision h(k, t)", "[scene_model]") {
@@ -217,7 +216,7 @@ TEST_CASE("every mode matches the sim's double-precision h(k, t)", "[scene_model
   // ones the sim's exact fmod of the phase and det_cos's reduction part by ~1e-7 rad.)
   double worst_units = 0.0, worst_relative = 0.0;
   for (const NamedScene& named : test_scenes()) {
-    const ocean::sim::Ocean ocean(to_sim(named.scene));
+    const ocean::sim::Ocean ocean(named.scene);
     const StreamConfig stream = stream_for(named.scene, 64);
     const SceneModel model(stream, named.scene);
     const int n = stream.grid, hc = n / 2 + 1;
@@ -279,9 +278,9 @@ TEST_CASE("the predicted state agrees with the decoder's recurrence", "[scene_mo
 }
 
 TEST_CASE("state_at is deterministic and equal across models", "[scene_model]") {
-  SceneModelParams s;
-  s.spectrum = ModelSpectrum::jonswap;
-  s.spreading = ModelSpreading::hasselmann;
+  model::SceneParams s;
+  s.spectrum = model::SpectrumKind::jonswap;
+  s.spreading = model::SpreadingKind::hasselmann;
   s.depth_m = 12.0;
   const StreamConfig stream = stream_for(s, 64);
   const SceneModel a(stream, s), b(stream, s);
@@ -307,7 +306,7 @@ TEST_CASE("state_at is deterministic and equal across models", "[scene_model]") 
   for (int r = 0; r < n; ++r) CHECK(x.cur.re[r * hc + n / 2] == 0);
   for (int c = 0; c < hc; ++c) CHECK(x.cur.re[(n / 2) * hc + c] == 0);
   // The seed matters, and nothing else in the state is random.
-  SceneModelParams other = s;
+  model::SceneParams other = s;
   other.seed = 2;
   ModalState w;
   SceneModel(stream, other).state_at(777, w);
@@ -315,7 +314,7 @@ TEST_CASE("state_at is deterministic and equal across models", "[scene_model]") 
 }
 
 TEST_CASE("scene model refuses unusable streams and scenes", "[scene_model]") {
-  SceneModelParams s;
+  model::SceneParams s;
   s.size_x = s.size_z = 64;
   CHECK_THROWS_AS(SceneModel(stream_for(s, 128), s), std::invalid_argument);
   CHECK_NOTHROW(SceneModel(stream_for(s, 64), s));
@@ -325,10 +324,10 @@ TEST_CASE("scene model refuses unusable streams and scenes", "[scene_model]") {
   StreamConfig other_depth = stream_for(s, 32);
   other_depth.depth_m = 10.0;
   CHECK_THROWS_AS(SceneModel(other_depth, s), std::invalid_argument);
-  SceneModelParams bad = s;
+  model::SceneParams bad = s;
   bad.wind_speed_mps = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS_AS(SceneModel(stream_for(bad, 32), bad), std::invalid_argument);
-  SceneModelParams huge = s;  // Hs of about 2e8 m
+  model::SceneParams huge = s;  // Hs of about 2e8 m
   huge.amplitude = 1e6;
   huge.wind_speed_mps = 100.0;
   huge.gravity_mps2 = 0.01;
@@ -336,7 +335,7 @@ TEST_CASE("scene model refuses unusable streams and scenes", "[scene_model]") {
   StreamConfig fine = stream_for(huge, 32);
   fine.height_step_m = 1e-4f;
   CHECK_THROWS_AS(SceneModel(fine, huge), std::invalid_argument);
-  SceneModelParams calm = s;
+  model::SceneParams calm = s;
   calm.wind_speed_mps = 0.0;
   ModalState x;
   SceneModel(stream_for(calm, 32), calm).state_at(5, x);
@@ -344,8 +343,8 @@ TEST_CASE("scene model refuses unusable streams and scenes", "[scene_model]") {
 }
 
 TEST_CASE("scene model cost", "[scene_model][timing]") {
-  for (ModelSpectrum spectrum : {ModelSpectrum::phillips, ModelSpectrum::jonswap}) {
-    SceneModelParams s;
+  for (model::SpectrumKind spectrum : {model::SpectrumKind::phillips, model::SpectrumKind::jonswap}) {
+    model::SceneParams s;
     s.spectrum = spectrum;
     for (int grid : {64, 256}) {
       const StreamConfig stream = stream_for(s, grid);
@@ -362,7 +361,7 @@ TEST_CASE("scene model cost", "[scene_model][timing]") {
         state_ms = std::min(state_ms, std::chrono::duration<double, std::milli>(t2 - t1).count());
       }
       std::printf("scene model cost: %-8s grid %3d: construction %.2f ms, state_at %.2f ms (best of 3)\n",
-                  spectrum == ModelSpectrum::phillips ? "phillips" : "jonswap", grid, build_ms, state_ms);
+                  spectrum == model::SpectrumKind::phillips ? "phillips" : "jonswap", grid, build_ms, state_ms);
     }
   }
 }
@@ -370,22 +369,22 @@ TEST_CASE("scene model cost", "[scene_model][timing]") {
 TEST_CASE("state_at reproduces the test vectors of CODEC.md 12.2", "[scene_model]") {
   // CODEC.md 12.2 lists these: any implementation must reach the same hash_state (FNV-1a of
   // prev.re, prev.im, cur.re, cur.im). Streams: patch 256 m, height step 0.01, 240 ticks per second.
-  SceneModelParams phillips;
-  SceneModelParams cos2s_37;
-  cos2s_37.spectrum = ModelSpectrum::jonswap;
-  cos2s_37.spreading = ModelSpreading::cos2s;
+  model::SceneParams phillips;
+  model::SceneParams cos2s_37;
+  cos2s_37.spectrum = model::SpectrumKind::jonswap;
+  cos2s_37.spreading = model::SpreadingKind::cos2s;
   cos2s_37.wind_dir_deg = 37.0;
-  SceneModelParams hasselmann_8m;
-  hasselmann_8m.spectrum = ModelSpectrum::jonswap;
-  hasselmann_8m.spreading = ModelSpreading::hasselmann;
+  model::SceneParams hasselmann_8m;
+  hasselmann_8m.spectrum = model::SpectrumKind::jonswap;
+  hasselmann_8m.spreading = model::SpreadingKind::hasselmann;
   hasselmann_8m.depth_m = 8.0;
-  SceneModelParams light_wind;
-  light_wind.spectrum = ModelSpectrum::jonswap;
+  model::SceneParams light_wind;
+  light_wind.spectrum = model::SpectrumKind::jonswap;
   light_wind.seed = (std::uint64_t{1} << 63) + 5;
   light_wind.wind_speed_mps = 4.0;
   light_wind.fetch_m = 5e6;
   struct Vector {
-    const SceneModelParams* scene;
+    const model::SceneParams* scene;
     int grid;
     std::uint64_t tick;
     std::uint64_t hash;
@@ -405,8 +404,8 @@ TEST_CASE("state_at reproduces the test vectors of CODEC.md 12.2", "[scene_model
   }
   // A cascaded stream (CODEC.md 7.7, 7.8): a 256 m lattice of the waves from 4 cycles and a 2048 m
   // one of those under 16 cycles, both 32 x 32, their states one after the other.
-  SceneModelParams storm;
-  storm.spectrum = ModelSpectrum::jonswap;
+  model::SceneParams storm;
+  storm.spectrum = model::SpectrumKind::jonswap;
   storm.wind_speed_mps = 20.0;
   storm.wind_dir_deg = 30.0;
   StreamConfig cascaded = stream_for(storm, 32);

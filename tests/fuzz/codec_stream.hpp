@@ -34,9 +34,9 @@ inline codec::DecoderOptions codec_stream_decoder_options() {
 
 // The scene both sides know from tick 0 (tag 0). The synthetic ocean is not this scene, so keys
 // carry explicit coefficients, as in tests/codec.
-inline codec::SceneModelParams codec_stream_scene() {
+inline model::SceneParams codec_stream_scene() {
   const codec::StreamConfig c = codec_stream_config();
-  codec::SceneModelParams s;
+  model::SceneParams s;
   s.patch_x_m = c.patch_x_m;
   s.patch_z_m = c.patch_z_m;
   s.depth_m = c.depth_m;

@@ -15,10 +15,11 @@
 #include "client/render/shader_sources.hpp"
 #include "client/viewer/headless_context.hpp"
 #include "client/viewer/synthetic_sea.hpp"
-#include "sim/cascade_scene.hpp"
+#include "model/cascade_scene.hpp"
 #include "sim/ocean.hpp"
 
 using namespace ocean;
+namespace model = ocean::model;
 
 namespace {
 
@@ -152,8 +153,8 @@ TEST_CASE("a coarse cascade hides the tile's period from 400 m up", "[cascade]")
   // picture, and a sea's slope variance is spread evenly over the octaves of its saturation range,
   // so what the tile keeps below the split still repeats: the split sets how much.
   context();
-  sim::SceneParams storm;
-  storm.spectrum = sim::SpectrumKind::jonswap;
+  model::SceneParams storm;
+  storm.spectrum = model::SpectrumKind::jonswap;
   storm.wind_speed_mps = 20.0;
   storm.choppiness = 1.2;
   storm.seed = 5;
@@ -168,12 +169,12 @@ TEST_CASE("a coarse cascade hides the tile's period from 400 m up", "[cascade]")
     REQUIRE(renderer.init({}));
     REQUIRE(renderer.set_grid(256, 256.0f, 256.0f));
     sim::Frame tile, swell;
-    sim::Ocean(cascades ? sim::cascade_scene(storm, fine, 0) : storm).evaluate(10.0, tile, {true, true});
+    sim::Ocean(cascades ? model::cascade_scene(storm, fine, 0) : storm).evaluate(10.0, tile, {true, true});
     REQUIRE(renderer.upload_frame(streams_of(tile)));
     if (cascades) {
       REQUIRE(renderer.coarse_cascade_supported());
       REQUIRE(renderer.set_coarse_grid(128, 2048.0f, 2048.0f));
-      sim::Ocean(sim::cascade_scene(storm, coarse, 1)).evaluate(10.0, swell, {true, true});
+      sim::Ocean(model::cascade_scene(storm, coarse, 1)).evaluate(10.0, swell, {true, true});
       INFO(renderer.error());
       REQUIRE(renderer.upload_coarse_frame(streams_of(swell)));
     }
@@ -202,17 +203,17 @@ TEST_CASE("a GL that cannot draw the coarse cascade draws a cascaded stream's ti
   layout.tile = {64, 256.0f, 256.0f};
   layout.coarse = {32, 2048.0f, 2048.0f};
   // A small storm's two lattices, one after the other as a stream carries them.
-  sim::SceneParams storm;
-  storm.spectrum = sim::SpectrumKind::jonswap;
+  model::SceneParams storm;
+  storm.spectrum = model::SpectrumKind::jonswap;
   storm.wind_speed_mps = 20.0;
   storm.choppiness = 1.2;
   client::FrameChannels channels;
   for (const ocean::Cascade& c : {ocean::Cascade{1, 64, {4, 0}}, ocean::Cascade{8, 32, {0, 16}}}) {
-    sim::SceneParams scene = storm;
+    model::SceneParams scene = storm;
     scene.size_x = scene.size_z = 64;
     scene.patch_x_m = scene.patch_z_m = 256.0;
     sim::Frame f;
-    sim::Ocean(sim::cascade_scene(scene, c, c.patch_scale == 1 ? 0 : 1)).evaluate(10.0, f, {true, true});
+    sim::Ocean(model::cascade_scene(scene, c, c.patch_scale == 1 ? 0 : 1)).evaluate(10.0, f, {true, true});
     const auto append = [](std::vector<float>& to, const std::vector<float>& from) { to.insert(to.end(), from.begin(), from.end()); };
     append(channels.height, f.height);
     append(channels.slope_x, f.slope_x);

@@ -10,6 +10,7 @@
 #include <cmath>
 
 using namespace ocean::server;
+namespace model = ocean::model;
 using ocean::test_support::TempFile;
 using Outcome = ConfigLoadResult::Outcome;
 
@@ -58,8 +59,8 @@ TEST_CASE("flags set every kind of option", "[config]") {
   CHECK(c.scene.size_z == 512);
   CHECK(c.scene.patch_x_m == 300.0);
   CHECK(c.scene.patch_z_m == 300.0);
-  CHECK(c.scene.spectrum == ocean::sim::SpectrumKind::jonswap);
-  CHECK(c.scene.spreading == ocean::sim::SpreadingKind::cos2s);
+  CHECK(c.scene.spectrum == ocean::model::SpectrumKind::jonswap);
+  CHECK(c.scene.spreading == ocean::model::SpreadingKind::cos2s);
   CHECK(c.scene.wind_speed_mps == 12.5);
   CHECK(c.scene.wind_dir_deg == 45.0);
   CHECK(c.scene.fetch_m == 50000.0);
@@ -126,7 +127,7 @@ tick-rate = 60
   REQUIRE(from_file.message == "");
   CHECK(from_file.config.listen.port == 7001);
   CHECK(from_file.config.scene.wind_speed_mps == 5.0);
-  CHECK(from_file.config.scene.spectrum == ocean::sim::SpectrumKind::jonswap);
+  CHECK(from_file.config.scene.spectrum == ocean::model::SpectrumKind::jonswap);
   CHECK(std::isinf(from_file.config.scene.depth_m));
   CHECK(from_file.config.profiles == std::vector<std::string>{"mobile", "lite"});
   CHECK(from_file.config.epoch_unix_ms == 1795280400250);  // same instant as 17:00:00.250Z
@@ -264,10 +265,10 @@ spectrum = "jonswap"
   CHECK(schedule.scene_at(100).wind_speed_mps == 20.0);
   CHECK(schedule.scene_at(100).amplitude == 2.0);  // the flag reaches scheduled scenes too
   CHECK(schedule.scene_at(100).wind_dir_deg == 0.0);
-  CHECK(schedule.scene_at(199).spectrum == ocean::sim::SpectrumKind::phillips);
+  CHECK(schedule.scene_at(199).spectrum == ocean::model::SpectrumKind::phillips);
   CHECK(schedule.scene_at(200).wind_speed_mps == 20.0);
   CHECK(schedule.scene_at(200).wind_dir_deg == 90.0);
-  CHECK(schedule.scene_at(200).spectrum == ocean::sim::SpectrumKind::jonswap);
+  CHECK(schedule.scene_at(200).spectrum == ocean::model::SpectrumKind::jonswap);
   CHECK(schedule.scene_at(1'000'000'000'000).amplitude == 2.0);
 }
 

@@ -3,11 +3,12 @@
 #include <catch2/catch.hpp>
 
 using namespace ocean::server;
+namespace model = ocean::model;
 
 namespace {
 
-ocean::sim::SceneParams small_scene() {
-  ocean::sim::SceneParams scene;
+ocean::model::SceneParams small_scene() {
+  ocean::model::SceneParams scene;
   scene.size_x = scene.size_z = 64;
   scene.patch_x_m = scene.patch_z_m = 64.0;
   return scene;
@@ -69,8 +70,8 @@ TEST_CASE("released results are reused without reallocating", "[frame_producer]"
 }
 
 TEST_CASE("a scheduled scene takes over from its tick", "[frame_producer][schedule]") {
-  ocean::sim::SceneParams calm = small_scene();
-  ocean::sim::SceneParams windy = calm;
+  ocean::model::SceneParams calm = small_scene();
+  ocean::model::SceneParams windy = calm;
   windy.wind_speed_mps = 20.0;
   FrameProducer scheduled(SceneSchedule(calm, {{100, windy}}), profiles({"mobile"}));
   FrameProducer calm_only(SceneSchedule(calm, {}), profiles({"mobile"}));
@@ -88,8 +89,8 @@ TEST_CASE("a scheduled scene takes over from its tick", "[frame_producer][schedu
 }
 
 TEST_CASE("desktop and desktop-choppy share one evaluation of their cascades, each frame as alone", "[frame_producer]") {
-  ocean::sim::SceneParams storm = small_scene();
-  storm.spectrum = ocean::sim::SpectrumKind::jonswap;
+  ocean::model::SceneParams storm = small_scene();
+  storm.spectrum = ocean::model::SpectrumKind::jonswap;
   storm.wind_speed_mps = 20.0;
   storm.choppiness = 1.2;
   FrameProducer both(SceneSchedule(storm, {}), profiles({"desktop", "mobile", "desktop-choppy"}));

@@ -18,6 +18,7 @@
 
 using namespace ocean;
 using namespace ocean::server;
+namespace model = ocean::model;
 
 namespace {
 
@@ -28,8 +29,8 @@ std::vector<const Profile*> every_profile() {
 }
 
 // The server's default lattice, which every profile fits.
-sim::SceneParams base_scene() {
-  sim::SceneParams scene;
+model::SceneParams base_scene() {
+  model::SceneParams scene;
   scene.size_x = scene.size_z = 256;
   scene.patch_x_m = scene.patch_z_m = 256.0;
   return scene;
@@ -37,13 +38,13 @@ sim::SceneParams base_scene() {
 
 // Simulates `scene` for every profile at a few times and encodes each frame as the server would;
 // the samples any encoder had to clamp (0 for a carried scene).
-std::uint64_t clamped_when_served(const sim::SceneParams& scene, const std::vector<const Profile*>& profiles) {
+std::uint64_t clamped_when_served(const model::SceneParams& scene, const std::vector<const Profile*>& profiles) {
   FrameProducer producer(SceneSchedule(scene, {}), profiles);
-  const codec::SceneModelParams model = codec::scene_model_params(scene_wire::to_wire(scene));
+  const model::SceneParams model = scene_wire::to_scene(scene_wire::to_wire(scene));
   std::vector<codec::Encoder> encoders;
   for (const Profile* p : profiles) {
     codec::StreamConfig config = codec::StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2,
-                                                                 scene_wire::wire_depth(scene.depth_m));
+                                                                 model::wire_depth(scene.depth_m));
     config.tick_rate_hz = 30;
     encoders.emplace_back(config);
     encoders.back().set_scene(0, 0, model);
@@ -64,7 +65,7 @@ std::uint64_t clamped_when_served(const sim::SceneParams& scene, const std::vect
 
 struct Corner {
   std::string name;
-  std::function<void(sim::SceneParams&)> set;
+  std::function<void(model::SceneParams&)> set;
 };
 
 }  // namespace
@@ -72,27 +73,27 @@ struct Corner {
 TEST_CASE("every corner of the documented ranges is refused with its figures or carried without clamping",
           "[servable]") {
   const std::vector<Corner> fields = {
-      {"wind 0", [](sim::SceneParams& s) { s.wind_speed_mps = 0.0; }},
-      {"wind 100", [](sim::SceneParams& s) { s.wind_speed_mps = 100.0; }},
-      {"amplitude 0", [](sim::SceneParams& s) { s.amplitude = 0.0; }},
-      {"amplitude 1e6", [](sim::SceneParams& s) { s.amplitude = 1e6; }},
-      {"choppiness 0", [](sim::SceneParams& s) { s.choppiness = 0.0; }},
-      {"choppiness 100", [](sim::SceneParams& s) { s.choppiness = 100.0; }},
-      {"phillips", [](sim::SceneParams& s) { s.spectrum = sim::SpectrumKind::phillips; }},
-      {"jonswap", [](sim::SceneParams& s) { s.spectrum = sim::SpectrumKind::jonswap; }},
-      {"dir -1e6", [](sim::SceneParams& s) { s.wind_dir_deg = -1e6; }},
-      {"dir 1e6", [](sim::SceneParams& s) { s.wind_dir_deg = 1e6; }},
+      {"wind 0", [](model::SceneParams& s) { s.wind_speed_mps = 0.0; }},
+      {"wind 100", [](model::SceneParams& s) { s.wind_speed_mps = 100.0; }},
+      {"amplitude 0", [](model::SceneParams& s) { s.amplitude = 0.0; }},
+      {"amplitude 1e6", [](model::SceneParams& s) { s.amplitude = 1e6; }},
+      {"choppiness 0", [](model::SceneParams& s) { s.choppiness = 0.0; }},
+      {"choppiness 100", [](model::SceneParams& s) { s.choppiness = 100.0; }},
+      {"phillips", [](model::SceneParams& s) { s.spectrum = model::SpectrumKind::phillips; }},
+      {"jonswap", [](model::SceneParams& s) { s.spectrum = model::SpectrumKind::jonswap; }},
+      {"dir -1e6", [](model::SceneParams& s) { s.wind_dir_deg = -1e6; }},
+      {"dir 1e6", [](model::SceneParams& s) { s.wind_dir_deg = 1e6; }},
   };
   // Alone: each field at each end; combined: wind, amplitude, choppiness and spectrum at every
   // pair of ends (the direction changes no magnitude), 16 scenes.
-  std::vector<std::pair<std::string, sim::SceneParams>> scenes;
+  std::vector<std::pair<std::string, model::SceneParams>> scenes;
   for (const Corner& c : fields) {
-    sim::SceneParams s = base_scene();
+    model::SceneParams s = base_scene();
     c.set(s);
     scenes.emplace_back(c.name, s);
   }
   for (int bits = 0; bits < 16; ++bits) {
-    sim::SceneParams s = base_scene();
+    model::SceneParams s = base_scene();
     std::string name;
     for (int f = 0; f < 4; ++f) {
       const Corner& c = fields[2 * f + ((bits >> f) & 1)];
@@ -127,7 +128,7 @@ TEST_CASE("every corner of the documented ranges is refused with its figures or 
 
 TEST_CASE("the scenes that stopped main's server are refused with their figures, the default is served", "[servable]") {
   const auto on = [](const char* profile) { return std::vector<const Profile*>{find_profile(std::string_view(profile))}; };
-  sim::SceneParams storm = base_scene();
+  model::SceneParams storm = base_scene();
   storm.wind_speed_mps = 100.0;
   storm.amplitude = 1e5;
   const std::string error = servable_scene(storm, on("desktop"));
@@ -135,8 +136,8 @@ TEST_CASE("the scenes that stopped main's server are refused with their figures,
   CHECK(error.find("heights") != std::string::npos);
   CHECK(error.find("'desktop'") != std::string::npos);
   CHECK(servable_scene(base_scene(), every_profile()).empty());
-  sim::SceneParams gale = base_scene();  // a real gale at choppiness 1.2: served on every profile
-  gale.spectrum = sim::SpectrumKind::jonswap;
+  model::SceneParams gale = base_scene();  // a real gale at choppiness 1.2: served on every profile
+  gale.spectrum = model::SpectrumKind::jonswap;
   gale.wind_speed_mps = 20.0;
   gale.choppiness = 1.2;
   CHECK(servable_scene(gale, every_profile()).empty());

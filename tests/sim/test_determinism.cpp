@@ -15,6 +15,8 @@
 #include <vector>
 
 using namespace ocean::sim;
+using ocean::model::SpectrumKind;
+using ocean::model::SpreadingKind;
 
 namespace {
 

@@ -14,6 +14,8 @@
 #include <vector>
 
 using namespace ocean::sim;
+using ocean::model::SpectrumKind;
+using ocean::model::SpreadingKind;
 using ocean::sim::testing::PlaneSpectrum;
 
 namespace {

@@ -9,6 +9,8 @@
 #include <string>
 
 using namespace ocean::sim;
+using ocean::model::SpectrumKind;
+using ocean::model::SpreadingKind;
 
 namespace {
 

@@ -47,7 +47,7 @@ class CoreRig {
         producer_(schedule_, profiles_of(config_)),
         tick_(first_tick),
         core_(server::SessionCoreHost{config_, schedule_, metrics_, cookie_key_, datagrams, udp_port,
-                                      [this](const sim::SceneParams& scene, std::int64_t from) {
+                                      [this](const model::SceneParams& scene, std::int64_t from) {
                                         producer_.override_scene(scene, from);
                                       }},
               options, first_tick) {

@@ -53,8 +53,8 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
                                                     "[-1e6, 1e6]")->check(CLI::Range(-1e6, 1e6));
   auto* am = app.add_option("--amplitude", amplitude, "scale on the spectrum's energy, [0, 1e6]")->check(CLI::Range(0.0, 1e6));
   auto* ch = app.add_option("--choppiness", choppiness, "horizontal displacement scale, [0, 100]")->check(CLI::Range(0.0, 100.0));
-  auto* sp = app.add_option("--spectrum", spectrum, sim::join_names(sim::spectrum_names(), ", ", " or "))
-                 ->check(CLI::IsMember(sim::spectrum_names()));
+  auto* sp = app.add_option("--spectrum", spectrum, model::join_names(model::spectrum_names(), ", ", " or "))
+                 ->check(CLI::IsMember(model::spectrum_names()));
   app.add_option("--timeout", o.timeout_s, "seconds to wait for the server, [0.1, 600]")->check(CLI::Range(0.1, 600.0));
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
@@ -82,7 +82,7 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
   if (*wd) c.wind_dir_deg = wind_dir;
   if (*am) c.amplitude = amplitude;
   if (*ch) c.choppiness = choppiness;
-  if (*sp) c.spectrum = scene_wire::to_wire(*sim::spectrum_from_name(spectrum));  // IsMember checked it
+  if (*sp) c.spectrum = scene_wire::to_wire(*model::spectrum_from_name(spectrum));  // IsMember checked it
   const bool change = *ws || *wd || *am || *ch || *sp;
   if (o.show == change) {
     result.error = o.show ? "--show prints the scene and changes nothing: leave out the change flags"

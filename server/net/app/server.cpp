@@ -291,7 +291,7 @@ void Server::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::ud
   }
 }
 
-void Server::request_scene(const sim::SceneParams& scene, std::int64_t from) {
+void Server::request_scene(const model::SceneParams& scene, std::int64_t from) {
   std::lock_guard lock(scene_request_mutex_);
   scene_requests_.emplace_back(scene, from);
 }

@@ -56,7 +56,7 @@ class Server : public DatagramSocket {
   using StopHandler = std::function<void()>;
 
   // Binds every socket and builds the simulation; throws std::system_error (address in use...)
-  // or sim::ParamError. The config must have passed validate_server_config.
+  // or model::ParamError. The config must have passed validate_server_config.
   explicit Server(ServerConfig config);
   ~Server() override;
   Server(const Server&) = delete;
@@ -70,7 +70,7 @@ class Server : public DatagramSocket {
   void set_stop_handler(StopHandler handler) { stop_handler_ = std::move(handler); }
   // Thread-safe: the simulation switches to this scene at tick `from` (admin ParamChange; the
   // hub announced it to the clients first).
-  void request_scene(const sim::SceneParams& scene, std::int64_t from);
+  void request_scene(const model::SceneParams& scene, std::int64_t from);
   // The config's schedule, checked (immutable).
   const SceneSchedule& schedule() const { return schedule_; }
   // Sends one datagram without blocking; false when the socket refused it (the frame is lost).
@@ -150,7 +150,7 @@ class Server : public DatagramSocket {
   std::condition_variable run_returned_cv_;
   bool run_returned_ = false;  // guarded by run_mutex_
   std::mutex scene_request_mutex_;
-  std::vector<std::pair<sim::SceneParams, std::int64_t>> scene_requests_;  // guarded by scene_request_mutex_
+  std::vector<std::pair<model::SceneParams, std::int64_t>> scene_requests_;  // guarded by scene_request_mutex_
 
   DatagramBatch batch_;
 

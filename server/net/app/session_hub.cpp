@@ -23,7 +23,7 @@ SessionCoreHost host_of(Server& server) {
   return SessionCoreHost{server.config(), server.schedule(), server.metrics(), server.cookie_key(), server,
                          server.config().udp_public_port ? static_cast<std::uint16_t>(server.config().udp_public_port)
                                                          : server.udp_port(),
-                         [&server](const sim::SceneParams& scene, std::int64_t from) { server.request_scene(scene, from); }};
+                         [&server](const model::SceneParams& scene, std::int64_t from) { server.request_scene(scene, from); }};
 }
 
 // A warning about overload at most this often.

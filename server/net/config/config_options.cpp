@@ -86,19 +86,19 @@ std::string show_optional_address(const std::optional<ListenAddress>& address, c
   return address ? address->to_string() : absent;
 }
 
-// Sets target from one of the names in sim's table (scene_names.hpp).
+// Sets target from one of the names in the model's table (scene_names.hpp).
 template <typename Kind>
 std::string apply_name(Kind& target, std::string_view value, std::optional<Kind> (*from_name)(std::string_view),
                        std::vector<std::string> (*names)()) {
   const std::optional<Kind> kind = from_name(value);
-  if (!kind) return quoted(value) + " is not one of " + sim::join_names(names());
+  if (!kind) return quoted(value) + " is not one of " + model::join_names(names());
   target = *kind;
   return {};
 }
 
 // The value names --help shows: "phillips|jonswap" and "cos2s|donelan-banner|hasselmann".
-const std::string kSpectrumChoices = sim::join_names(sim::spectrum_names(), "|", "|");
-const std::string kSpreadingChoices = sim::join_names(sim::spreading_names(), "|", "|");
+const std::string kSpectrumChoices = model::join_names(model::spectrum_names(), "|", "|");
+const std::string kSpreadingChoices = model::join_names(model::spreading_names(), "|", "|");
 
 // --profiles' help names every profile of protocol/profile.hpp, in its order.
 std::string profiles_help() {
@@ -199,14 +199,14 @@ const ConfigOption kOptions[] = {
      [](const ServerConfig& c) { return show_number(c.scene.patch_x_m); }},
     {"spectrum", kSpectrumChoices, "wave spectrum", ValueKind::text, true,
      [](ServerConfig& c, std::string_view v) {
-       return apply_name(c.scene.spectrum, v, sim::spectrum_from_name, sim::spectrum_names);
+       return apply_name(c.scene.spectrum, v, model::spectrum_from_name, model::spectrum_names);
      },
-     [](const ServerConfig& c) { return std::string(sim::spectrum_name(c.scene.spectrum)); }},
+     [](const ServerConfig& c) { return std::string(model::spectrum_name(c.scene.spectrum)); }},
     {"spreading", kSpreadingChoices, "directional spreading (JONSWAP only)", ValueKind::text, true,
      [](ServerConfig& c, std::string_view v) {
-       return apply_name(c.scene.spreading, v, sim::spreading_from_name, sim::spreading_names);
+       return apply_name(c.scene.spreading, v, model::spreading_from_name, model::spreading_names);
      },
-     [](const ServerConfig& c) { return std::string(sim::spreading_name(c.scene.spreading)); }},
+     [](const ServerConfig& c) { return std::string(model::spreading_name(c.scene.spreading)); }},
     {"wind-speed", "M/S", "wind speed U10 in m/s, in [0, 100]", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.wind_speed_mps); },
      [](const ServerConfig& c) { return show_number(c.scene.wind_speed_mps); }},

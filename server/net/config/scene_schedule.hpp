@@ -12,27 +12,27 @@ namespace ocean::server {
 
 struct ScheduledScene {
   std::int64_t tick = 0;   // absolute tick index (counted from the epoch)
-  sim::SceneParams scene;  // the complete scene from this tick on
+  model::SceneParams scene;  // the complete scene from this tick on
 };
 
 class SceneSchedule {
  public:
   SceneSchedule() = default;
-  SceneSchedule(sim::SceneParams base, std::vector<ScheduledScene> changes);
+  SceneSchedule(model::SceneParams base, std::vector<ScheduledScene> changes);
 
-  const sim::SceneParams& base() const { return base_; }
+  const model::SceneParams& base() const { return base_; }
   const std::vector<ScheduledScene>& changes() const { return changes_; }
 
   // The scene in force at `tick`: the last change with change.tick <= tick, else the base.
-  const sim::SceneParams& scene_at(std::int64_t tick) const;
+  const model::SceneParams& scene_at(std::int64_t tick) const;
 
   // Empty when usable; otherwise names the entry (by its tick) and what is wrong: ticks must rise
-  // strictly, every scene must pass sim::validate, and only weather may change (not the grid or seed,
+  // strictly, every scene must pass model::validate, and only weather may change (not the grid or seed,
   // which would change what every stream's samples mean).
   std::string validate() const;
 
  private:
-  sim::SceneParams base_;
+  model::SceneParams base_;
   std::vector<ScheduledScene> changes_;
 };
 

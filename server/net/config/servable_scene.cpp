@@ -33,14 +33,14 @@ std::string fits(const char* field, double rms, double step, const char* unit, c
 // desktops their cascades), and each extent is a sum over every mode of the lattice.
 class Extents {
  public:
-  const sim::FieldExtent& of(const sim::SceneParams& lattice) {
+  const sim::FieldExtent& of(const model::SceneParams& lattice) {
     for (const auto& [params, extent] : known_)
       if (params == lattice) return extent;
     return known_.emplace_back(lattice, sim::expected_extent(lattice)).second;
   }
 
  private:
-  std::vector<std::pair<sim::SceneParams, sim::FieldExtent>> known_;
+  std::vector<std::pair<model::SceneParams, sim::FieldExtent>> known_;
 };
 
 std::string lattice_fits(const sim::FieldExtent& e, const Profile& profile, const std::string& where) {
@@ -55,22 +55,22 @@ std::string lattice_fits(const sim::FieldExtent& e, const Profile& profile, cons
 
 }  // namespace
 
-std::string servable_scene(const sim::SceneParams& scene, std::span<const Profile* const> profiles) {
-  if (std::string error = sim::validate(scene); !error.empty()) return error;
+std::string servable_scene(const model::SceneParams& scene, std::span<const Profile* const> profiles) {
+  if (std::string error = model::validate(scene); !error.empty()) return error;
   Extents extents;
   for (const Profile* profile : profiles) {
     if (profile->cascades.empty()) {
-      sim::SceneParams lattice = scene;  // the profile's grid of the scene's own lattice
+      model::SceneParams lattice = scene;  // the profile's grid of the scene's own lattice
       lattice.size_x = std::min(scene.size_x, static_cast<int>(profile->grid));
       lattice.size_z = std::min(scene.size_z, static_cast<int>(profile->grid));
       if (std::string error = lattice_fits(extents.of(lattice), *profile, ""); !error.empty()) return error;
       continue;
     }
     for (std::size_t c = 0; c < profile->cascades.size(); ++c) {
-      sim::SceneParams lattice;
+      model::SceneParams lattice;
       try {
-        lattice = sim::cascade_scene(scene, profile->cascades[c], static_cast<int>(c));
-      } catch (const sim::ParamError& e) {
+        lattice = model::cascade_scene(scene, profile->cascades[c], static_cast<int>(c));
+      } catch (const model::ParamError& e) {
         return "profile '" + std::string(profile->name) + "' cannot realize its " + e.what();
       }
       if (std::string error = lattice_fits(extents.of(lattice), *profile, " on cascade " + std::to_string(c));

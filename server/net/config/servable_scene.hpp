@@ -1,6 +1,6 @@
 // servable_scene: the one check every scene passes before the server computes it - from flags,
 // the config file, its schedule or an admin ParamChange (and, later, a fleet's timeline). A scene
-// is servable when the sim accepts it (sim::validate, the documented ranges) and every offered
+// is servable when the sim accepts it (model::validate, the documented ranges) and every offered
 // profile's stream can carry its fields: each lattice's expected RMS (sim::expected_extent) times
 // kHeadroom within the codec's 2^20 quantization steps of that profile. Inside the documented
 // ranges some combinations are not (wind 100 m/s with amplitude 1e5 makes kilometre waves); they
@@ -21,6 +21,6 @@ namespace ocean::server {
 inline constexpr double kHeadroom = 16.0;
 
 // "" when servable, else the first reason, naming the field, the profile and the figures.
-std::string servable_scene(const sim::SceneParams& scene, std::span<const Profile* const> profiles);
+std::string servable_scene(const model::SceneParams& scene, std::span<const Profile* const> profiles);
 
 }  // namespace ocean::server

@@ -13,7 +13,7 @@
 namespace ocean::server {
 namespace {
 
-// sim::validate names SceneParams fields ("wind_speed_mps = ..."); a user typed a flag.
+// model::validate names SceneParams fields ("wind_speed_mps = ..."); a user typed a flag.
 std::string name_scene_flag(const std::string& sim_message) {
   static const std::pair<const char*, const char*> kFlags[] = {
       {"size_x", "--size"},         {"size_z", "--size"},           {"patch_x_m", "--patch"},
@@ -44,8 +44,8 @@ std::string validate_profiles(const ServerConfig& config) {
              std::to_string(sim_grid) + "); raise --size or drop the profile";
     for (std::size_t c = 0; c < profile->cascades.size(); ++c) {
       try {
-        (void)sim::cascade_scene(config.scene, profile->cascades[c], static_cast<int>(c));
-      } catch (const sim::ParamError& e) {
+        (void)model::cascade_scene(config.scene, profile->cascades[c], static_cast<int>(c));
+      } catch (const model::ParamError& e) {
         return "--profiles: profile '" + name + "' cannot realize its " + e.what() + " with this --patch";
       }
     }
@@ -59,7 +59,7 @@ std::string validate_profiles(const ServerConfig& config) {
 }  // namespace
 
 std::string validate_server_config(const ServerConfig& config) {
-  if (std::string error = sim::validate(config.scene); !error.empty()) return name_scene_flag(error);
+  if (std::string error = model::validate(config.scene); !error.empty()) return name_scene_flag(error);
   std::string schedule_error;
   const SceneSchedule schedule = make_schedule(config, schedule_error);
   if (schedule_error.empty()) schedule_error = schedule.validate();

@@ -43,7 +43,7 @@ struct ServerConfig {
   std::optional<ListenAddress> web_listen;
   std::string web_root;
 
-  sim::SceneParams scene;                         // the scene at the epoch (tick 0 onward)
+  model::SceneParams scene;                         // the scene at the epoch (tick 0 onward)
   std::vector<ScheduleEntry> schedule;            // later scene changes, by tick
 
   int tick_rate_hz = 30;
@@ -82,7 +82,7 @@ inline constexpr int kMaxClientsLimit = 100000;
 inline constexpr int kMaxUdpRedundancy = 7;  // a FrameBundle holds at most 8 chunks
 
 // Empty when the configuration is usable; otherwise one message naming the option (as a flag) and
-// what is allowed. Checks the scene (sim::validate), the schedule, and the server-level options.
+// what is allowed. Checks the scene (model::validate), the schedule, and the server-level options.
 std::string validate_server_config(const ServerConfig& config);
 
 // The schedule as the tick loop uses it: the configured scene, then each entry applied on top of

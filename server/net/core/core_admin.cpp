@@ -64,12 +64,12 @@ bool SessionCore::token_refused(Session& session, const std::string& token) {
 
 void SessionCore::apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now) {
   const Tick from = tick_ + scenes_.lead_ticks();
-  sim::SceneParams scene = scenes_.in_force(from).scene;
+  model::SceneParams scene = scenes_.in_force(from).scene;
   if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;
   if (change.wind_dir_deg) scene.wind_dir_deg = *change.wind_dir_deg;
   if (change.amplitude) scene.amplitude = *change.amplitude;
   if (change.choppiness) scene.choppiness = *change.choppiness;
-  if (change.spectrum) scene.spectrum = static_cast<sim::SpectrumKind>(*change.spectrum);
+  if (change.spectrum) scene.spectrum = static_cast<model::SpectrumKind>(*change.spectrum);
   std::vector<const Profile*> offered;
   for (const auto& stream : streams_) offered.push_back(&stream->profile());
   if (const std::string error = servable_scene(scene, offered); !error.empty()) {

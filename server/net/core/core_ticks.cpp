@@ -27,7 +27,7 @@ protocol::SceneUpdate SessionCore::scene_update(const AnnouncedScene& scene, std
 void SessionCore::announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester,
                           std::uint32_t request_id) {
   for (const AnnouncedScene& scene : scenes) {
-    const codec::SceneModelParams model = codec::scene_model_params(scene_wire::to_wire(scene.scene));
+    const model::SceneParams model = scene_wire::to_scene(scene_wire::to_wire(scene.scene));
     for (auto& stream : streams_) stream->set_scene(scene.from, scene.serial, model);
     for (const auto& session : sessions_.snapshot())  // a full control queue closes its session
       send_control(*session, protocol::encode(scene_update(scene, requester == session->id ? request_id : 0)));

@@ -50,10 +50,10 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
   }
 }
 
-codec::StreamConfig SessionCore::stream_config(const Profile& profile, const sim::SceneParams& scene) const {
+codec::StreamConfig SessionCore::stream_config(const Profile& profile, const model::SceneParams& scene) const {
   codec::StreamConfig config =
       codec::StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2,
-                                        scene_wire::wire_depth(scene.depth_m));
+                                        model::wire_depth(scene.depth_m));
   config.tick_rate_hz = static_cast<std::uint16_t>(host_.config.tick_rate_hz);
   return config;
 }

@@ -85,7 +85,7 @@ struct SessionCoreHost {
   DatagramSocket& datagrams;
   std::uint16_t udp_port = 0;  // announced in the Welcome
   // An accepted admin change: the simulation switches to `scene` at tick `from`.
-  std::function<void(const sim::SceneParams& scene, std::int64_t from)> request_scene;
+  std::function<void(const model::SceneParams& scene, std::int64_t from)> request_scene;
 };
 
 // What the last tick did, for metrics and tests.
@@ -189,7 +189,7 @@ class SessionCore {
   void drop_datagram(protocol::Reason reason, const asio::ip::udp::endpoint& sender);
   void update_client_gauges();
   ProfileStream* choose_profile(std::uint8_t wanted, std::uint64_t bandwidth_bps) const;
-  codec::StreamConfig stream_config(const Profile& profile, const sim::SceneParams& scene) const;
+  codec::StreamConfig stream_config(const Profile& profile, const model::SceneParams& scene) const;
   std::uint64_t new_session_id() const;
 
   SessionCoreHost host_;

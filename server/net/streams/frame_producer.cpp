@@ -74,7 +74,7 @@ FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*>
   use_scene(*scheduled_scene_);
 }
 
-void FrameProducer::use_scene(const sim::SceneParams& scene) {
+void FrameProducer::use_scene(const model::SceneParams& scene) {
   ocean_ = std::make_unique<sim::Ocean>(scene);
   cascades_.clear();
   for (std::size_t i = 0; i < profiles_.size(); ++i) {
@@ -101,7 +101,7 @@ std::shared_ptr<TickFrames> FrameProducer::take_buffer() {
 }
 
 std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, double time_s) {
-  const sim::SceneParams& scheduled = schedule_.scene_at(tick);
+  const model::SceneParams& scheduled = schedule_.scene_at(tick);
   scene_changed_ = false;
   if (&scheduled != scheduled_scene_) {
     scheduled_scene_ = &scheduled;

@@ -17,7 +17,7 @@ namespace ocean::server {
 
 class FrameProducer {
  public:
-  // Profiles must fit the scene (validate_server_config checks it). Throws sim::ParamError.
+  // Profiles must fit the scene (validate_server_config checks it). Throws model::ParamError.
   FrameProducer(SceneSchedule schedule, std::vector<const Profile*> profiles);
   FrameProducer(const FrameProducer&) = delete;  // active_scene_ points into schedule_
   FrameProducer& operator=(const FrameProducer&) = delete;
@@ -27,23 +27,23 @@ class FrameProducer {
   std::shared_ptr<const TickFrames> produce(std::int64_t tick, double time_s);
 
   // From tick `from` on, this scene replaces the active one (an admin change); it lasts
-  // until the schedule reaches its next entry. The scene must pass sim::validate.
+  // until the schedule reaches its next entry. The scene must pass model::validate.
   // Several may wait (admin changes within one announcement lead), each from its own tick.
-  void override_scene(const sim::SceneParams& scene, std::int64_t from) { overrides_[from] = scene; }
+  void override_scene(const model::SceneParams& scene, std::int64_t from) { overrides_[from] = scene; }
   // True when the last produce() switched to a scheduled or overriding scene.
   bool scene_changed() const { return scene_changed_; }
-  const sim::SceneParams& scene() const { return ocean_->params(); }
+  const model::SceneParams& scene() const { return ocean_->params(); }
 
  private:
   struct BufferPool;  // shared with every result's deleter, which returns the buffer to it
   std::shared_ptr<TickFrames> take_buffer();
 
-  void use_scene(const sim::SceneParams& scene);
+  void use_scene(const model::SceneParams& scene);
 
   SceneSchedule schedule_;
   std::vector<const Profile*> profiles_;
-  const sim::SceneParams* scheduled_scene_;  // the schedule entry last applied
-  std::map<std::int64_t, sim::SceneParams> overrides_;  // by first tick
+  const model::SceneParams* scheduled_scene_;  // the schedule entry last applied
+  std::map<std::int64_t, model::SceneParams> overrides_;  // by first tick
   std::unique_ptr<sim::Ocean> ocean_;
   // Per offered profile, its cascades' Oceans (null for a profile without), rebuilt with every
   // scene: a cascaded profile's frame is their frames one after the other, as its stream's fields.

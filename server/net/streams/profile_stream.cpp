@@ -29,7 +29,7 @@ ProfileStream::ProfileStream(const Profile& profile, const codec::StreamConfig& 
                                 std::to_string(config.rate_hz) + " Hz");
 }
 
-void ProfileStream::set_scene(Tick from, std::uint32_t serial, const codec::SceneModelParams& scene) {
+void ProfileStream::set_scene(Tick from, std::uint32_t serial, const model::SceneParams& scene) {
   encoder_->set_scene(from, static_cast<std::uint8_t>(serial), scene);
   const codec::StreamConfig config = encoder_->scenes().model_config(scene);
   pending_models_.push_back({from, scene, std::async(std::launch::async, [config, scene] {

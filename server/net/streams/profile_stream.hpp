@@ -48,7 +48,7 @@ class ProfileStream {
   // is built on a thread of its own meanwhile (the lead gives it a second) and handed to the
   // encoder when done: built at its first frame on the network thread instead, a desktop stream's
   // stalled every viewer's tick by about 100 ms.
-  void set_scene(Tick from, std::uint32_t serial, const codec::SceneModelParams& scene);
+  void set_scene(Tick from, std::uint32_t serial, const model::SceneParams& scene);
 
   // Every tick. Forgets the previous tick's encodings.
   void add_truth(Tick tick, const sim::Frame& frame);
@@ -86,7 +86,7 @@ class ProfileStream {
   double mean_delta_bytes_ = 0.0;
   struct PendingModel {
     Tick from;
-    codec::SceneModelParams scene;
+    model::SceneParams scene;
     std::future<std::shared_ptr<const codec::SceneModel>> model;
   };
   std::vector<PendingModel> pending_models_;  // being built; handed over by add_truth when ready

@@ -40,7 +40,7 @@ std::vector<AnnouncedScene> SceneAnnouncements::announce(Tick now) {
   return out;
 }
 
-const AnnouncedScene& SceneAnnouncements::add_admin(Tick now, const sim::SceneParams& scene) {
+const AnnouncedScene& SceneAnnouncements::add_admin(Tick now, const model::SceneParams& scene) {
   const Tick from = now + lead_;
   const std::uint32_t serial = in_force(from).serial + 128;
   return announced_[from] = AnnouncedScene{from, serial, scene};

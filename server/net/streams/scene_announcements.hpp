@@ -18,7 +18,7 @@ namespace ocean::server {
 struct AnnouncedScene {
   Tick from = 0;
   std::uint32_t serial = 0;
-  sim::SceneParams scene;
+  model::SceneParams scene;
 };
 
 class SceneAnnouncements {
@@ -32,7 +32,7 @@ class SceneAnnouncements {
   std::vector<AnnouncedScene> start(Tick now);
   std::vector<AnnouncedScene> announce(Tick now);
   // An admin's scene from now + lead on (until the next schedule entry), already announced.
-  const AnnouncedScene& add_admin(Tick now, const sim::SceneParams& scene);
+  const AnnouncedScene& add_admin(Tick now, const model::SceneParams& scene);
 
   // The announced scene in force at `tick` (start() must have run).
   const AnnouncedScene& in_force(Tick tick) const;

@@ -20,7 +20,7 @@ struct TickFrames {
   std::int64_t tick = 0;
   double time_s = 0.0;
   std::vector<ProfileFrame> frames;  // in the order of ServerConfig::profiles
-  sim::SceneParams scene;            // the scene these frames show
+  model::SceneParams scene;            // the scene these frames show
   bool scene_changed = false;        // this tick is the first of a new scene (schedule or admin)
 };
 
