@@ -12,6 +12,31 @@
 #include "scenario_listing.hpp"
 #include "summary_merge.hpp"
 
+namespace {
+
+// --csv and --plot: 0, or 1 with the reason on stderr.
+int write_series(const ocean::loadtest::LoadtestOptions& options, const std::vector<ocean::loadtest::SeriesRow>& series) {
+  if (options.csv_path.empty() && options.plot_path.empty()) return 0;
+  const std::string csv = options.csv_path.empty() ? options.plot_path + ".csv" : options.csv_path;
+  if (std::string e = ocean::loadtest::write_series_csv(csv, series); !e.empty()) {
+    std::cerr << "ocean-loadtest: " << e << "\n";
+    return 1;
+  }
+  int status = 0;
+  if (!options.plot_path.empty()) {
+    const std::string title = "ocean-loadtest " + (options.scenario.empty() ? options.profile : options.scenario) + ", " +
+                              std::to_string(options.clients) + " clients";
+    if (std::string p = ocean::loadtest::plot_series(csv, options.plot_path, title); !p.empty()) {
+      std::cerr << "ocean-loadtest: " << p << "\n";
+      status = 1;
+    }
+    if (options.csv_path.empty()) std::remove(csv.c_str());
+  }
+  return status;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace ocean::loadtest;
   const OptionsResult parsed = parse_options(std::vector<std::string>(argv + 1, argv + argc));
@@ -42,22 +67,7 @@ int main(int argc, char** argv) {
   }
   try {
     const LoadRunResult result = run_load(options);
-    int status = 0;
-    if (!options.csv_path.empty() || !options.plot_path.empty()) {
-      const std::string csv = options.csv_path.empty() ? options.plot_path + ".csv" : options.csv_path;
-      if (std::string e = write_series_csv(csv, result.series); !e.empty()) {
-        std::cerr << "ocean-loadtest: " << e << "\n";
-        status = 1;
-      } else if (!options.plot_path.empty()) {
-        const std::string title = "ocean-loadtest " + (options.scenario.empty() ? options.profile : options.scenario) + ", " +
-                                  std::to_string(options.clients) + " clients";
-        if (std::string p = plot_series(csv, options.plot_path, title); !p.empty()) {
-          std::cerr << "ocean-loadtest: " << p << "\n";
-          status = 1;
-        }
-        if (options.csv_path.empty()) std::remove(csv.c_str());
-      }
-    }
+    const int status = write_series(options, result.series);
     print_table(options.json ? std::cerr : std::cout, result.summary);
     if (options.json) std::cout << to_json(result.summary) << std::endl;
     // Last, so it is the line a reader of the output sees.

@@ -74,25 +74,19 @@ void FrameTimeline::fill(TimelineFrame& slot, const codec::ReconstructedFrame& f
   used_[static_cast<std::size_t>(&slot - frames_.data())] = true;
 }
 
-TimelineSample FrameTimeline::sample(double now) {
-  TimelineSample out;
-  const auto offset = clock_.offset_s();
-  if (!offset) return out;
-  // More delay on a jittery link: the render clock's target moves back by the excess.
-  const std::optional<double> target =
-      *offset + (config_.adapt_to_jitter ? adaptive_delay_s() - delay_s_ : 0.0);
+double FrameTimeline::advance_render_clock(double now, double target) {
   const double period = config_.tick_period_s;
   if (!rendering_) {
     rendering_ = true;
-    render_offset_s_ = *target;
+    render_offset_s_ = target;
     last_render_tick_ = (now - render_offset_s_ - delay_s_) / period;
   } else {
     // Follow the estimate by running the render clock slightly fast or slow, so the picture never
     // jumps and never runs backwards; only a gross error (a new server clock) is jumped over.
-    const double diff = *target - render_offset_s_;
+    const double diff = target - render_offset_s_;
     const double dt = std::max(0.0, now - last_now_);
     if (std::fabs(diff) > config_.clock_snap_s) {
-      render_offset_s_ = *target;
+      render_offset_s_ = target;
       ++counters_.clock_snaps;
       last_render_tick_ = (now - render_offset_s_ - delay_s_) / period;
     } else {
@@ -104,8 +98,10 @@ TimelineSample FrameTimeline::sample(double now) {
   if (starved_) counters_.stalled_s += std::max(0.0, now - last_now_);
   last_now_ = now;
   last_render_tick_ = render_tick;
-  out.render_tick = render_tick;
+  return render_tick;
+}
 
+std::pair<const TimelineFrame*, const TimelineFrame*> FrameTimeline::bracket(double render_tick) {
   const TimelineFrame* a = nullptr;  // newest at or before render_tick
   const TimelineFrame* b = nullptr;  // oldest after it
   for (std::size_t i = 0; i < frames_.size(); ++i) {
@@ -121,7 +117,18 @@ TimelineSample FrameTimeline::sample(double now) {
   if (a)
     for (std::size_t i = 0; i < frames_.size(); ++i)
       if (used_[i] && frames_[i].tick < a->tick) used_[i] = false;
+  return {a, b};
+}
 
+TimelineSample FrameTimeline::sample(double now) {
+  TimelineSample out;
+  const auto offset = clock_.offset_s();
+  if (!offset) return out;
+  // More delay on a jittery link: the render clock's target moves back by the excess.
+  const double target = *offset + (config_.adapt_to_jitter ? adaptive_delay_s() - delay_s_ : 0.0);
+  const double render_tick = advance_render_clock(now, target);
+  out.render_tick = render_tick;
+  const auto [a, b] = bracket(render_tick);
   if (a && b) {
     out.status = TimelineSample::Status::interpolating;
     out.a = a;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "arrival_clock.hpp"
@@ -100,6 +101,10 @@ class FrameTimeline {
   void clear();
 
  private:
+  // The render tick at `now`, the render clock slewed towards `target` (its offset estimate).
+  double advance_render_clock(double now, double target);
+  // The newest frame at or before render_tick and the oldest after it; frees older slots.
+  std::pair<const TimelineFrame*, const TimelineFrame*> bracket(double render_tick);
   TimelineFrame* slot_for(Tick tick);
   void fill(TimelineFrame& slot, const codec::ReconstructedFrame& frame, Tick tick, double arrival_s,
             bool predicted);

@@ -100,6 +100,8 @@ class Renderer {
  private:
   bool fail(std::string reason);
   void release_grid();
+  void build_tile_indices(int n, int chunk_cells, bool wide);
+  void build_far_blocks(int n, float patch_x_m, float patch_z_m, bool wide);
   // draw()'s steps: which tiles the camera sees, the water's uniforms, the water, then the sky.
   TileSelection visible_tiles(const Camera& camera, const glm::mat4& clip_from_rel) const;
   void set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_from_rel);

@@ -85,14 +85,7 @@ void NetworkThread::run() {
         on_frame(frame, tick);
       });
   connection->set_on_welcome([this](const protocol::Welcome& welcome) { on_welcome(welcome); });
-  connection->set_on_session_end([this](const client::ClientSession& session, const std::string&) {
-    bytes_done_ += session_bytes(session);
-    if (session_ticks_.any) {
-      expected_done_ += std::floor((session_ticks_.last - session_ticks_.first) / ticks_per_frame_ + 0.5) + 1.0;
-      received_done_ += static_cast<double>(session_ticks_.received);
-    }
-    session_ticks_ = {};
-  });
+  connection->set_on_session_end([this](const client::ClientSession& session, const std::string&) { on_session_end(session); });
   connection->start();
 
   asio::steady_timer timer(io);
@@ -127,6 +120,16 @@ void NetworkThread::run() {
     }
   }
   recording_.reset();
+}
+
+// A session's totals join those of the sessions before it (reconnections keep the statistics).
+void NetworkThread::on_session_end(const client::ClientSession& session) {
+  bytes_done_ += session_bytes(session);
+  if (session_ticks_.any) {
+    expected_done_ += std::floor((session_ticks_.last - session_ticks_.first) / ticks_per_frame_ + 0.5) + 1.0;
+    received_done_ += static_cast<double>(session_ticks_.received);
+  }
+  session_ticks_ = {};
 }
 
 void NetworkThread::on_welcome(const protocol::Welcome& welcome) {

@@ -80,6 +80,7 @@ class NetworkThread {
  private:
   void run();
   void on_welcome(const protocol::Welcome& welcome);
+  void on_session_end(const client::ClientSession& session);
   void on_frame(const codec::ReconstructedFrame& frame, Tick tick);
   void publish(const client::ClientConnection& connection, double now);
 

@@ -65,6 +65,35 @@ ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLa
   return ChunkError::ok;
 }
 
+// A chunk of a tick not seen before: the frame's bookkeeping, and the prediction its corrections
+// apply to (none for an explicit key, whose coefficients are the frame).
+void Decoder::start_pending(Pending& p, const ChunkView& c, const ChunkHeader& h, std::uint32_t spectral_items) {
+  p.baseline = c.baseline;
+  p.key = c.key;
+  p.modeled = h.modeled;
+  p.count = c.count;
+  p.fields = std::move(spare_fields_);
+  p.got.assign(c.count, false);
+  if (c.key && options_.memo) p.key_payloads.resize(c.count);
+  if (c.key && !h.modeled) {
+    p.key_coefficients.resize(spectral_items);
+    p.pos_shift = h.pos_shift;
+    p.vel_shift = h.vel_shift;
+  } else {
+    if (c.key) {
+      scenes_.model_state(c.tick, p.predicted);
+    } else {
+      if (options_.memo) {
+        options_.memo->advance(states_.at(c.baseline), c.baseline, c.tick, scenes_, p.predicted);
+      } else {
+        p.predicted = std::move(spare_state_);  // its buffers, if any: advancing then allocates nothing
+        scenes_.advance(*states_.at(c.baseline), c.baseline, c.tick, p.predicted, parallel_);
+      }
+    }
+    model_.synthesize(p.predicted.cur, scenes_.at(c.tick)->scene.choppiness, p.fields.synthesis);
+  }
+}
+
 ChunkError Decoder::accept(const ChunkView& c) {
   completed_tick_.reset();
   ChunkHeader h;
@@ -91,32 +120,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
   // Everything below changes state and cannot fail.
   auto [it, fresh] = pending_.try_emplace(c.tick);
   Pending& p = it->second;
-  if (fresh) {
-    p.baseline = c.baseline;
-    p.key = c.key;
-    p.modeled = h.modeled;
-    p.count = c.count;
-    p.fields = std::move(spare_fields_);
-    p.got.assign(c.count, false);
-    if (c.key && options_.memo) p.key_payloads.resize(c.count);
-    if (c.key && !h.modeled) {
-      p.key_coefficients.resize(layout.spectral_items);
-      p.pos_shift = h.pos_shift;
-      p.vel_shift = h.vel_shift;
-    } else {
-      if (c.key) {
-        scenes_.model_state(c.tick, p.predicted);
-      } else {
-        if (options_.memo) {
-          options_.memo->advance(states_.at(c.baseline), c.baseline, c.tick, scenes_, p.predicted);
-        } else {
-          p.predicted = std::move(spare_state_);  // its buffers, if any: advancing then allocates nothing
-          scenes_.advance(*states_.at(c.baseline), c.baseline, c.tick, p.predicted, parallel_);
-        }
-      }
-      model_.synthesize(p.predicted.cur, scenes_.at(c.tick)->scene.choppiness, p.fields.synthesis);
-    }
-  }
+  if (fresh) start_pending(p, c, h, layout.spectral_items);
   p.got[c.index] = true;
   if (!p.key_payloads.empty()) p.key_payloads[c.index].assign(c.payload.begin(), c.payload.end());
   ++p.received;

@@ -93,6 +93,7 @@ class Decoder {
   // payload: the chunk of a single-chunk delta, remembered in the memo with its result.
   void complete(Tick tick, Pending& p, std::span<const std::uint8_t> payload);
   bool accept_remembered(const ChunkView& c);
+  void start_pending(Pending& p, const ChunkView& c, const ChunkHeader& h, std::uint32_t spectral_items);
   void complete_shared(Tick tick, const DecodeMemo::Result& r);
   void show(Tick tick);
   void hold(Tick tick, DecodeMemo::State state);

@@ -171,8 +171,7 @@ std::shared_ptr<const EncodedFrame> Encoder::encode_key(Tick tick) {
 
 // The codec version 1 key: spectra of the truth at tick and tick - 1, quantized (CODEC.md 7.3).
 std::shared_ptr<const EncodedFrame> Encoder::explicit_key(Tick tick) {
-  const auto& t1 = truth_.at(tick);
-  const auto& t0 = truth_.at(tick - 1);
+  const auto &t1 = truth_.at(tick), &t0 = truth_.at(tick - 1);
   const std::size_t nn = model_.samples();
   const double step = static_cast<double>(config_.height_step_m);
   std::vector<std::int64_t> f1(nn), f0(nn);
@@ -313,89 +312,6 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predic
       }
   states_[frame->id] = std::move(predicted);
   return frame;
-}
-
-void Encoder::chunk_frame(EncodedFrame& frame, const BodyLayout& layout, const ChunkHeader& proto,
-                          const std::vector<KeyCoefficient>& key_coefficients, const Corrections& corr) {
-  const std::uint32_t total = layout.total();
-  struct Piece {
-    std::uint32_t begin, end;
-    std::vector<std::uint8_t> body;
-  };
-  std::vector<Piece> pieces;
-  ChunkView env{frame.id.tick, frame.key ? frame.id.tick : frame.base.tick, frame.key, 0, 1, {}};
-  // Payload size for a range; the header does not depend on the envelope or the CRC value.
-  BodyCost trial_cost, best_cost;
-  auto trial = [&](std::uint32_t b, std::uint32_t e, std::vector<std::uint8_t>& body) {
-    trial_cost = {};
-    body = encode_body(layout, b, e, key_coefficients, corr, &trial_cost);
-    ChunkHeader h = proto;
-    h.item_begin = b;
-    h.item_end = e;
-    h.whole = b == 0 && e == total;
-    return write_payload(h, env, config_.grid_log2(), body).size();
-  };
-  std::uint32_t begin = 0;
-  std::uint32_t guess = layout.spectral_items ? 64 : total;
-  // A single chunk covering the frame writes no range (ChunkHeader::whole): trials of the whole
-  // range measure it that way too.
-  while (begin < total) {
-    // Largest end in (begin, total] whose payload fits: grow geometrically, then bisect.
-    // Sizes are (nearly) monotone in the end; whatever is chosen was checked to fit.
-    std::vector<std::uint8_t> body, best_body;
-    std::uint32_t lo = begin, hi = total + 1;
-    std::uint32_t end = std::min(total, begin + std::max<std::uint32_t>(guess, 1));
-    while (true) {
-      if (trial(begin, end, body) <= options_.max_payload) {
-        lo = end;
-        best_body = std::move(body);
-        best_cost = trial_cost;
-        if (end == total) break;
-        end = std::min(total, begin + 2 * (end - begin));
-      } else {
-        hi = end;
-        break;
-      }
-    }
-    while (hi - lo > 1) {
-      const std::uint32_t mid = lo + (hi - lo) / 2;
-      if (trial(begin, mid, body) <= options_.max_payload) {
-        lo = mid;
-        best_body = std::move(body);
-        best_cost = trial_cost;
-      } else {
-        hi = mid;
-      }
-    }
-    if (lo == begin)
-      throw std::runtime_error("Encoder: one item does not fit max_payload = " + std::to_string(options_.max_payload));
-    pieces.push_back({begin, lo, std::move(best_body)});
-    frame.stats.cost.key_bits += best_cost.key_bits;
-    frame.stats.cost.height_bits += best_cost.height_bits;
-    frame.stats.cost.slope_bits += best_cost.slope_bits;
-    frame.stats.cost.choppy_bits += best_cost.choppy_bits;
-    guess = lo - begin;
-    begin = lo;
-  }
-  if (pieces.size() > kMaxChunksPerFrame)
-    throw std::runtime_error("Encoder: frame needs " + std::to_string(pieces.size()) + " chunks, more than " +
-                             std::to_string(kMaxChunksPerFrame) + " (raise max_payload)");
-  const auto count = static_cast<std::uint16_t>(pieces.size());
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    Chunk c;
-    c.tick = env.tick;
-    c.baseline = env.baseline;
-    c.key = frame.key;
-    c.index = static_cast<std::uint16_t>(i);
-    c.count = count;
-    ChunkHeader h = proto;
-    h.item_begin = pieces[i].begin;
-    h.item_end = pieces[i].end;
-    h.whole = count == 1;
-    c.payload = write_payload(h, view(c), config_.grid_log2(), pieces[i].body);
-    frame.stats.payload_bytes += c.payload.size();
-    frame.chunks.push_back(std::move(c));
-  }
 }
 
 }  // namespace ocean::codec

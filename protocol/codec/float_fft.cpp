@@ -46,6 +46,28 @@ Twiddle twiddle(int n, const float* cos, const float* sin, int len, int j) {
   return {cos[j * (n / len)], sin[j * (n / len)]};
 }
 
+// The stage of length len == n alone, after the pairs of stages_body.
+__attribute__((always_inline)) inline void last_stage(int n, const float* cos, const float* sin, float* re, float* im,
+                                                     std::size_t stride, int width, int len) {
+  const int h = len >> 1;
+  for (int j = 0; j < h; ++j) {
+    const Twiddle w = twiddle(n, cos, sin, len, j);
+    float* __restrict r0 = re + static_cast<std::size_t>(j) * stride;
+    float* __restrict i0 = im + static_cast<std::size_t>(j) * stride;
+    float* __restrict r1 = r0 + static_cast<std::size_t>(h) * stride;
+    float* __restrict i1 = i0 + static_cast<std::size_t>(h) * stride;
+    OCEAN_IVDEP
+    for (int x = 0; x < width; ++x) {
+      const float tr = r1[x] * w.re - i1[x] * w.im, ti = r1[x] * w.im + i1[x] * w.re;
+      const float ar = r0[x], ai = i0[x];
+      r1[x] = ar - tr;
+      i1[x] = ai - ti;
+      r0[x] = ar + tr;
+      i0[x] = ai + ti;
+    }
+  }
+}
+
 // Every stage along the first axis of an n x width block whose rows are `stride` apart, input in
 // bit-reversed order. Stages go in pairs (len, 2 len): the four rows start + j + {0, 1, 2, 3} len/2
 // meet only each other in both, so each is loaded and stored once per pair (the column pass is
@@ -93,24 +115,7 @@ __attribute__((always_inline)) inline void stages_body(int n, const float* cos, 
       }
     }
   }
-  if (len > n) return;
-  const int h = len >> 1;  // an odd number of stages: the last one alone
-  for (int j = 0; j < h; ++j) {
-    const Twiddle w = twiddle(n, cos, sin, len, j);
-    float* __restrict r0 = re + static_cast<std::size_t>(j) * stride;
-    float* __restrict i0 = im + static_cast<std::size_t>(j) * stride;
-    float* __restrict r1 = r0 + static_cast<std::size_t>(h) * stride;
-    float* __restrict i1 = i0 + static_cast<std::size_t>(h) * stride;
-    OCEAN_IVDEP
-    for (int x = 0; x < width; ++x) {
-      const float tr = r1[x] * w.re - i1[x] * w.im, ti = r1[x] * w.im + i1[x] * w.re;
-      const float ar = r0[x], ai = i0[x];
-      r1[x] = ar - tr;
-      i1[x] = ai - ti;
-      r0[x] = ar + tr;
-      i0[x] = ai + ti;
-    }
-  }
+  if (len <= n) last_stage(n, cos, sin, re, im, stride, width, len);  // an odd number of stages
 }
 
 #if defined(OCEAN_FLOAT_FFT_AVX2)

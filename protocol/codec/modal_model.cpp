@@ -181,25 +181,13 @@ void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFi
   synthesize_channels(cur, choppiness, unrounded_, fields);
 }
 
-void ModalModel::synthesize_channels(const HalfSpectrum& cur, double choppiness, UnroundedFields& out,
-                                     std::vector<std::int64_t>* const* rounded) {
-  const std::size_t m = a_.size();
-  const std::size_t nn = samples_;
-  h_re_.resize(m);
-  h_im_.resize(m);
-  for (std::size_t h = 0; h < m; ++h) {
-    h_re_[h] = to_binary32(cur.re[h]);
-    h_im_[h] = to_binary32(cur.im[h]);
-  }
-  // The channels in order - height, [slope_x, slope_z], [disp_x, disp_z, disp_xx, disp_zz,
-  // disp_xz] - synthesized in consecutive pairs (CODEC.md 7.2), lattice by lattice.
-  struct Channel {
-    int index;  // coding order
-    ChannelKind kind;
-    const float* factor;  // per mode of the whole stream; null for height and slopes
-  };
-  Channel channels[kCorrectionChannels];
+// The channels in order - height, [slope_x, slope_z], [disp_x, disp_z, disp_xx, disp_zz, disp_xz] -
+// that have a transform this frame, sized; the others cleared (not streamed) or zeroed. They are
+// synthesized in consecutive pairs (CODEC.md 7.2), lattice by lattice.
+int ModalModel::plan_channels(double choppiness, UnroundedFields& out, std::vector<std::int64_t>* const* rounded,
+                              SynthesisChannel* channels) {
   int count = 0;
+  const std::size_t nn = samples_;
   // A channel without a transform: not streamed (cleared), or exactly 0 everywhere.
   const auto without_transform = [&](int index, bool zeros) {
     out.channels[index].assign(zeros ? nn : 0, 0.0f);
@@ -222,24 +210,38 @@ void ModalModel::synthesize_channels(const HalfSpectrum& cur, double choppiness,
     out.channels[channels[i].index].resize(nn);
     if (rounded) rounded[channels[i].index]->resize(nn);
   }
+  return count;
+}
+
+void ModalModel::synthesize_channels(const HalfSpectrum& cur, double choppiness, UnroundedFields& out,
+                                     std::vector<std::int64_t>* const* rounded) {
+  const std::size_t m = a_.size();
+  h_re_.resize(m);
+  h_im_.resize(m);
+  for (std::size_t h = 0; h < m; ++h) {
+    h_re_[h] = to_binary32(cur.re[h]);
+    h_im_[h] = to_binary32(cur.im[h]);
+  }
+  SynthesisChannel channels[kCorrectionChannels];
+  const int count = plan_channels(choppiness, out, rounded, channels);
   for (std::size_t g = 0; g < grids_.size(); ++g) {
     const StreamConfig::Lattice& l = lattices_[g];
     Grid& grid = *grids_[g];
     const FloatSpectrum x{l.n, h_re_.data() + l.modes_at, h_im_.data() + l.modes_at, grid.kx.data(), grid.kz.data()};
-    const auto source = [&](const Channel& c) {
+    const auto source = [&](const SynthesisChannel& c) {
       return ChannelSource{c.kind, c.factor ? c.factor + l.modes_at : nullptr};
     };
     const std::size_t lattice_samples = static_cast<std::size_t>(l.n) * l.n;
     const double scale = synthesis_scale(l.n);
-    const auto slice = [&](const Channel& c) { return out.channels[c.index].data() + l.samples_at; };
+    const auto slice = [&](const SynthesisChannel& c) { return out.channels[c.index].data() + l.samples_at; };
     const bool spread = grid.pair_scratch.size() > 1;
     run_jobs(spread ? parallel_ : ParallelFor{}, (count + 1) / 2, [&](int pair) {
-      const Channel& a = channels[2 * pair];
-      const Channel* b = 2 * pair + 1 < count ? &channels[2 * pair + 1] : nullptr;
+      const SynthesisChannel& a = channels[2 * pair];
+      const SynthesisChannel* b = 2 * pair + 1 < count ? &channels[2 * pair + 1] : nullptr;
       synthesize_pair(*grid.pair_scratch[spread ? pair : 0], x, source(a), b ? source(*b) : ChannelSource{}, slice(a),
                       b ? slice(*b) : nullptr);
       if (!rounded) return;
-      for (const Channel* c : {&a, b})
+      for (const SynthesisChannel* c : {&a, b})
         if (c) round_fields(slice(*c), lattice_samples, scale, rounded[c->index]->data() + l.samples_at);
     });
   }

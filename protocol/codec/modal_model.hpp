@@ -105,6 +105,13 @@ class ModalModel {
   std::int64_t recurrence_coef(int index) const { return a_[index]; }
 
  private:
+  struct SynthesisChannel {
+    int index;  // coding order
+    ChannelKind kind;
+    const float* factor;  // per mode of the whole stream; null for height and slopes
+  };
+  int plan_channels(double choppiness, UnroundedFields& out, std::vector<std::int64_t>* const* rounded,
+                    SynthesisChannel* channels);
   void build_choppy_factors(double choppiness);
   // Both synthesize()s: `rounded` null, or the SampleFields' channels in coding order.
   void synthesize_channels(const HalfSpectrum& cur, double choppiness, UnroundedFields& out,

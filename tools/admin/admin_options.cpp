@@ -32,6 +32,24 @@ bool read_token_file(const std::string& path, std::string& token, std::string& e
   return true;
 }
 
+// The token from --token-file, else from the environment; false with the reason when neither
+// gives one the protocol carries.
+bool read_admin_token(const std::string& token_file, const char* env_token, std::string& token, std::string& error) {
+  if (!token_file.empty()) {
+    if (!read_token_file(token_file, token, error)) return false;
+  } else if (env_token && *env_token) {
+    token = env_token;
+  } else {
+    error = "no admin token: give --token-file FILE or set OCEAN_ADMIN_TOKEN";
+    return false;
+  }
+  if (token.size() > 128) {
+    error = "the admin token is " + std::to_string(token.size()) + " bytes; the protocol allows at most 128";
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, const char* env_token) {
@@ -90,19 +108,7 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
                             "--amplitude, --choppiness, --spectrum";
     return result;
   }
-  if (o.show) return result;
-  if (!token_file.empty()) {
-    if (!read_token_file(token_file, c.admin_token, result.error)) return result;
-  } else if (env_token && *env_token) {
-    c.admin_token = env_token;
-  } else {
-    result.error = "no admin token: give --token-file FILE or set OCEAN_ADMIN_TOKEN";
-    return result;
-  }
-  if (c.admin_token.size() > 128) {
-    result.error = "the admin token is " + std::to_string(c.admin_token.size()) + " bytes; the protocol allows at most 128";
-    return result;
-  }
+  if (!o.show) read_admin_token(token_file, env_token, c.admin_token, result.error);
   return result;
 }
 

@@ -171,6 +171,26 @@ std::string with_file_origin(const std::string& error, const std::map<std::strin
   return origin == origins.end() ? error : origin->second + ": " + error;
 }
 
+// The config file first, then the flags given over it, then the check of the whole; "" or the
+// first error, naming the file line a value came from.
+std::string assemble_config(ServerConfig& config, const std::string& config_file, std::span<const ConfigOption> options,
+                            const std::vector<CLI::Option*>& flags, const std::vector<std::string>& flag_values) {
+  std::map<std::string, std::string> file_origins;  // option name -> "file:line", until a flag overrides it
+  if (!config_file.empty()) {
+    std::string text;
+    if (std::string error = read_config_file(config_file, text); !error.empty()) return error;
+    if (std::string error = apply_config_toml(config, text, config_file, &file_origins); !error.empty()) return error;
+  }
+  for (std::size_t i = 0; i < options.size(); ++i) {
+    if (flags[i]->count() == 0) continue;
+    file_origins.erase(std::string(options[i].name));
+    if (std::string error = options[i].apply(config, flag_values[i]); !error.empty())
+      return "--" + std::string(options[i].name) + ": " + error;
+  }
+  if (std::string error = validate_server_config(config); !error.empty()) return with_file_origin(error, file_origins);
+  return {};
+}
+
 }  // namespace
 
 std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, std::string_view source,
@@ -259,32 +279,8 @@ ConfigLoadResult load_config(const std::vector<std::string>& args) {
     return result;
   }
 
-  ServerConfig& config = result.config;
-  std::map<std::string, std::string> file_origins;  // option name -> "file:line", until a flag overrides it
-  if (!config_file.empty()) {
-    std::string text;
-    if (std::string error = read_config_file(config_file, text); !error.empty()) {
-      result.message = error;
-      return result;
-    }
-    if (std::string error = apply_config_toml(config, text, config_file, &file_origins); !error.empty()) {
-      result.message = error;
-      return result;
-    }
-  }
-  for (std::size_t i = 0; i < options.size(); ++i) {
-    if (flags[i]->count() == 0) continue;
-    file_origins.erase(std::string(options[i].name));
-    if (std::string error = options[i].apply(config, flag_values[i]); !error.empty()) {
-      result.message = "--" + std::string(options[i].name) + ": " + error;
-      return result;
-    }
-  }
-  if (std::string error = validate_server_config(config); !error.empty()) {
-    result.message = with_file_origin(error, file_origins);
-    return result;
-  }
-  result.outcome = ConfigLoadResult::Outcome::run;
+  result.message = assemble_config(result.config, config_file, options, flags, flag_values);
+  if (result.message.empty()) result.outcome = ConfigLoadResult::Outcome::run;
   return result;
 }
 

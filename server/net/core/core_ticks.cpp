@@ -148,13 +148,18 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
     }
     host_.metrics.frames_rebased_load.inc();
   }
-  const SharedFrame& frame = stream.delta(tick, *base);
   bases.emplace_back(&stream, *base);
+  deliver(session, tick, stream.delta(tick, *base), *base, now_s);
+}
+
+// A delta on its way: by UDP once its baseline is acked and the stream link has written its
+// frames, else on the stream link within the session's pace and queue.
+void SessionCore::deliver(Session& session, Tick tick, const SharedFrame& frame, codec::StateId base, double now_s) {
   ServerMetrics& metrics = host_.metrics;
   // UDP only once the frames queued on the stream link before it are written: a datagram
   // overtaking them would leave them complete but older than what the client already shows.
   // (Control messages queued there, such as a SceneUpdate, do not hold the stream back.)
-  if (udp && session.baselines.is_acked(*base) && tcp_frames_written(session)) {
+  if (session.on_udp() && session.baselines.is_acked(base) && tcp_frames_written(session)) {
     if (!send_udp_frame(session, tick, frame, now_s)) {
       metrics.frames_skipped_bandwidth.inc();
       return;

@@ -157,6 +157,7 @@ class SessionCore {
   double rebind_quiet_s(const Session& session) const;
 
   void serve(Session& session, Tick tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
+  void deliver(Session& session, Tick tick, const SharedFrame& frame, codec::StateId base, double now_s);
   bool take_key_budget(ProfileStream& stream, Tick tick, double now_s);
   void send_key(Session& session, ProfileStream& stream, Tick tick, double now_s);
   bool send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s);
