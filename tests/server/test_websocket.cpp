@@ -5,6 +5,7 @@
 // the other clients keep their stream; --web-listen serves the page and lets its own origin in.
 #include "raw_http_get.hpp"
 #include "session_harness.hpp"
+#include "stream_transport.hpp"
 #include "web_files.hpp"
 
 #include <catch2/catch.hpp>
@@ -205,4 +206,29 @@ TEST_CASE("the ws gauge counts WebSocket viewers and returns to 0 when the last 
   while (ws.value() != 0.0 && std::chrono::steady_clock::now() < until) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   CHECK(ws.value() == 0.0);  // main: stayed 1 (update_client_gauges seeded only tcp and udp)
   harness.stop();
+}
+
+TEST_CASE("every stream transport opens links that carry its name, and the primary one is always on") {
+  // The gauges and logs label a session by its link's transport(), and the server seeds each
+  // transport's gauge from the table: the two must agree, or a gauge never returns to 0.
+  asio::io_context context;
+  asio::ip::tcp::acceptor acceptor(context, asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), 0));
+  ServerConfig config;
+  REQUIRE(stream_transports().front().address(config) == &config.listen);
+  for (const StreamTransport& transport : stream_transports()) {
+    asio::ip::tcp::socket client(context);
+    client.connect(acceptor.local_endpoint());
+    asio::ip::tcp::socket accepted = acceptor.accept();
+    const TransportContext transport_context{config, 1 << 16, 0, {}};
+    const std::shared_ptr<StreamLink> link = transport.open(std::move(accepted), transport_context);
+    REQUIRE(link);
+    CHECK(link->transport() == transport.name);
+    CHECK(find_stream_transport(transport.name) == &transport);
+    link->close("test_done");
+  }
+  CHECK(find_stream_transport("carrier-pigeon") == nullptr);
+  // A transport the config leaves off has no address: no listener, no gauge.
+  CHECK(find_stream_transport("ws")->address(config) == nullptr);
+  config.ws_listen = ListenAddress{"127.0.0.1", 0};
+  CHECK(find_stream_transport("ws")->address(config) == &*config.ws_listen);
 }

@@ -74,7 +74,6 @@ Server::Server(ServerConfig config)
       signals_(context_, SIGINT, SIGTERM, SIGHUP),
       metrics_(registry_),
       cookie_key_(cookie_key_from(config_)),
-      tcp_(context_, open_tcp_acceptor(context_, config_.listen, "clients"), StreamKind::tcp),
       schedule_(checked_schedule(config_)),
       producer_(schedule_, offered_profiles(config_)),
       tick_loop_(TickClock(config_.tick_rate_hz, config_.epoch_unix_ms),
@@ -88,12 +87,7 @@ Server::Server(ServerConfig config)
                                 std::to_string(kMaxSimTimeS) + " s, so choose an epoch within ~31 years of now");
   // Builds the per-profile band evaluators before the first deadline (and surfaces any ParamError).
   (void)producer_.produce(clock.tick_at(system_unix_ns()), now_s);
-  tcp_port_ = tcp_.acceptor.local_endpoint().port();
-  if (config_.ws_listen) {
-    ws_ = std::make_unique<Listener>(context_, open_tcp_acceptor(context_, *config_.ws_listen, "WebSocket clients"),
-                                     StreamKind::websocket);
-    ws_port_ = ws_->acceptor.local_endpoint().port();
-  }
+  open_listeners();
   {
     asio::ip::udp::socket socket = open_udp_beside_tcp();
     udp_port_ = socket.local_endpoint().port();
@@ -117,7 +111,7 @@ Server::Server(ServerConfig config)
     if (root.empty())
       throw std::invalid_argument("--web-listen: no browser viewer found (build it with -DOCEAN_BUILD_WEB=ON, or give --web-root DIR)");
     std::string error;
-    web_files_ = WebFiles::load(root, ws_port_, error);
+    web_files_ = WebFiles::load(root, ws_port().value_or(0), error);
     if (!web_files_) throw std::invalid_argument(error);
     web_http_ = std::make_unique<HttpServer>(
         http_context_, *config_.web_listen, [this](const HttpRequest& r) { return web_files_->reply(r); },
@@ -130,8 +124,8 @@ Server::Server(ServerConfig config)
   }
   for (const Profile* profile : offered_profiles(config_)) {
     metrics_.frames_computed(profile->name);
-    for (const char* transport : {"tcp", "udp"}) metrics_.clients(profile->name, transport);
-    if (ws_) metrics_.clients(profile->name, "ws");
+    metrics_.clients(profile->name, "udp");
+    for (const auto& listener : listeners_) metrics_.clients(profile->name, listener->transport.name);
   }
   set_log_suppressed_hook([this](std::string_view reason) { metrics_.log_suppressed(reason).inc(); });
   do_await_stop();
@@ -144,13 +138,39 @@ asio::ip::udp::socket Server::open_udp_beside_tcp() {
   const bool kernel_picked = config_.listen.port == 0 && !config_.udp_listen;
   for (int attempt = 1;; ++attempt) {
     try {
-      return open_udp_socket(context_, udp_address(config_, tcp_port_));
+      return open_udp_socket(context_, udp_address(config_, tcp_port()));
     } catch (const std::system_error& e) {
       if (!kernel_picked || e.code() != asio::error::address_in_use || attempt == 16) throw;
     }
-    tcp_.acceptor = open_tcp_acceptor(context_, config_.listen, "clients");
-    tcp_port_ = tcp_.acceptor.local_endpoint().port();
+    listeners_.front() = std::make_unique<Listener>(context_, stream_transports().front(), config_.listen);
   }
+}
+
+// One listener per stream transport the config enables, the primary one first.
+void Server::open_listeners() {
+  for (const StreamTransport& transport : stream_transports())
+    if (const ListenAddress* address = transport.address(config_))
+      listeners_.push_back(std::make_unique<Listener>(context_, transport, *address));
+}
+
+std::optional<std::uint16_t> Server::port_of(std::string_view transport) const {
+  for (const auto& listener : listeners_)
+    if (listener->transport.name == transport) return listener->port;
+  return std::nullopt;
+}
+
+// "listening tcp=H:P udp=H:P ws=H:P|off metrics=... web=...": tests and scripts read the ports here.
+std::string Server::listening_line() const {
+  const auto at = [](const ListenAddress* address, std::optional<std::uint16_t> port) {
+    return address && port ? address->host + ":" + std::to_string(*port) : std::string("off");
+  };
+  const std::span<const StreamTransport> transports = stream_transports();
+  std::string line = "listening " + std::string(transports.front().name) + "=" + at(&config_.listen, tcp_port());
+  line += " udp=" + udp_address(config_, tcp_port()).host + ":" + std::to_string(udp_port_);
+  for (const StreamTransport& t : transports.subspan(1)) line += " " + std::string(t.name) + "=" + at(t.address(config_), port_of(t.name));
+  line += " metrics=" + at(config_.metrics_listen ? &*config_.metrics_listen : nullptr, metrics_port_);
+  line += " web=" + at(config_.web_listen ? &*config_.web_listen : nullptr, web_http_ ? std::optional(web_port_) : std::nullopt);
+  return line;
 }
 
 Server::~Server() {
@@ -166,17 +186,12 @@ Server::~Server() {
 }
 
 void Server::run() {
-  spdlog::info("listening tcp={} udp={} ws={} metrics={} web={}", config_.listen.host + ":" + std::to_string(tcp_port_),
-               udp_address(config_, tcp_port_).host + ":" + std::to_string(udp_port_),
-               ws_ ? config_.ws_listen->host + ":" + std::to_string(ws_port_) : "off",
-               metrics_port_ ? config_.metrics_listen->host + ":" + std::to_string(*metrics_port_) : "off",
-               web_http_ ? config_.web_listen->host + ":" + std::to_string(web_port_) : "off");
+  spdlog::info("{}", listening_line());
   tick_loop_.start();
   if (metrics_http_) metrics_http_->start();
   if (web_http_) web_http_->start();
   if (metrics_http_ || web_http_) http_thread_ = std::thread([this] { http_context_.run(); });
-  do_accept(tcp_);
-  if (ws_) do_accept(*ws_);
+  for (const auto& listener : listeners_) do_accept(*listener);
   udp_->start();
   context_.run();
   stop_http();
@@ -215,11 +230,9 @@ void Server::do_stop() {
   stopping_ = true;
   std::error_code ignored;
   signals_.cancel(ignored);
-  tcp_.acceptor.close(ignored);
-  tcp_.backoff.cancel();
-  if (ws_) {
-    ws_->acceptor.close(ignored);
-    ws_->backoff.cancel();
+  for (const auto& listener : listeners_) {
+    listener->acceptor.close(ignored);
+    listener->backoff.cancel();
   }
   udp_->close();
   if (metrics_http_) asio::post(http_context_, [this] { metrics_http_->stop(); });
@@ -241,15 +254,15 @@ void Server::do_accept(Listener& listener) {
     if (error == asio::error::no_descriptors || error.value() == ENFILE || error == asio::error::no_buffer_space ||
         error == asio::error::no_memory)
       return back_off_accept(listener);  // accepting again at once would spin on the same error
-    if (!error && descriptors_low(socket)) {
+    if (!error && descriptors_low(socket, listener.transport.name)) {
       std::error_code ignored;
       socket.close(ignored);
     } else if (!error && connection_handler_) {
-      connection_handler_(std::move(socket), listener.kind);
+      connection_handler_(std::move(socket), listener.transport);
     } else if (!error) {
       std::error_code ignored;
       const auto peer = socket.remote_endpoint(ignored);
-      log_reject(listener.kind == StreamKind::tcp ? "tcp" : "ws", peer_text(peer), "sessions_unavailable");
+      log_reject(listener.transport.name, peer_text(peer), "sessions_unavailable");
       metrics_.rejects("sessions_unavailable").inc();
       socket.close(ignored);
     }
@@ -259,16 +272,16 @@ void Server::do_accept(Listener& listener) {
 
 // Descriptors are handed out lowest first: one this high means at most the reserve is free. The
 // limit is read each time: an operator may raise it on a running server (prlimit).
-bool Server::descriptors_low(asio::ip::tcp::socket& socket) {
+bool Server::descriptors_low(asio::ip::tcp::socket& socket, std::string_view transport) {
   rlimit limit{};
   if (::getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return false;
   const long descriptor_limit = static_cast<long>(limit.rlim_cur);
   if (descriptor_limit == 0 || socket.native_handle() < descriptor_limit - kReserveDescriptors) return false;
   metrics_.rejects("descriptors_low").inc();
   log_limited(spdlog::level::warn, "descriptors_low", "",
-              "reject transport=tcp reason=descriptors_low: descriptor {} of {} (RLIMIT_NOFILE) would leave fewer than {} "
+              "reject transport={} reason=descriptors_low: descriptor {} of {} (RLIMIT_NOFILE) would leave fewer than {} "
               "free; raise the limit (ulimit -n) or lower --max-clients",
-              socket.native_handle(), descriptor_limit, kReserveDescriptors);
+              transport, socket.native_handle(), descriptor_limit, kReserveDescriptors);
   return true;
 }
 

@@ -13,6 +13,7 @@
 #include "http_server.hpp"
 #include "server_config.hpp"
 #include "server_metrics.hpp"
+#include "stream_transport.hpp"
 #include "tick_loop.hpp"
 #include "udp_cookie.hpp"
 #include "web_files.hpp"
@@ -34,6 +35,8 @@
 #include <optional>
 #include <vector>
 #include <span>
+#include <string>
+#include <string_view>
 
 namespace ocean::server {
 
@@ -49,9 +52,8 @@ class Server : public DatagramSocket {
  public:
   // All run on the network thread.
   using FrameSink = std::function<void(const std::shared_ptr<const TickFrames>&)>;
-  // Which listener accepted a connection: size-prefixed messages on TCP, or WebSocket messages.
-  enum class StreamKind { tcp, websocket };
-  using ConnectionHandler = std::function<void(asio::ip::tcp::socket, StreamKind)>;
+  // A connection accepted by the listener of `transport` (stream_transport.hpp).
+  using ConnectionHandler = std::function<void(asio::ip::tcp::socket, const StreamTransport& transport)>;
   using DatagramHandler = std::function<void(std::span<const std::uint8_t>, const asio::ip::udp::endpoint&)>;
   using StopHandler = std::function<void()>;
 
@@ -87,8 +89,10 @@ class Server : public DatagramSocket {
   const ServerConfig& config() const { return config_; }
   ServerMetrics& metrics() { return metrics_; }
   const CookieKey& cookie_key() const { return cookie_key_; }
-  std::uint16_t tcp_port() const { return tcp_port_; }
-  std::optional<std::uint16_t> ws_port() const { return ws_ ? std::optional(ws_port_) : std::nullopt; }
+  // The port a stream transport listens on; nullopt when the config leaves it off.
+  std::optional<std::uint16_t> port_of(std::string_view transport) const;
+  std::uint16_t tcp_port() const { return listeners_.front()->port; }
+  std::optional<std::uint16_t> ws_port() const { return port_of("ws"); }
   std::uint16_t udp_port() const { return udp_port_; }
   std::optional<std::uint16_t> metrics_port() const { return metrics_port_; }
   std::optional<std::uint16_t> web_port() const { return web_http_ ? std::optional(web_port_) : std::nullopt; }
@@ -97,16 +101,20 @@ class Server : public DatagramSocket {
  private:
   void do_await_stop();
   asio::ip::udp::socket open_udp_beside_tcp();
-  // A stream listener: its acceptor and the pause after running out of descriptors.
+  // A stream transport's listener: its acceptor and the pause after running out of descriptors.
   struct Listener {
-    Listener(asio::io_context& context, asio::ip::tcp::acceptor a, StreamKind k)
-        : acceptor(std::move(a)), backoff(context), kind(k) {}
+    Listener(asio::io_context& context, const StreamTransport& t, const ListenAddress& address)
+        : transport(t), acceptor(open_tcp_acceptor(context, address, std::string(t.role))), backoff(context),
+          port(acceptor.local_endpoint().port()) {}
+    const StreamTransport& transport;
     asio::ip::tcp::acceptor acceptor;
     asio::steady_timer backoff;
-    StreamKind kind;
+    std::uint16_t port;
   };
+  void open_listeners();
+  std::string listening_line() const;
   void do_accept(Listener& listener);
-  bool descriptors_low(asio::ip::tcp::socket& socket);
+  bool descriptors_low(asio::ip::tcp::socket& socket, std::string_view transport);
   void back_off_accept(Listener& listener);
   void on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& from);
   void do_stop();
@@ -126,16 +134,13 @@ class Server : public DatagramSocket {
   MetricsRegistry registry_;
   ServerMetrics metrics_;
   CookieKey cookie_key_;
-  Listener tcp_;
-  std::unique_ptr<Listener> ws_;  // --ws-listen
+  std::vector<std::unique_ptr<Listener>> listeners_;  // the primary (--listen) first
   std::unique_ptr<DatagramPort> udp_;  // the bound UDP socket, read outside asio's reactor
   std::unique_ptr<HttpServer> metrics_http_;
   // --web-listen: the browser viewer's files, on the probes' thread (served from memory).
   std::optional<WebFiles> web_files_;
   std::unique_ptr<HttpServer> web_http_;
   std::uint16_t web_port_ = 0;
-  std::uint16_t tcp_port_ = 0;
-  std::uint16_t ws_port_ = 0;
   std::uint16_t udp_port_ = 0;
   std::optional<std::uint16_t> metrics_port_;
 

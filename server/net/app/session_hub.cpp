@@ -1,7 +1,5 @@
 #include "session_hub.hpp"
 
-#include "tcp_link.hpp"
-#include "websocket_link.hpp"
 #include "server_log.hpp"
 #include "tick_clock.hpp"
 
@@ -38,7 +36,7 @@ SessionHub::SessionHub(Server& server, SessionCoreOptions options)
       connect_rate_(server.config().connect_rate_per_ip, std::max(10.0, 2.0 * server.config().connect_rate_per_ip)),
       connect_rate_rejects_(server.metrics().rejects("connect_rate")) {
   server_.set_connection_handler(
-      [this](asio::ip::tcp::socket socket, Server::StreamKind kind) { on_connection(std::move(socket), kind); });
+      [this](asio::ip::tcp::socket socket, const StreamTransport& transport) { on_connection(std::move(socket), transport); });
   server_.set_datagram_handler([this](std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& sender) {
     const Instant now = now_instant();
     core_.on_datagram(bytes, sender, now);
@@ -49,8 +47,7 @@ SessionHub::SessionHub(Server& server, SessionCoreOptions options)
   server_.set_stop_handler([this] { core_.stop(); });
 }
 
-void SessionHub::on_connection(asio::ip::tcp::socket socket, Server::StreamKind kind) {
-  const char* transport = kind == Server::StreamKind::tcp ? "tcp" : "ws";
+void SessionHub::on_connection(asio::ip::tcp::socket socket, const StreamTransport& transport) {
   {
     std::error_code error;
     const asio::ip::tcp::endpoint peer = socket.remote_endpoint(error);
@@ -59,7 +56,7 @@ void SessionHub::on_connection(asio::ip::tcp::socket socket, Server::StreamKind 
       // Closed before it costs a session: churn from one range stays cheap, and is not counted as
       // the cost of serving sessions (AdmissionBudget).
       connect_rate_rejects_.inc();
-      log_reject(transport, peer.address().to_string(), "connect_rate");
+      log_reject(transport.name, peer.address().to_string(), "connect_rate");
       socket.close(error);
       return;
     }
@@ -68,16 +65,13 @@ void SessionHub::on_connection(asio::ip::tcp::socket socket, Server::StreamKind 
     std::error_code ignored;
     socket.set_option(asio::socket_base::send_buffer_size(bytes), ignored);
   }
-  const std::size_t queue_bytes = core_.options().send_queue_bytes;
-  if (kind == Server::StreamKind::tcp) return core_.open(std::make_shared<TcpLink>(std::move(socket), queue_bytes), now_instant());
-  // A refused WebSocket handshake never reaches the core's Hello: it is counted here.
-  auto refused = [this](const std::string& reason, const std::string& peer) {
-    server_.metrics().rejects(reason).inc();
-    log_reject("ws", peer, reason);
-  };
-  core_.open(std::make_shared<WebSocketLink>(std::move(socket), queue_bytes, OriginPolicy{server_.config().ws_origins, server_.web_port().value_or(0)},
-                                             std::move(refused)),
-             now_instant());
+  // A connection refused before its Hello (a failed handshake) never reaches the core: counted here.
+  const TransportContext context{server_.config(), core_.options().send_queue_bytes, server_.web_port().value_or(0),
+                                 [this, name = transport.name](const std::string& reason, const std::string& peer) {
+                                   server_.metrics().rejects(reason).inc();
+                                   log_reject(name, peer, reason);
+                                 }};
+  core_.open(transport.open(std::move(socket), context), now_instant());
 }
 
 void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {

@@ -24,7 +24,7 @@ class SessionHub {
   SessionCore& core() { return core_; }  // observers before run(); the rest only after stop()
 
  private:
-  void on_connection(asio::ip::tcp::socket socket, Server::StreamKind kind);
+  void on_connection(asio::ip::tcp::socket socket, const StreamTransport& transport);
   void on_frames(const std::shared_ptr<const TickFrames>& frames);
   // Adds `busy_s` of network-thread work; once a second, updates the admission limit from the
   // thread's time running and waiting for a CPU (the kernel's figures; the timed work where the

@@ -4,6 +4,7 @@
 #include "message_builders.hpp"
 #include "message_readers.hpp"
 #include "server_log.hpp"
+#include "stream_transport.hpp"
 #include "verify_message.hpp"
 #include "scene_wire.hpp"
 #include "stream_wire.hpp"
@@ -320,8 +321,9 @@ void SessionCore::update_client_gauges() {
   for (const auto& stream : streams_) {
     // Every transport the server offers starts at 0, so that the last viewer of one leaving sets it
     // back to 0 (a transport missing here kept its last count for good).
-    std::map<std::string_view, double> by_transport{{"tcp", 0.0}, {"udp", 0.0}};
-    if (host_.config.ws_listen) by_transport["ws"] = 0.0;
+    std::map<std::string_view, double> by_transport{{"udp", 0.0}};
+    for (const StreamTransport& transport : stream_transports())
+      if (transport.address(host_.config)) by_transport[transport.name] = 0.0;
     for (const auto& session : sessions_)
       if (session->stream == stream.get()) by_transport[session->transport()] += 1.0;
     for (const auto& [transport, count] : by_transport) host_.metrics.clients(stream->profile().name, transport).set(count);

@@ -1,0 +1,34 @@
+// The stream transports, one row each: size-prefixed messages on TCP (--listen), and WebSocket
+// binary messages for browsers (--ws-listen).
+#include "stream_transport.hpp"
+
+#include "tcp_link.hpp"
+#include "websocket_link.hpp"
+
+namespace ocean::server {
+namespace {
+
+const StreamTransport kStreamTransports[] = {
+    {"tcp", "clients", [](const ServerConfig& c) -> const ListenAddress* { return &c.listen; },
+     [](asio::ip::tcp::socket socket, const TransportContext& context) -> std::shared_ptr<StreamLink> {
+       return std::make_shared<TcpLink>(std::move(socket), context.queue_bytes);
+     }},
+    {"ws", "WebSocket clients",
+     [](const ServerConfig& c) -> const ListenAddress* { return c.ws_listen ? &*c.ws_listen : nullptr; },
+     [](asio::ip::tcp::socket socket, const TransportContext& context) -> std::shared_ptr<StreamLink> {
+       return std::make_shared<WebSocketLink>(std::move(socket), context.queue_bytes,
+                                              OriginPolicy{context.config.ws_origins, context.web_port}, context.refused);
+     }},
+};
+
+}  // namespace
+
+std::span<const StreamTransport> stream_transports() { return kStreamTransports; }
+
+const StreamTransport* find_stream_transport(std::string_view name) {
+  for (const StreamTransport& t : kStreamTransports)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+}  // namespace ocean::server
