@@ -130,7 +130,7 @@ void SessionCore::serve(Session& session, Tick tick, double now_s,
     }
     // Keys are paced server-wide: a burst of them (mass join, many acks late at once) waits for
     // the next key ticks instead of swamping the thread and the links in one.
-    if (!take_key_budget(stream, tick, now_s)) {
+    if (!keying_.take_key(static_cast<double>(stream.key(tick).bytes), now_s)) {
       host_.metrics.frames_skipped_load.inc();
       return;
     }
@@ -187,14 +187,6 @@ bool SessionCore::tcp_frames_written(Session& session) const {
   if (session.tcp_frames_pending && session.link->written_through(session.tcp_frames_mark))
     session.tcp_frames_pending = false;
   return !session.tcp_frames_pending;
-}
-
-// The key budget is in bytes: a modeled mobile key (tens of bytes) costs the links and the
-// server next to nothing, a desktop key with coefficients thousands of times more.
-bool SessionCore::take_key_budget(ProfileStream& stream, Tick tick, double now_s) {
-  // A key larger than the burst waits for a full bucket rather than forever.
-  const double bytes = std::min(static_cast<double>(stream.key(tick).bytes), key_budget_.burst());
-  return key_budget_.try_take_leaving(bytes, 0.0, now_s);
 }
 
 void SessionCore::send_key(Session& session, ProfileStream& stream, Tick tick, double now_s) {
@@ -283,9 +275,8 @@ void SessionCore::publish_udp_tally() {
   udp_tally_ = {};
 }
 
-bool SessionCore::is_key_tick(const ProfileStream& stream, Tick tick) const {
-  const auto frames = std::max<long>(1, std::lround(options_.key_period_s * stream.profile().rate_hz));
-  return tick % (static_cast<Tick>(stream.tick_step()) * static_cast<Tick>(frames)) == 0;
+KeyedStream SessionCore::keyed(const ProfileStream& stream) {
+  return {stream.profile().grid, stream.tick_step(), stream.profile().rate_hz};
 }
 
 void SessionCore::forget_unwatched_streams() {
@@ -296,31 +287,10 @@ void SessionCore::forget_unwatched_streams() {
   }
 }
 
-// A root's deltas cost a synthesis of the profile's grid each frame: a profile's roots together
-// may cost root_samples_per_tick grid samples a tick (at least 2 roots). The cap the merges keep
-// is that, at most max_roots.
-std::size_t SessionCore::root_budget(const ProfileStream& stream) const {
-  const double grid = stream.profile().grid;
-  const double per_tick = grid * grid / static_cast<double>(stream.tick_step());
-  const double fits = std::floor(options_.root_samples_per_tick / per_tick);
-  return std::max<std::size_t>(2, static_cast<std::size_t>(std::clamp(fits, 0.0, 1e6)));
-}
-
-std::size_t SessionCore::root_cap(const ProfileStream& stream) const {
-  return std::min(options_.max_roots, root_budget(stream));
-}
-
-// Sessions keyed at different ticks hold different states forever (a key is lossy), so every
-// root costs its own encodes each tick. Beyond the cap, the smallest roots old enough are
-// keyed again onto the root this key tick starts (the joiners' root, which it starts anyway),
-// as many as it takes to be within the cap and as the key budget pays for now, after the keys
-// of the sessions waiting for one: merged sessions must all take this tick's key, or they would
-// only scatter into new roots. The largest root is never merged (re-keying most clients to
-// absorb a few would be a key storm), a session pays at most one extra key per
-// root_merge_age_s, and never a frame. Where one more root would exceed the profile's root
-// budget (desktop), the joiners wait for a key tick with room (a joiner waits; the sessions
-// served keep their tick time); cheap roots (mobile) let them in and the merges catch up.
+// Applies the keying policy's plan for a profile's roots on its key tick: the sessions of the
+// roots it merges take this tick's key. False when the joiners must wait for a key tick with room.
 bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
+  if (!stream.can_key(tick)) return true;
   std::map<Tick, std::vector<Session*>> roots;
   std::size_t waiting = 0;  // sessions that need a key to show anything: they start a root now
   for (const auto& session : sessions_) {
@@ -328,50 +298,18 @@ bool SessionCore::limit_roots(ProfileStream& stream, Tick tick, double now_s) {
     if (session->need_key || (session->key_requested && key_due(*session, now_s))) ++waiting;
     else if (const auto root = session->baselines.root_tick()) roots[*root].push_back(session.get());
   }
-  // Between joins the roots are consolidated to two (the largest and the one merged onto this
-  // key), so a quiet server pays two encodes a tick, not the cap's.
-  const std::size_t cap = waiting > 0 ? root_cap(stream) : std::min<std::size_t>(2, root_cap(stream));
-  // Joiners wait only where one more root would cost more than the budget (desktop beyond 2);
-  // cheap roots (mobile: 32 fit) let them in at once, and the merges catch up.
-  const std::size_t budget = root_budget(stream);
-  const auto room = [&](std::size_t roots_after) { return waiting == 0 || roots_after <= budget; };
-  if (roots.size() + (waiting > 0 ? 1 : 0) <= cap || !stream.can_key(tick)) return true;
-  Tick largest = 0;
-  std::size_t largest_size = 0;
-  for (const auto& [root, members] : roots)
-    if (members.size() > largest_size) {
-      largest = root;
-      largest_size = members.size();
-    }
-  const double min_age_ticks = options_.root_merge_age_s * host_.config.tick_rate_hz;
-  std::vector<std::pair<std::size_t, Tick>> old;  // (sessions, root)
-  for (const auto& [root, members] : roots)
-    if (root != largest && static_cast<double>(tick - root) >= min_age_ticks) old.emplace_back(members.size(), root);
-  // After merging m roots there are roots - m + 1. Without joiners, merging one lowers nothing.
-  const std::size_t least = waiting > 0 ? 1 : 2;
-  std::size_t merge = std::min(old.size(), roots.size() + 1 - cap);
-  const bool enter_anyway = room(roots.size() + 1);  // the joiners start their root, merge or not
-  if (merge < least) return enter_anyway;
-  std::sort(old.begin(), old.end());
-  // The budget pays the waiting joiners' keys first, unless they wait for this merge: then it
-  // goes first and must leave one joiner's key.
-  const double key_bytes = static_cast<double>(stream.key(tick).bytes);
-  const double reserve = static_cast<double>(enter_anyway ? waiting : 1) * key_bytes;
-  for (; merge >= least; --merge) {
-    std::size_t sessions = 0;
-    for (std::size_t i = 0; i < merge; ++i) sessions += old[i].first;
-    if (key_budget_.try_take_leaving(static_cast<double>(sessions) * key_bytes, reserve, now_s)) break;
+  std::map<Tick, std::size_t> sizes;
+  for (const auto& [root, members] : roots) sizes[root] = members.size();
+  const auto key_bytes = [&] { return static_cast<double>(stream.key(tick).bytes); };
+  const RootPlan plan = keying_.plan_roots(keyed(stream), sizes, waiting, tick, key_bytes, now_s);
+  for (const Tick root : plan.merge)
+    for (Session* session : roots[root]) session->rekey = true;
+  if (!plan.merge.empty()) {
+    host_.metrics.root_merges.inc(static_cast<double>(plan.merge.size()));
+    spdlog::debug("tick {} profile {}: {} key roots and {} joining; the {} smallest old enough are keyed again", tick,
+                  stream.profile().name, roots.size(), waiting, plan.merge.size());
   }
-  // A root whose keys the budget's burst can never hold (large explicit keys, a small budget)
-  // cannot be merged: then the joiners start a root beyond the cap rather than wait for good.
-  if (merge < least)
-    return enter_anyway || static_cast<double>(old.front().first) * key_bytes + reserve > key_budget_.burst();
-  for (std::size_t i = 0; i < merge; ++i)
-    for (Session* session : roots[old[i].second]) session->rekey = true;
-  host_.metrics.root_merges.inc(static_cast<double>(merge));
-  spdlog::debug("tick {} profile {}: {} key roots and {} joining; the {} smallest old enough are keyed again", tick,
-                stream.profile().name, roots.size(), waiting, merge);
-  return room(roots.size() + 1 - merge);
+  return plan.enter;
 }
 
 void SessionCore::sweep_timeouts(double now_s) {

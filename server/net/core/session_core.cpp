@@ -26,7 +26,9 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
       admission_(AdmissionLimits{host_.config.max_handshakes, host_.config.max_handshakes_per_ip,
                                  host_.config.max_connections_per_ip}),
       tick_(start_tick),
-      key_budget_(options.key_bytes_per_s, std::max(1.0, 0.5 * options.key_bytes_per_s), 0.0),
+      keying_(KeyingOptions{options.key_period_s, options.max_roots, options.root_samples_per_tick, options.root_merge_age_s,
+                            options.key_bytes_per_s},
+              host_.config.tick_rate_hz, 0.0),
       token_checks_(options.token_checks_per_s, options.token_check_burst, 0.0),
       scene_changes_(options.scene_changes_per_s, options.scene_change_burst, 0.0) {
   for (const std::string& name : host_.config.profiles) {

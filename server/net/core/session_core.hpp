@@ -10,6 +10,7 @@
 #include "tick_frames.hpp"
 #include "admission.hpp"
 #include "bundle_key.hpp"
+#include "keying_policy.hpp"
 #include "link.hpp"
 #include "message_types.hpp"
 #include "profile_stream.hpp"
@@ -41,7 +42,7 @@ struct SessionCoreOptions {
   std::int64_t cookie_lifetime_ms = 3'600'000; // a UdpHello may (re)prove the address this long
   int socket_send_buffer_bytes = 0;            // SO_SNDBUF of client sockets; 0 = the OS default
   // Sharing (README-server.md "Fan-out"): baselines on a grid of this many frames; keys only on
-  // a grid of this period; beyond its root cap (root_cap()), the smallest roots of a profile older
+  // a grid of this period; beyond its root cap (KeyingPolicy::root_cap), the smallest roots of a profile older
   // than root_merge_age_s are keyed again onto the current one. The cap is max_roots, or fewer for
   // a profile whose roots together would synthesize more than root_samples_per_tick grid samples
   // a tick (a desktop root, 256 x 256, costs about 6 ms a tick), but never fewer than 2; and while
@@ -158,7 +159,6 @@ class SessionCore {
 
   void serve(Session& session, Tick tick, double now_s, std::vector<std::pair<const void*, codec::StateId>>& bases);
   void deliver(Session& session, Tick tick, const SharedFrame& frame, codec::StateId base, double now_s);
-  bool take_key_budget(ProfileStream& stream, Tick tick, double now_s);
   void send_key(Session& session, ProfileStream& stream, Tick tick, double now_s);
   bool send_udp_frame(Session& session, Tick tick, const SharedFrame& frame, double now_s);
   void send_tcp_frame(Session& session, const SharedFrame& frame);
@@ -167,11 +167,10 @@ class SessionCore {
   void publish_udp_tally();
   // Merges key roots beyond the cap; false when a new root would still exceed it (joiners wait).
   bool limit_roots(ProfileStream& stream, Tick tick, double now_s);
-  std::size_t root_cap(const ProfileStream& stream) const;
-  std::size_t root_budget(const ProfileStream& stream) const;
   void forget_unwatched_streams();  // once a second
   bool second_tick() const { return tick_ % static_cast<Tick>(host_.config.tick_rate_hz) == 0; }  // the first of each second
-  bool is_key_tick(const ProfileStream& stream, Tick tick) const;
+  bool is_key_tick(const ProfileStream& stream, Tick tick) const { return keying_.is_key_tick(keyed(stream), tick); }
+  static KeyedStream keyed(const ProfileStream& stream);
   // A key interval has passed since the session's last key: a requested key may go out.
   bool key_due(const Session& session, double now_s) const { return now_s - session.last_key_s >= options_.key_interval_s; }
   void sweep_timeouts(double now_s);
@@ -216,7 +215,7 @@ class SessionCore {
   std::size_t peak_closed_queued_bytes_ = 0;
   std::size_t session_limit_ = std::numeric_limits<std::size_t>::max();
   std::uint64_t rotate_from_ = 0;  // where this tick's walk over the sessions starts
-  TokenBucket key_budget_;
+  KeyingPolicy keying_;
   struct PendingChange {
     std::weak_ptr<Session> session;
     protocol::ParamChange change;
