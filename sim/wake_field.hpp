@@ -1,0 +1,78 @@
+// WakeField: the water's linear response to hulls moving over it - a vessel's Kelvin wake, a
+// dropped object's rings - on a square region of the world of its own (not the ocean's repeating
+// patch, so a wake is cast once, not once per patch). Each Fourier mode k of the region is a damped
+// oscillator at the scene's w(k) (finite depth included), forced by the hulls' surface pressure:
+//   eta'' + 2 gamma eta' + w^2 (eta + p / (rho g)) = 0,
+// so a hull at rest sits in its hydrostatic hollow and a moving one radiates exactly the waves the
+// dispersion relation allows: the Kelvin wedge, the transverse wavelength 2 pi U^2 / g, rings at
+// the group velocity, all without tuning. Pressure is held over a step at its value mid-step and
+// the oscillator is advanced exactly, so a step costs one rotation per mode. gamma = decay +
+// 2 nu k^2: a wake fades, so the sea at a tick depends on a bounded history of poses.
+// Pure: time steps are arguments; the same poses give the same bits in any process.
+#pragma once
+
+#include <complex>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace ocean::sim {
+
+// A hull as the water feels it: a Gaussian pressure patch of the hull's displacement, standard
+// deviations a quarter of the length and beam, peak pressure rho g draft.
+struct Hull {
+  double length_m = 40.0;
+  double beam_m = 8.0;
+  double draft_m = 2.0;
+};
+
+// Where a hull is at one instant, in the region's metres (x east, z north), heading in radians
+// from +x towards +z.
+struct HullPose {
+  Hull hull;
+  double x_m = 0.0;
+  double z_m = 0.0;
+  double heading_rad = 0.0;
+};
+
+struct WakeRegion {
+  double size_m = 1024.0;   // the square's side
+  int n = 256;              // modes (and samples) per side, a power of two
+  double gravity_mps2 = 9.81;
+  double depth_m = 1e300;   // deep water: any depth beyond half the longest wave
+  double decay_per_s = 0.02;  // amplitude decay of every wave (about 50 s)
+  double viscosity_m2ps = 1e-6;  // kinematic: short waves fade faster (2 nu k^2)
+};
+
+class WakeField {
+ public:
+  explicit WakeField(const WakeRegion& region);
+
+  // Advances by dt seconds with the hulls at `mid` (their poses at the middle of the step).
+  void step(double dt_s, std::span<const HullPose> mid);
+
+  // Heights (m) at the n x n sample points x = i size/n, z = j size/n, row j = z, column i = x.
+  std::vector<double> heights() const;
+  // The height at one point (a sum over the modes: for checks and buoyancy, not for frames).
+  double height_at(double x_m, double z_m) const;
+
+  const WakeRegion& region() const { return region_; }
+  double time_s() const { return time_s_; }
+
+ private:
+  void prepare_step(double dt_s);
+  void add_pressure(const HullPose& pose, std::vector<std::complex<double>>& pressure) const;
+
+  WakeRegion region_;
+  std::vector<double> kx_, kz_;  // per column / row, rad/m (FFT order)
+  std::vector<double> omega_, gamma_;
+  // Per mode: eta and eta' (complex Fourier coefficients of the region's height).
+  std::vector<std::complex<double>> eta_, velocity_;
+  std::vector<std::complex<double>> pressure_;  // scratch: p / (rho g) per mode, in metres
+  // The exact propagator of each mode for the last dt (recomputed when dt changes).
+  double step_dt_ = 0.0;
+  std::vector<double> c_ee_, c_ev_, c_ve_, c_vv_;
+  double time_s_ = 0.0;
+};
+
+}  // namespace ocean::sim

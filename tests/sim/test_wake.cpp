@@ -1,0 +1,138 @@
+// The wake's physics from its own heights: the Kelvin wedge, the transverse wavelength along the
+// track, and the decay once a vessel is gone - none of it tuned into the model.
+#include "wake_field.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <complex>
+#include <numbers>
+#include <vector>
+
+using namespace ocean::sim;
+
+namespace {
+
+using std::numbers::pi;
+constexpr double kG = 9.81;
+
+WakeRegion test_region() {
+  WakeRegion r;
+  r.size_m = 1024.0;
+  r.n = 256;  // 4 m samples
+  return r;
+}
+
+// A hull that starts at (x0, 512) and runs along +x at U, its pressure eased in over 20 s so
+// that the start radiates little; returns the field after `seconds` and the hull's last x.
+struct Run {
+  WakeField field;
+  double x_end;
+};
+Run run_straight(double speed, double seconds, double x0 = 100.0) {
+  Run run{WakeField(test_region()), x0};
+  const double dt = 0.1;
+  Hull hull{20.0, 8.0, 1.5};
+  for (int step = 0; step * dt < seconds; ++step) {
+    const double t_mid = (step + 0.5) * dt;
+    const double ease = t_mid < 20.0 ? std::pow(std::sin(0.5 * pi * t_mid / 20.0), 2) : 1.0;
+    HullPose pose{Hull{hull.length_m, hull.beam_m, hull.draft_m * ease}, x0 + speed * t_mid, 512.0, 0.0};
+    run.field.step(dt, std::span<const HullPose>(&pose, 1));
+    run.x_end = x0 + speed * (step + 1) * dt;
+  }
+  return run;
+}
+
+// The dominant wavenumber of samples spaced dx (Hann window, scanned finely).
+double dominant_wavenumber(const std::vector<double>& samples, double dx, double k_lo, double k_hi) {
+  const std::size_t n = samples.size();
+  double best_k = 0.0, best = -1.0;
+  for (double k = k_lo; k <= k_hi; k += 1e-4 * (k_hi - k_lo)) {
+    std::complex<double> sum{};
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = 0.5 - 0.5 * std::cos(2.0 * pi * static_cast<double>(i) / static_cast<double>(n - 1));
+      sum += w * samples[i] * std::complex<double>(std::cos(k * dx * i), -std::sin(k * dx * i));
+    }
+    if (std::abs(sum) > best) best = std::abs(sum), best_k = k;
+  }
+  return best_k;
+}
+
+}  // namespace
+
+TEST_CASE("a hull at rest sits in its hydrostatic hollow, and the field stays real") {
+  // A beam the 4 m samples resolve (a narrower hull's hollow is the band-limited one).
+  const HullPose pose{Hull{40.0, 16.0, 2.0}, 512.0, 512.0, 0.3};
+  // Strongly damped so the start-up oscillation dies: the steady state is the hollow itself.
+  WakeRegion still = test_region();
+  still.decay_per_s = 2.0;
+  WakeField damped(still);
+  for (int i = 0; i < 200; ++i) damped.step(0.05, std::span<const HullPose>(&pose, 1));
+  CHECK(damped.height_at(512.0, 512.0) == Approx(-2.0).epsilon(0.05));  // the draft, minus the region's mean
+  CHECK(std::fabs(damped.height_at(700.0, 512.0)) < 0.02);
+  const std::vector<double> h = damped.heights();
+  CHECK(h[128 * 256 + 128] == Approx(damped.height_at(512.0, 512.0)).margin(1e-9));
+}
+
+TEST_CASE("the transverse wavelength along the track is 2 pi U^2 / g") {
+  for (double speed : {5.0, 7.0, 9.0}) {
+    const Run run = run_straight(speed, 90.0, 50.0);
+    const std::vector<double> h = run.field.heights();
+    // Behind the hull along its track (row z = 512), from 2 to 6 wavelengths back: clear of the
+    // hull's near field and of where it started.
+    const double wavelength = 2.0 * pi * speed * speed / kG;
+    std::vector<double> track;
+    for (double back = 2.0 * wavelength; back < 6.0 * wavelength; back += 4.0) {
+      const int i = static_cast<int>(std::lround((run.x_end - back) / 4.0));
+      track.push_back(h[128 * 256 + i]);
+    }
+    const double k0 = kG / (speed * speed);
+    const double k = dominant_wavenumber(track, 4.0, 0.6 * k0, 1.4 * k0);
+    CAPTURE(speed, wavelength, 2.0 * pi / k);
+    CHECK(k == Approx(k0).epsilon(0.02));
+  }
+}
+
+TEST_CASE("the wake's energy lies inside the Kelvin wedge") {
+  const double speed = 7.0;
+  const Run run = run_straight(speed, 90.0);
+  const std::vector<double> h = run.field.heights();
+  double inside = 0.0, outside = 0.0;
+  for (int j = 0; j < 256; ++j)
+    for (int i = 0; i < 256; ++i) {
+      const double x = 4.0 * i, z = 4.0 * j;
+      const double back = run.x_end - x, side = std::fabs(z - 512.0);
+      const double r = std::hypot(back, side);
+      if (back <= 0.0 || r < 80.0 || r > 300.0 || x < 300.0) continue;  // near field and the start's rings out
+      const double angle = std::atan2(side, back) * 180.0 / pi;
+      (angle > 27.0 ? outside : inside) += h[static_cast<std::size_t>(j) * 256 + i] * h[static_cast<std::size_t>(j) * 256 + i];
+    }
+  CAPTURE(inside, outside);
+  REQUIRE(inside > 0.0);
+  std::printf("wake energy beyond 27 degrees of the track: %.1f %%\n", 100.0 * outside / (inside + outside));
+  CHECK(outside / (inside + outside) < 0.15);
+}
+
+TEST_CASE("once the hull is gone its wake fades as the damping says") {
+  Run run = run_straight(7.0, 40.0);
+  auto energy = [&] {
+    // Sum of squared heights over a wave period is proportional to the wave energy.
+    double e = 0.0;
+    for (int s = 0; s < 20; ++s) {
+      for (double v : run.field.heights()) e += v * v;
+      run.field.step(0.1, {});
+    }
+    return e;
+  };
+  const double e0 = energy();  // t 40..42
+  for (int s = 0; s < 80; ++s) run.field.step(0.1, {});  // to t = 50
+  const double e1 = energy();  // t 50..52
+  const double gamma = test_region().decay_per_s;  // viscosity adds ~1e-7 at these wavelengths
+  CHECK(e1 / e0 == Approx(std::exp(-2.0 * gamma * 10.0)).epsilon(0.03));
+}
+
+TEST_CASE("the same poses give the same wake bit for bit") {
+  const Run a = run_straight(6.0, 5.0), b = run_straight(6.0, 5.0);
+  CHECK(a.field.heights() == b.field.heights());
+}
