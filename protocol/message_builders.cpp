@@ -63,17 +63,18 @@ Offset<wire::StreamParams> stream_of(FlatBufferBuilder& fbb, const StreamParams&
 
 Offset<wire::SceneParams> scene_of(FlatBufferBuilder& fbb, const SceneParams& s) {
   wire::SceneParamsBuilder b(fbb);
-  b.add_size_x(s.size_x);
-  b.add_size_z(s.size_z);
+  // 16 bits hold every valid size; the enums have the model's numbers (protocol/scene_wire checks).
+  b.add_size_x(static_cast<std::uint16_t>(s.size_x));
+  b.add_size_z(static_cast<std::uint16_t>(s.size_z));
   b.add_patch_x_m(s.patch_x_m);
   b.add_patch_z_m(s.patch_z_m);
-  b.add_spectrum(s.spectrum);
-  b.add_spreading(s.spreading);
+  b.add_spectrum(static_cast<wire::Spectrum>(s.spectrum));
+  b.add_spreading(static_cast<wire::Spreading>(s.spreading));
   b.add_wind_speed_mps(s.wind_speed_mps);
   b.add_wind_dir_deg(s.wind_dir_deg);
   b.add_fetch_m(s.fetch_m);
   b.add_amplitude(s.amplitude);
-  b.add_depth_m(s.depth_m);
+  b.add_depth_m(model::wire_depth(s.depth_m));
   b.add_small_wave_m(s.small_wave_m);
   b.add_choppiness(s.choppiness);
   b.add_gravity_mps2(s.gravity_mps2);

@@ -24,7 +24,7 @@ StreamParams read(const wire::StreamParams& s) {
   out.patch_x_m = s.patch_x_m();
   out.patch_z_m = s.patch_z_m();
   out.gravity_mps2 = s.gravity_mps2();
-  out.depth_m = s.depth_m();
+  out.depth_m = s.depth_m();  // the codec's convention too: 0 = deep
   out.rate_hz = s.rate_hz();
   out.height_step_m = s.height_step_m();
   out.slope_step = s.slope_step();
@@ -43,13 +43,13 @@ SceneParams read(const wire::SceneParams& s) {
   out.size_z = s.size_z();
   out.patch_x_m = s.patch_x_m();
   out.patch_z_m = s.patch_z_m();
-  out.spectrum = s.spectrum();
-  out.spreading = s.spreading();
+  out.spectrum = static_cast<model::SpectrumKind>(s.spectrum());
+  out.spreading = static_cast<model::SpreadingKind>(s.spreading());
   out.wind_speed_mps = s.wind_speed_mps();
   out.wind_dir_deg = s.wind_dir_deg();
   out.fetch_m = s.fetch_m();
   out.amplitude = s.amplitude();
-  out.depth_m = s.depth_m();
+  out.depth_m = model::scene_depth(s.depth_m());
   out.small_wave_m = s.small_wave_m();
   out.choppiness = s.choppiness();
   out.gravity_mps2 = s.gravity_mps2();

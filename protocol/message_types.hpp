@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "scene_params.hpp"
 #include "tick.hpp"
 #include "ocean_generated.h"
 #include "wire_reason.hpp"
@@ -36,25 +37,9 @@ struct StreamParams {
   bool operator==(const StreamParams&) const = default;
 };
 
-// Mirrors model/scene_params.hpp, except depth_m: 0 here means deep water (infinity there).
-struct SceneParams {
-  std::uint16_t size_x = 256;
-  std::uint16_t size_z = 256;
-  double patch_x_m = 256.0;
-  double patch_z_m = 256.0;
-  wire::Spectrum spectrum = wire::Spectrum::phillips;
-  wire::Spreading spreading = wire::Spreading::donelan_banner;
-  double wind_speed_mps = 10.0;
-  double wind_dir_deg = 0.0;
-  double fetch_m = 100000.0;
-  double amplitude = 1.0;
-  double depth_m = 0.0;  // 0 = deep water
-  double small_wave_m = 0.0;
-  double choppiness = 0.0;
-  double gravity_mps2 = 9.81;
-  std::uint64_t seed = 1;
-  bool operator==(const SceneParams&) const = default;
-};
+// The scene as it is (model/scene_params.hpp): the wire's own conventions (deep water 0, the
+// schema's enums, 16-bit sizes) are the builders' and readers' business. `band` is not carried.
+using SceneParams = model::SceneParams;
 
 struct Hello {
   std::uint8_t profile_id = 0;  // 0 = let the server choose

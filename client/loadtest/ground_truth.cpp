@@ -4,7 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene_wire.hpp"
 
 namespace ocean::loadtest {
 
@@ -31,7 +30,7 @@ void GroundTruth::set_scene(Tick effective_tick, const protocol::SceneParams& sc
 }
 
 GroundTruth::SceneEntry GroundTruth::entry(Tick effective_tick, const protocol::SceneParams& scene) const {
-  const model::SceneParams params = scene_wire::to_scene(scene);
+  const model::SceneParams params = scene;
   return SceneEntry{effective_tick, scene, std::make_unique<sim::Ocean>(params),
                     cascades_.empty() ? nullptr : std::make_unique<sim::CascadeSet>(params, cascades_)};
 }

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
@@ -204,7 +203,7 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
 
 void ClientSession::add_scene(Tick from, std::uint32_t serial, const protocol::SceneParams& scene) {
   try {
-    decoder_->add_scene(from, static_cast<std::uint8_t>(serial), scene_wire::to_scene(scene));
+    decoder_->add_scene(from, static_cast<std::uint8_t>(serial), scene);
   } catch (const std::invalid_argument& e) {
     close(std::string("the server's scene does not fit the stream: ") + e.what());
   }

@@ -1,7 +1,7 @@
-// The scene (model::SceneParams) as the wire carries it (Welcome, SceneUpdate, ParamChange), both
-// directions, in one place: the server, every client's scene model, the load test and ocean-admin
-// go through it. The two differ in deep water (model/scene_params.hpp: infinity in a scene, 0 on
-// the wire) and in the enums' types.
+// The scene's enums as the schema names them (ParamChange.spectrum), both directions. The
+// messages carry the scene itself (protocol::SceneParams is model::SceneParams; the builders and
+// readers write the wire's conventions), and this file's static_asserts hold the model's enums
+// and the schema's to the same numbers.
 #pragma once
 
 #include "message_types.hpp"
@@ -13,9 +13,5 @@ wire::Spectrum to_wire(model::SpectrumKind kind);
 wire::Spreading to_wire(model::SpreadingKind kind);
 model::SpectrumKind to_scene(wire::Spectrum spectrum);
 model::SpreadingKind to_scene(wire::Spreading spreading);
-
-protocol::SceneParams to_wire(const model::SceneParams& scene);
-// Not validated: a scene off the wire goes through model::validate (or what builds on it) next.
-model::SceneParams to_scene(const protocol::SceneParams& scene);
 
 }  // namespace ocean::scene_wire

@@ -8,7 +8,6 @@
 #include "frame_records.hpp"
 #include "profile_stream.hpp"
 #include "stream_wire.hpp"
-#include "scene_wire.hpp"
 #include "cascade_set.hpp"
 #include "ocean.hpp"
 #include "profile.hpp"
@@ -245,7 +244,7 @@ int run_codec(int argc, char** argv) {
       else
         ocean.evaluate_band(t, p->grid, p->grid, out, sim::FrameRequest{true, p->choppy});
     };
-    const model::SceneParams model = scene_wire::to_scene(scene_wire::to_wire(scene));
+    const model::SceneParams model = scene;
     const int n = p->grid;
     const StreamConfig config =
         StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, model::wire_depth(scene.depth_m));

@@ -12,7 +12,6 @@
 #include "ack_window.hpp"
 #include "encoder.hpp"
 #include "frame_records.hpp"
-#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
@@ -44,7 +43,7 @@ class FakeServer {
         truth_(profile_.grid, 64.0, options.noise_m) {
     period_ = 1.0 / profile_.rate_hz;
     truth_.at(0, period_);
-    encoder_.set_scene(0, 0, scene_wire::to_scene(welcome().scene));
+    encoder_.set_scene(0, 0, welcome().scene);
     encoder_.add_truth(0, truth_.view());
   }
 

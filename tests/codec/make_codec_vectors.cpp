@@ -22,7 +22,6 @@
 #include "message_builders.hpp"
 #include "scene_model.hpp"
 #include "state_hash.hpp"
-#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 #include "wire_limits.hpp"
 
@@ -52,13 +51,13 @@ protocol::SceneParams base_scene() {
   s.size_z = 64;
   s.patch_x_m = 64.0;
   s.patch_z_m = 64.0;
-  s.spectrum = wire::Spectrum::jonswap;
-  s.spreading = wire::Spreading::donelan_banner;
+  s.spectrum = model::SpectrumKind::jonswap;
+  s.spreading = model::SpreadingKind::donelan_banner;
   s.wind_speed_mps = 8.0;
   s.wind_dir_deg = 30.0;
   s.fetch_m = 100000.0;
   s.amplitude = 1.0;
-  s.depth_m = 0.0;
+  s.depth_m = std::numeric_limits<double>::infinity();  // deep water (0 on the wire)
   s.small_wave_m = 0.0;
   s.choppiness = 0.0;
   s.gravity_mps2 = 9.81;
@@ -78,7 +77,7 @@ protocol::SceneParams next_scene() {
 // mobile_choppy's sea: a JONSWAP storm of 15 m/s at choppiness 1.3 (its Jacobian falls to about 0.43).
 protocol::SceneParams choppy_scene() {
   protocol::SceneParams s = base_scene();
-  s.spreading = wire::Spreading::cos2s;
+  s.spreading = model::SpreadingKind::cos2s;
   s.wind_speed_mps = 15.0;
   s.wind_dir_deg = -20.0;
   s.choppiness = 1.3;
@@ -91,7 +90,7 @@ protocol::Welcome welcome_of(const protocol::SceneParams& scene, std::uint8_t pr
   const Profile& profile = *find_profile(profile_id);
   protocol::Welcome w;
   w.session_id = 0x1122334455667788ull;
-  w.stream = wire_stream(StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, scene.depth_m));
+  w.stream = wire_stream(StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, model::wire_depth(scene.depth_m)));
   w.scene = scene;
   w.offered_profiles = std::move(offered);
   w.epoch_unix_ms = 1'400'000'000'000;
@@ -134,8 +133,8 @@ struct Noise {
 TruthView model_truth(const StreamConfig& stream, const protocol::SceneParams& scene, Tick tick,
                       const std::vector<Push>& pushed, ReconstructedFrame& storage, const std::vector<Noise>& noise = {}) {
   StreamConfig with_depth = stream;
-  with_depth.depth_m = scene.depth_m;
-  const SceneModel model(with_depth, scene_wire::to_scene(scene));
+  with_depth.depth_m = model::wire_depth(scene.depth_m);
+  const SceneModel model(with_depth, scene);
   ModalState state;
   model.state_at(tick, state);
   ModalModel modal(with_depth);
@@ -163,7 +162,7 @@ std::string scene_fields(const protocol::SceneParams& s) {
          " spectrum=" + std::to_string(static_cast<int>(s.spectrum)) +
          " spreading=" + std::to_string(static_cast<int>(s.spreading)) +
          " wind_speed_mps=" + text_of(s.wind_speed_mps) + " wind_dir_deg=" + text_of(s.wind_dir_deg) +
-         " fetch_m=" + text_of(s.fetch_m) + " amplitude=" + text_of(s.amplitude) + " depth_m=" + text_of(s.depth_m) +
+         " fetch_m=" + text_of(s.fetch_m) + " amplitude=" + text_of(s.amplitude) + " depth_m=" + text_of(model::wire_depth(s.depth_m)) +
          " small_wave_m=" + text_of(s.small_wave_m) + " choppiness=" + text_of(s.choppiness) +
          " gravity_mps2=" + text_of(s.gravity_mps2) + " seed=" + std::to_string(s.seed);
 }
@@ -198,7 +197,7 @@ class Writer {
     text_ << "scene from=0 serial=" << w.scene_serial << " tag=" << (w.scene_serial % 256) << " " << scene_fields(w.scene)
           << "\n";
     decoder_ = std::make_unique<Decoder>(c, client_decoder_options(w));
-    decoder_->add_scene(0, static_cast<std::uint8_t>(w.scene_serial), scene_wire::to_scene(w.scene));
+    decoder_->add_scene(0, static_cast<std::uint8_t>(w.scene_serial), w.scene);
     config_ = c;
     positions_.assign(std::begin(kSamplePositions), std::end(kSamplePositions));
     const std::vector<StreamConfig::Lattice> lattices = c.lattices();
@@ -214,7 +213,7 @@ class Writer {
     text_ << "scene_update hex=" << hex(protocol::encode(u)) << "\n";
     text_ << "scene from=" << u.effective_tick << " serial=" << u.serial << " tag=" << (u.serial % 256) << " "
           << scene_fields(u.scene) << "\n";
-    decoder_->add_scene(u.effective_tick, static_cast<std::uint8_t>(u.serial), scene_wire::to_scene(u.scene));
+    decoder_->add_scene(u.effective_tick, static_cast<std::uint8_t>(u.serial), u.scene);
   }
 
   // The scene model's state of `tick` (before any correction), for checking a scene model alone.
@@ -338,8 +337,8 @@ void lite_modeled(Writer& w) {
   const StreamConfig& c = w.config();
   const Tick change = kKeyTick + 9;
   Encoder enc(c, server_encoder_options());
-  enc.set_scene(0, 0, scene_wire::to_scene(scene0));
-  enc.set_scene(change, 1, scene_wire::to_scene(scene1));
+  enc.set_scene(0, 0, scene0);
+  enc.set_scene(change, 1, scene1);
   const protocol::SceneUpdate update{0, change, scene1, 1};
 
   ReconstructedFrame truth;
@@ -412,7 +411,7 @@ void lite_explicit(Writer& w) {
   const protocol::Welcome welcome = welcome_of(scene0);
   const StreamConfig c = decoder_config(welcome);
   Encoder enc(c, server_encoder_options());
-  enc.set_scene(0, 0, scene_wire::to_scene(scene0));
+  enc.set_scene(0, 0, scene0);
   ReconstructedFrame truth;
   for (Tick t = kKeyTick - 1; t <= kKeyTick + 4; ++t) enc.add_truth(t, model_truth(c, other, t, {}, truth));
   const auto key = enc.encode_key(kKeyTick);
@@ -448,8 +447,8 @@ void mobile_choppy(Writer& w) {
   REQUIRE(c.choppy);
   REQUIRE(c.grid == 64);
   Encoder enc(c, server_encoder_options());
-  enc.set_scene(0, 0, scene_wire::to_scene(scene0));
-  enc.set_scene(change, 1, scene_wire::to_scene(scene1));
+  enc.set_scene(0, 0, scene0);
+  enc.set_scene(change, 1, scene1);
   const protocol::SceneUpdate update{0, change, scene1, 1};
 
   // K+3's truth is noisy in disp_x and disp_xz (about half the samples each, 0.6 to 7.4 steps):
@@ -518,7 +517,7 @@ void desktop_cascaded(Writer& w) {
   protocol::SceneParams scene = base_scene();
   scene.size_x = scene.size_z = 256;
   scene.patch_x_m = scene.patch_z_m = 256.0;
-  scene.spreading = wire::Spreading::hasselmann;
+  scene.spreading = model::SpreadingKind::hasselmann;
   scene.wind_speed_mps = 14.0;
   scene.wind_dir_deg = 120.0;
   scene.seed = 11;
@@ -542,8 +541,8 @@ void desktop_cascaded(Writer& w) {
   const Tick change = kKeyTick + 2;
   const protocol::SceneUpdate update{0, change, scene1, 1};
   Encoder enc(c, server_encoder_options());
-  enc.set_scene(0, 0, scene_wire::to_scene(scene));
-  enc.set_scene(change, 1, scene_wire::to_scene(scene1));
+  enc.set_scene(0, 0, scene);
+  enc.set_scene(change, 1, scene1);
   constexpr std::uint32_t kCoarse = 256u * 256;  // the cascade's first sample
   ReconstructedFrame truth;
   for (Tick t = kKeyTick - 1; t <= kKeyTick + 3; ++t) {

@@ -9,7 +9,6 @@
 #include "frame_records.hpp"
 #include "message_readers.hpp"
 #include "state_hash.hpp"
-#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 #include "verify_message.hpp"
 #include "wire_limits.hpp"
@@ -53,8 +52,8 @@ void check_scene_line(const Line& line, Tick from, std::uint32_t serial, const p
   CHECK(line.u64("from") == from);
   CHECK(line.u64("serial") == serial);
   CHECK(line.u64("tag") == serial % 256);
-  CHECK(line.u64("size_x") == s.size_x);
-  CHECK(line.u64("size_z") == s.size_z);
+  CHECK(line.u64("size_x") == static_cast<std::uint64_t>(s.size_x));
+  CHECK(line.u64("size_z") == static_cast<std::uint64_t>(s.size_z));
   CHECK(line.f64("patch_x_m") == s.patch_x_m);
   CHECK(line.f64("patch_z_m") == s.patch_z_m);
   CHECK(line.u64("spectrum") == static_cast<std::uint64_t>(s.spectrum));
@@ -63,7 +62,7 @@ void check_scene_line(const Line& line, Tick from, std::uint32_t serial, const p
   CHECK(line.f64("wind_dir_deg") == s.wind_dir_deg);
   CHECK(line.f64("fetch_m") == s.fetch_m);
   CHECK(line.f64("amplitude") == s.amplitude);
-  CHECK(line.f64("depth_m") == s.depth_m);
+  CHECK(line.f64("depth_m") == model::wire_depth(s.depth_m));  // the wire's: 0 = deep
   CHECK(line.f64("small_wave_m") == s.small_wave_m);
   CHECK(line.f64("choppiness") == s.choppiness);
   CHECK(line.f64("gravity_mps2") == s.gravity_mps2);
@@ -136,7 +135,7 @@ Counts run_sequence(const std::string& name) {
       const std::uint32_t serial = update ? update->serial : welcome->scene_serial;
       const protocol::SceneParams& scene = update ? update->scene : welcome->scene;
       check_scene_line(line, from, serial, scene);
-      decoder->add_scene(from, static_cast<std::uint8_t>(serial), scene_wire::to_scene(scene));
+      decoder->add_scene(from, static_cast<std::uint8_t>(serial), scene);
     } else if (line.kind == "scene_update") {
       const Aligned bytes(unhex(line.at("hex")));
       const wire::Message& message = verified(bytes);

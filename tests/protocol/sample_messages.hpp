@@ -35,8 +35,8 @@ inline SceneParams sample_scene() {
   s.size_z = 128;
   s.patch_x_m = 256.0;
   s.patch_z_m = 128.0;
-  s.spectrum = wire::Spectrum::jonswap;
-  s.spreading = wire::Spreading::hasselmann;
+  s.spectrum = model::SpectrumKind::jonswap;
+  s.spreading = model::SpreadingKind::hasselmann;
   s.wind_speed_mps = 12.5;
   s.wind_dir_deg = 30.0;
   s.fetch_m = 50000.0;

@@ -13,6 +13,7 @@
 using namespace ocean::protocol;
 using namespace ocean::protocol::test;
 namespace wire = ocean::wire;
+namespace model = ocean::model;
 using flatbuffers::FlatBufferBuilder;
 
 namespace {
@@ -354,7 +355,7 @@ TEST_CASE("enums: values the schema does not define") {
   expect_rejected(SetTransport{static_cast<wire::Transport>(2)}, from_client(), Reason::bad_enum);
   expect_rejected(KeyframeRequest{1, {}, static_cast<wire::KeyframeReason>(50)}, from_client(), Reason::bad_enum);
   Welcome welcome = sample_welcome();
-  welcome.scene.spectrum = static_cast<wire::Spectrum>(3);
+  welcome.scene.spectrum = static_cast<model::SpectrumKind>(3);
   expect_rejected(welcome, from_server(), Reason::bad_enum);
   ParamChange change = sample_param_change();
   change.spectrum = static_cast<wire::Spectrum>(5);

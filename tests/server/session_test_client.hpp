@@ -6,7 +6,6 @@
 #include "ack_window.hpp"
 #include "decoder.hpp"
 #include "frame_records.hpp"
-#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
@@ -159,7 +158,7 @@ class SessionTestClient {
       codec::DecoderOptions options;
       options.max_payload = proto::kMaxChunkPayloadUdp;
       decoder_ = std::make_unique<codec::Decoder>(config_, options);
-      decoder_->add_scene(0, static_cast<std::uint8_t>(w->scene_serial), scene_wire::to_scene(w->scene));
+      decoder_->add_scene(0, static_cast<std::uint8_t>(w->scene_serial), w->scene);
     } else if (const auto* data = std::get_if<proto::FrameData>(&message)) {
       on_frames(data->frames, transport);
     } else if (std::get_if<proto::UdpReady>(&message)) {
@@ -171,7 +170,7 @@ class SessionTestClient {
     } else if (const auto* u = std::get_if<proto::SceneUpdate>(&message)) {
       scene_updates.push_back(*u);
       if (decoder_)  // the stream goes on: the decoder switches scene at the update's tick
-        decoder_->add_scene(u->effective_tick, static_cast<std::uint8_t>(u->serial), scene_wire::to_scene(u->scene));
+        decoder_->add_scene(u->effective_tick, static_cast<std::uint8_t>(u->serial), u->scene);
     }
   }
 

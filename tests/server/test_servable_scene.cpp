@@ -8,7 +8,6 @@
 #include "encoder.hpp"
 #include "frame_producer.hpp"
 #include "profile.hpp"
-#include "scene_wire.hpp"
 #include "servable_scene.hpp"
 #include "stream_wire.hpp"
 
@@ -40,7 +39,7 @@ model::SceneParams base_scene() {
 // the samples any encoder had to clamp (0 for a carried scene).
 std::uint64_t clamped_when_served(const model::SceneParams& scene, const std::vector<const Profile*>& profiles) {
   FrameProducer producer(SceneSchedule(scene, {}), profiles);
-  const model::SceneParams model = scene_wire::to_scene(scene_wire::to_wire(scene));
+  const model::SceneParams model = scene;
   std::vector<codec::Encoder> encoders;
   for (const Profile* p : profiles) {
     codec::StreamConfig config = codec::StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2,

@@ -6,7 +6,6 @@
 #include "frame_records.hpp"
 #include "message_builders.hpp"
 #include "stream_wire.hpp"
-#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 
 #include <spdlog/spdlog.h>
@@ -18,7 +17,7 @@
 namespace ocean::server {
 
 protocol::SceneUpdate SessionCore::scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const {
-  return protocol::SceneUpdate{request_id, scene.from, scene_wire::to_wire(scene.scene), scene.serial};
+  return protocol::SceneUpdate{request_id, scene.from, scene.scene, scene.serial};
 }
 
 // Both sides of every stream switch scene at its first tick with no keyframe: the encoders learn
@@ -27,7 +26,7 @@ protocol::SceneUpdate SessionCore::scene_update(const AnnouncedScene& scene, std
 void SessionCore::announce(const std::vector<AnnouncedScene>& scenes, std::optional<std::uint64_t> requester,
                           std::uint32_t request_id) {
   for (const AnnouncedScene& scene : scenes) {
-    const model::SceneParams model = scene_wire::to_scene(scene_wire::to_wire(scene.scene));
+    const model::SceneParams model = scene.scene;
     for (auto& stream : streams_) stream->set_scene(scene.from, scene.serial, model);
     for (const auto& session : sessions_.snapshot())  // a full control queue closes its session
       send_control(*session, protocol::encode(scene_update(scene, requester == session->id ? request_id : 0)));

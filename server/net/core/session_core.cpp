@@ -6,7 +6,6 @@
 #include "server_log.hpp"
 #include "stream_transport.hpp"
 #include "verify_message.hpp"
-#include "scene_wire.hpp"
 #include "stream_wire.hpp"
 
 #include <sodium.h>
@@ -304,8 +303,8 @@ protocol::Welcome SessionCore::welcome(const Session& session) const {
   welcome.session_id = session.id;
   const AnnouncedScene& scene = scenes_.in_force(tick_);
   welcome.stream = codec::wire_stream(session.stream->config());
-  welcome.scene = scene_wire::to_wire(scene.scene);
-  welcome.stream.depth_m = welcome.scene.depth_m;  // the depth in force now; SceneUpdates carry later ones
+  welcome.scene = scene.scene;
+  welcome.stream.depth_m = model::wire_depth(welcome.scene.depth_m);  // the depth in force now; SceneUpdates carry later ones
   welcome.scene_serial = scene.serial;
   for (const auto& s : streams_) welcome.offered_profiles.push_back(s->profile().id);
   welcome.epoch_unix_ms = host_.config.epoch_unix_ms;
