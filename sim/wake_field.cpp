@@ -14,8 +14,9 @@ namespace {
 // Beyond this exponent a hull's pressure spectrum is below e^-40 of its peak: the mode is not forced.
 constexpr double kNegligibleExponent = 40.0;
 
-// In-place radix-2 DFT of n points `stride` apart, X[j] = sum x[i] e^{+2 pi i i j / n} (synthesis).
-void inverse_dft(std::complex<double>* x, int n, std::size_t stride) {
+// In-place radix-2 DFT of n points `stride` apart, X[j] = sum x[i] e^{+2 pi i i j / n} (synthesis);
+// twiddle[m] = e^{+2 pi i m / n}, m < n / 2.
+void inverse_dft(std::complex<double>* x, int n, std::size_t stride, const std::vector<std::complex<double>>& twiddle) {
   for (int i = 1, j = 0; i < n; ++i) {
     int bit = n >> 1;
     for (; j & bit; bit >>= 1) j ^= bit;
@@ -23,13 +24,12 @@ void inverse_dft(std::complex<double>* x, int n, std::size_t stride) {
     if (i < j) std::swap(x[i * stride], x[j * stride]);
   }
   for (int len = 2; len <= n; len <<= 1) {
-    const double angle = 2.0 * std::numbers::pi / len;
+    const int step = n / len;
     for (int start = 0; start < n; start += len)
       for (int k = 0; k < len / 2; ++k) {
-        const std::complex<double> w(std::cos(angle * k), std::sin(angle * k));
         std::complex<double>& a = x[(start + k) * stride];
         std::complex<double>& b = x[(start + k + len / 2) * stride];
-        const std::complex<double> t = b * w;
+        const std::complex<double> t = b * twiddle[static_cast<std::size_t>(k * step)];
         b = a - t;
         a += t;
       }
@@ -128,9 +128,11 @@ void WakeField::step(double dt_s, std::span<const HullPose> mid) {
 
 std::vector<double> WakeField::heights() const {
   const int n = region_.n;
+  std::vector<std::complex<double>> twiddle(static_cast<std::size_t>(n / 2));
+  for (int m = 0; m < n / 2; ++m) twiddle[m] = std::polar(1.0, 2.0 * std::numbers::pi * m / n);
   std::vector<std::complex<double>> field = eta_;
-  for (int j = 0; j < n; ++j) inverse_dft(field.data() + static_cast<std::size_t>(j) * n, n, 1);
-  for (int i = 0; i < n; ++i) inverse_dft(field.data() + i, n, static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) inverse_dft(field.data() + static_cast<std::size_t>(j) * n, n, 1, twiddle);
+  for (int i = 0; i < n; ++i) inverse_dft(field.data() + i, n, static_cast<std::size_t>(n), twiddle);
   std::vector<double> out(field.size());
   for (std::size_t m = 0; m < field.size(); ++m) out[m] = field[m].real();
   return out;

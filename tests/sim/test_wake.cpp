@@ -17,10 +17,11 @@ namespace {
 using std::numbers::pi;
 constexpr double kG = 9.81;
 
-WakeRegion test_region() {
+WakeRegion test_region(double depth_m = 1e300) {
   WakeRegion r;
   r.size_m = 1024.0;
   r.n = 256;  // 4 m samples
+  r.depth_m = depth_m;
   return r;
 }
 
@@ -30,8 +31,8 @@ struct Run {
   WakeField field;
   double x_end;
 };
-Run run_straight(double speed, double seconds, double x0 = 100.0) {
-  Run run{WakeField(test_region()), x0};
+Run run_straight(double speed, double seconds, double x0 = 100.0, double depth_m = 1e300) {
+  Run run{WakeField(test_region(depth_m)), x0};
   const double dt = 0.1;
   Hull hull{20.0, 8.0, 1.5};
   for (int step = 0; step * dt < seconds; ++step) {
@@ -91,6 +92,43 @@ TEST_CASE("the transverse wavelength along the track is 2 pi U^2 / g") {
     const double k = dominant_wavenumber(track, 4.0, 0.6 * k0, 1.4 * k0);
     CAPTURE(speed, wavelength, 2.0 * pi / k);
     CHECK(k == Approx(k0).epsilon(0.02));
+  }
+}
+
+TEST_CASE("in shallow water the transverse waves are the ones whose phase speed is the hull's") {
+  // U^2 = (g / k) tanh(k h): at U = 7 m/s over 10 m of water, k is 3.6 % below deep water's g/U^2.
+  const double speed = 7.0, depth = 10.0;
+  double k0 = kG / (speed * speed);
+  for (int i = 0; i < 50; ++i) k0 = kG * std::tanh(k0 * depth) / (speed * speed);
+  const Run run = run_straight(speed, 90.0, 50.0, depth);
+  const std::vector<double> h = run.field.heights();
+  const double wavelength = 2.0 * pi / k0;
+  std::vector<double> track;
+  for (double back = 2.0 * wavelength; back < 6.0 * wavelength; back += 4.0)
+    track.push_back(h[128 * 256 + static_cast<int>(std::lround((run.x_end - back) / 4.0))]);
+  const double k = dominant_wavenumber(track, 4.0, 0.6 * k0, 1.4 * k0);
+  CAPTURE(k0, kG / (speed * speed));
+  CHECK(k == Approx(k0).epsilon(0.015));
+  CHECK(k < 0.985 * kG / (speed * speed));  // told apart from the deep-water answer
+}
+
+TEST_CASE("a dropped object's rings: at radius r and time t the waves are those of group velocity r / t") {
+  WakeField field(test_region());
+  // An object of about a tonne lands at the centre and is gone after half a second.
+  const HullPose drop{Hull{8.0, 8.0, 1.0}, 512.0, 512.0, 0.0};
+  for (int s = 0; s < 5; ++s) field.step(0.1, std::span<const HullPose>(&drop, 1));
+  for (int s = 0; s < 400; ++s) field.step(0.1, {});
+  const double t = field.time_s() - 0.25;  // from the middle of the impulse
+  const std::vector<double> h = field.heights();
+  for (double r : {100.0, 140.0, 180.0}) {
+    // Deep water: c_g = sqrt(g / k) / 2, so the local wavenumber is g / (4 (r / t)^2).
+    const double expected = kG / (4.0 * (r / t) * (r / t));
+    std::vector<double> ray;
+    for (double x = r - 30.0; x <= r + 30.0; x += 4.0)
+      ray.push_back(h[128 * 256 + 128 + static_cast<int>(std::lround(x / 4.0))]);
+    const double k = dominant_wavenumber(ray, 4.0, 0.5 * expected, 1.5 * expected);
+    CAPTURE(r, t, expected);
+    CHECK(k == Approx(expected).epsilon(0.08));
   }
 }
 
