@@ -39,7 +39,7 @@ inline model::SceneParams codec_stream_scene() {
   model::SceneParams s;
   s.patch_x_m = c.patch_x_m;
   s.patch_z_m = c.patch_z_m;
-  s.depth_m = c.depth_m;
+  s.depth_m = model::scene_depth(c.depth_m);  // the config's 0 is deep water
   s.gravity_mps2 = c.gravity_mps2;
   s.size_x = s.size_z = std::max<int>(256, c.grid);
   return s;
