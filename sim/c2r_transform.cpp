@@ -8,22 +8,19 @@
 #include <new>
 
 namespace ocean::sim {
-namespace {
 
 // FFTW's planner (plan creation and destruction) is process-global and not thread-safe, while
 // Oceans may be built on several threads (server, load test). fftwf_make_planner_thread_safe()
 // (libfftw3f_threads) makes FFTW lock every planner call itself, which also protects any other FFTW
 // user in the process -- a mutex of our own could only serialise our own calls. The once_flag is
 // the only static here; it guards installing FFTW's own (global) hooks exactly once.
-void make_planner_thread_safe_once() {
+void make_fftw_planner_thread_safe() {
   static std::once_flag once;
   std::call_once(once, [] { fftwf_make_planner_thread_safe(); });
 }
 
-}  // namespace
-
 C2rTransform::C2rTransform(int n_x, int n_z) : n_x_(n_x), n_z_(n_z), staging_(fftw_array<float>(grid_size())) {
-  make_planner_thread_safe_once();
+  make_fftw_planner_thread_safe();
   FftwArray<fftwf_complex> in = make_spectrum();
   if (!in || !staging_) throw std::bad_alloc();
   // FFTW_ESTIMATE: the plan comes from FFTW's cost model alone, not from timing, so two processes

@@ -21,6 +21,9 @@ FftwArray<T> fftw_array(std::size_t count) {
   return FftwArray<T>(static_cast<T*>(fftwf_malloc(sizeof(T) * (count ? count : 1))));
 }
 
+// Before any plan is made or destroyed: FFTW then locks its (process-global) planner itself.
+void make_fftw_planner_thread_safe();
+
 class C2rTransform {
  public:
   C2rTransform(int n_x, int n_z);

@@ -6,20 +6,27 @@
 // so a hull at rest sits in its hydrostatic hollow and a moving one radiates exactly the waves the
 // dispersion relation allows: the Kelvin wedge, the transverse wavelength 2 pi U^2 / g, rings at
 // the group velocity, all without tuning. Pressure is held over a step at its value mid-step and
-// the oscillator is advanced exactly, so a step costs one rotation per mode. gamma = decay +
-// 2 nu k^2: a wake fades, so the sea at a tick depends on a bounded history of poses.
+// the oscillator is advanced exactly, so a step costs one rotation per mode. The hulls' pressure
+// is laid on the region's grid and transformed once a step, so a step costs the same for one hull
+// as for sixteen. gamma = decay + 2 nu k^2: a wake fades, so the sea at a tick depends on a
+// bounded history of poses.
 // Pure: time steps are arguments; the same poses give the same bits in any process.
 #pragma once
 
 #include <complex>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
 
 namespace ocean::sim {
 
+class C2rTransform;
+class R2cTransform;
+
 // A hull as the water feels it: a Gaussian pressure patch of the hull's displacement, standard
-// deviations a quarter of the length and beam, peak pressure rho g draft.
+// deviations a quarter of the length and beam (at least the region's sample spacing: the grid
+// holds nothing narrower), peak pressure rho g draft.
 struct Hull {
   double length_m = 40.0;
   double beam_m = 8.0;
@@ -47,6 +54,9 @@ struct WakeRegion {
 class WakeField {
  public:
   explicit WakeField(const WakeRegion& region);
+  ~WakeField();
+  WakeField(WakeField&&) noexcept;
+  WakeField& operator=(WakeField&&) noexcept;
 
   // Advances by dt seconds with the hulls at `mid` (their poses at the middle of the step).
   void step(double dt_s, std::span<const HullPose> mid);
@@ -61,14 +71,16 @@ class WakeField {
 
  private:
   void prepare_step(double dt_s);
-  void add_pressure(const HullPose& pose, std::vector<std::complex<double>>& pressure) const;
+  void splat(const HullPose& pose, float* grid) const;
 
   WakeRegion region_;
-  std::vector<double> kx_, kz_;  // per column / row, rad/m (FFT order)
+  int columns_;                  // n / 2 + 1: the half spectrum a real field needs
+  std::vector<double> kx_, kz_;  // per column (kx >= 0) / row (FFT order), rad/m
   std::vector<double> omega_, gamma_;
-  // Per mode: eta and eta' (complex Fourier coefficients of the region's height).
+  // Per mode of the half spectrum: eta and eta' (complex Fourier coefficients of the height).
   std::vector<std::complex<double>> eta_, velocity_;
-  std::vector<std::complex<double>> pressure_;  // scratch: p / (rho g) per mode, in metres
+  std::unique_ptr<R2cTransform> pressure_;  // p / (rho g) on the grid, to its spectrum
+  std::unique_ptr<C2rTransform> synthesis_;
   // The exact propagator of each mode for the last dt (recomputed when dt changes).
   double step_dt_ = 0.0;
   std::vector<double> c_ee_, c_ev_, c_ve_, c_vv_;

@@ -65,11 +65,11 @@ double dominant_wavenumber(const std::vector<double>& samples, double dx, double
 TEST_CASE("a hull at rest sits in its hydrostatic hollow, and the field stays real") {
   // A beam the 4 m samples resolve (a narrower hull's hollow is the band-limited one).
   const HullPose pose{Hull{40.0, 16.0, 2.0}, 512.0, 512.0, 0.3};
-  // Strongly damped so the start-up oscillation dies: the steady state is the hollow itself.
+  // Damped so that the start-up oscillation dies within the minute: what stays is the hollow.
   WakeRegion still = test_region();
-  still.decay_per_s = 2.0;
+  still.decay_per_s = 0.2;
   WakeField damped(still);
-  for (int i = 0; i < 200; ++i) damped.step(0.05, std::span<const HullPose>(&pose, 1));
+  for (int i = 0; i < 600; ++i) damped.step(0.1, std::span<const HullPose>(&pose, 1));
   CHECK(damped.height_at(512.0, 512.0) == Approx(-2.0).epsilon(0.05));  // the draft, minus the region's mean
   CHECK(std::fabs(damped.height_at(700.0, 512.0)) < 0.02);
   const std::vector<double> h = damped.heights();
