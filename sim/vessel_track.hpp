@@ -1,0 +1,43 @@
+// VesselTrack: where a vessel is at any time - waypoints with the times it passes them, straight
+// at constant speed between them, heading along the leg it is on - and the check that refuses a
+// track no vessel could sail (too fast, out of the world, times out of order). Pure: time is an
+// argument, so every replica computes the same poses from the same track.
+#pragma once
+
+#include "wake_field.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ocean::sim {
+
+struct Waypoint {
+  double t_s = 0.0;  // seconds from the track's start
+  double x_m = 0.0;
+  double z_m = 0.0;
+};
+
+struct VesselTrack {
+  std::uint32_t id = 0;
+  Hull hull;
+  // At least one; times strictly increasing from 0. A repeating track is a circuit: its last
+  // waypoint is its first again, and it sails round with the period of the last time.
+  std::vector<Waypoint> points;
+  bool repeat = false;
+};
+
+struct TrackLimits {
+  double max_speed_mps = 20.0;
+  double world_min_m = 0.0, world_max_m = 1024.0;  // every waypoint inside, on both axes
+  double max_hull_length_m = 400.0, max_draft_m = 25.0;
+};
+
+// Empty when usable, else what is wrong, naming the vessel, the waypoint or leg and the limit.
+std::string validate(const VesselTrack& track, const TrackLimits& limits);
+
+// The pose at t seconds from the track's start: before it, at the first waypoint; after the end of
+// a track that does not repeat, at the last (moored: the heading of its last leg).
+HullPose pose_at(const VesselTrack& track, double t_s);
+
+}  // namespace ocean::sim

@@ -1,0 +1,130 @@
+// Vessel tracks: poses between waypoints, circuits, stops, and the tracks refused with a reason.
+#include "vessel_track.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+using namespace ocean::sim;
+
+namespace {
+
+using std::numbers::pi;
+
+VesselTrack l_shaped() {
+  VesselTrack t;
+  t.id = 7;
+  t.points = {{0.0, 100.0, 100.0}, {10.0, 200.0, 100.0}, {20.0, 200.0, 200.0}};
+  return t;
+}
+
+VesselTrack square_circuit() {
+  VesselTrack t;
+  t.id = 3;
+  t.repeat = true;
+  t.points = {{0, 100, 100}, {10, 200, 100}, {20, 200, 200}, {30, 100, 200}, {40, 100, 100}};
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("a vessel sails straight between waypoints, heading along its leg") {
+  const VesselTrack t = l_shaped();
+  HullPose p = pose_at(t, 5.0);
+  CHECK(p.x_m == Approx(150.0));
+  CHECK(p.z_m == Approx(100.0));
+  CHECK(p.heading_rad == Approx(0.0).margin(1e-12));
+  p = pose_at(t, 15.0);
+  CHECK(p.x_m == Approx(200.0));
+  CHECK(p.z_m == Approx(150.0));
+  CHECK(p.heading_rad == Approx(pi / 2));
+  // Before the start at its first waypoint, after the end moored at its last, heading kept.
+  p = pose_at(t, -3.0);
+  CHECK(p.x_m == 100.0);
+  CHECK(p.heading_rad == Approx(0.0).margin(1e-12));
+  p = pose_at(t, 1e6);
+  CHECK(p.x_m == Approx(200.0));
+  CHECK(p.z_m == Approx(200.0));
+  CHECK(p.heading_rad == Approx(pi / 2));
+}
+
+TEST_CASE("a circuit repeats with the period of its last waypoint, without a jump at the wrap") {
+  const VesselTrack t = square_circuit();
+  REQUIRE(validate(t, TrackLimits{}).empty());
+  for (double s : {3.0, 17.5, 29.0, 39.9}) {
+    const HullPose a = pose_at(t, s), b = pose_at(t, s + 40.0 * 25);
+    CHECK(b.x_m == Approx(a.x_m));
+    CHECK(b.z_m == Approx(a.z_m));
+    CHECK(b.heading_rad == Approx(a.heading_rad));
+  }
+  const HullPose before = pose_at(t, 40.0 - 1e-6), after = pose_at(t, 40.0 + 1e-6);
+  CHECK(std::hypot(after.x_m - before.x_m, after.z_m - before.z_m) < 1e-3);
+}
+
+TEST_CASE("a vessel that stops keeps its heading") {
+  VesselTrack t;
+  t.points = {{0, 100, 100}, {10, 100, 200}, {20, 100, 200}};
+  CHECK(pose_at(t, 15.0).heading_rad == Approx(pi / 2));
+  CHECK(pose_at(t, 15.0).z_m == Approx(200.0));
+}
+
+TEST_CASE("tracks no vessel could sail are refused, naming the vessel, the waypoint and the limit") {
+  const TrackLimits limits;
+  auto refused = [&](VesselTrack t, const std::string& words) {
+    const std::string error = validate(t, limits);
+    CAPTURE(error);
+    CHECK(error.find(words) != std::string::npos);
+    CHECK(error.find("vessel " + std::to_string(t.id)) == 0);
+  };
+  VesselTrack fast = l_shaped();
+  fast.points[1].t_s = 4.0;  // 100 m in 4 s
+  refused(fast, "needs 25 m/s; vessels sail at most 20 m/s");
+  VesselTrack outside = l_shaped();
+  outside.points[2].z_m = 2000.0;
+  refused(outside, "waypoint 2: (200, 2000) m is outside the world");
+  VesselTrack backwards = l_shaped();
+  backwards.points[2].t_s = 5.0;
+  refused(backwards, "waypoint 2: t_s = 5 is invalid");
+  VesselTrack late = l_shaped();
+  late.points[0].t_s = 1.0;
+  refused(late, "0 for the first waypoint");
+  VesselTrack open = square_circuit();
+  open.points.pop_back();
+  refused(open, "a repeating track is a circuit");
+  VesselTrack empty = l_shaped();
+  empty.points.clear();
+  refused(empty, "at least one waypoint");
+  VesselTrack wide = l_shaped();
+  wide.hull.beam_m = 50.0;
+  refused(wide, "beam_m = 50 is invalid");
+  VesselTrack deep = l_shaped();
+  deep.hull.draft_m = 40.0;
+  refused(deep, "draft_m = 40 is invalid");
+  CHECK(validate(l_shaped(), limits).empty());
+}
+
+TEST_CASE("a vessel on a circuit leaves a wake that follows it round") {
+  WakeRegion region;
+  region.size_m = 1024.0;
+  region.n = 256;
+  WakeField field(region);
+  VesselTrack t;
+  t.hull = Hull{20.0, 8.0, 1.5};
+  t.repeat = true;
+  t.points = {{0, 300, 300}, {50, 700, 300}, {100, 700, 700}, {150, 300, 700}, {200, 300, 300}};  // 8 m/s
+  REQUIRE(validate(t, TrackLimits{}).empty());
+  for (int s = 0; s < 600; ++s) {
+    const HullPose mid = pose_at(t, (s + 0.5) * 0.1);
+    field.step(0.1, std::span<const HullPose>(&mid, 1));
+  }
+  // At t = 60 s the vessel is 80 m up the second leg: behind it (down the first leg) the sea
+  // moves, ahead of it (the third leg, not yet sailed) only the long forerunners of its waves
+  // have arrived.
+  const double behind = std::fabs(field.height_at(600.0, 300.0)) + std::fabs(field.height_at(640.0, 300.0)) +
+                        std::fabs(field.height_at(620.0, 300.0));
+  const double ahead = std::fabs(field.height_at(500.0, 700.0)) + std::fabs(field.height_at(400.0, 700.0));
+  CAPTURE(behind, ahead);
+  CHECK(behind > 0.01);
+  CHECK(ahead < 0.05 * behind);
+}
