@@ -18,6 +18,22 @@ enum class SpectrumKind : std::uint8_t { phillips, jonswap };
 // Directional spreading used with JONSWAP (Horvath 2015, section 5); each integrates to 1 over angle.
 enum class SpreadingKind : std::uint8_t { cos2s, donelan_banner, hasselmann };
 
+// The scene's ranges, which validate() enforces and the wire checks before decoding
+// (protocol/field_checks.cpp). Depth, whose encodings differ, is checked by each.
+inline constexpr int kMinSceneSize = 16;  // samples per side, a power of two
+inline constexpr int kMaxSceneSize = 2048;
+inline constexpr double kMinPatchM = 0.01;
+inline constexpr double kMaxPatchM = 1e6;
+inline constexpr double kMaxWindSpeedMps = 100.0;  // beyond any hurricane; more only overflows JONSWAP's constants
+inline constexpr double kMaxWindDirDeg = 1e6;      // magnitude
+inline constexpr double kMinFetchM = 1.0;
+inline constexpr double kMaxFetchM = 1e8;
+inline constexpr double kMaxAmplitude = 1e6;
+inline constexpr double kMaxSmallWaveM = 1e6;
+inline constexpr double kMaxChoppiness = 100.0;
+inline constexpr double kMinGravityMps2 = 0.01;
+inline constexpr double kMaxGravityMps2 = 1000.0;
+
 struct SceneParams {
   int size_x = 256;          // N: samples along x, a power of two in [16, 2048]
   int size_z = 256;          // M: samples along z, a power of two in [16, 2048]

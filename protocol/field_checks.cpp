@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "profile.hpp"
+#include "scene_params.hpp"
 #include "wire_limits.hpp"
 
 namespace ocean::protocol::detail {
@@ -79,21 +80,21 @@ Problem cookie(const flatbuffers::Vector<std::uint8_t>* value, bool required, st
 }
 
 // The scene's physical ranges, shared by SceneParams, StreamParams and ParamChange.
-Problem patch(double v, std::string_view field) { return number(v, kMinPatchM, kMaxPatchM, field, "in [0.01, 1e6] m"); }
+Problem patch(double v, std::string_view field) { return number(v, model::kMinPatchM, model::kMaxPatchM, field, "in [0.01, 1e6] m"); }
 Problem gravity(double v, std::string_view field) {
-  return number(v, kMinGravityMps2, kMaxGravityMps2, field, "in [0.01, 1000] m/s^2");
+  return number(v, model::kMinGravityMps2, model::kMaxGravityMps2, field, "in [0.01, 1000] m/s^2");
 }
 Problem depth(double v, std::string_view field) { return number(v, 0, HUGE_VAL, field, ">= 0 m (0 = deep water)"); }
-Problem wind_speed(double v, std::string_view field) { return number(v, 0, kMaxWindSpeedMps, field, "in [0, 100] m/s"); }
+Problem wind_speed(double v, std::string_view field) { return number(v, 0, model::kMaxWindSpeedMps, field, "in [0, 100] m/s"); }
 Problem wind_dir(double v, std::string_view field) {
-  return number(v, -kMaxWindDirDeg, kMaxWindDirDeg, field, "in [-1e6, 1e6] degrees");
+  return number(v, -model::kMaxWindDirDeg, model::kMaxWindDirDeg, field, "in [-1e6, 1e6] degrees");
 }
-Problem amplitude(double v, std::string_view field) { return number(v, 0, kMaxAmplitude, field, "in [0, 1e6]"); }
-Problem choppiness(double v, std::string_view field) { return number(v, 0, kMaxChoppiness, field, "in [0, 100]"); }
+Problem amplitude(double v, std::string_view field) { return number(v, 0, model::kMaxAmplitude, field, "in [0, 1e6]"); }
+Problem choppiness(double v, std::string_view field) { return number(v, 0, model::kMaxChoppiness, field, "in [0, 100]"); }
 
 Problem check_scene(const wire::SceneParams& s) {
   auto power_of_two = [](std::uint16_t n) {
-    return n >= kMinSceneSize && n <= kMaxSceneSize && std::has_single_bit(n);
+    return n >= model::kMinSceneSize && n <= model::kMaxSceneSize && std::has_single_bit(n);
   };
   if (!power_of_two(s.size_x())) return fail(Reason::bad_dimensions, "SceneParams.size_x", "a power of two in [16, 2048]");
   if (!power_of_two(s.size_z())) return fail(Reason::bad_dimensions, "SceneParams.size_z", "a power of two in [16, 2048]");
@@ -103,10 +104,10 @@ Problem check_scene(const wire::SceneParams& s) {
   if (auto p = known_enum(s.spreading(), "SceneParams.spreading")) return p;
   if (auto p = wind_speed(s.wind_speed_mps(), "SceneParams.wind_speed_mps")) return p;
   if (auto p = wind_dir(s.wind_dir_deg(), "SceneParams.wind_dir_deg")) return p;
-  if (auto p = number(s.fetch_m(), kMinFetchM, kMaxFetchM, "SceneParams.fetch_m", "in [1, 1e8] m")) return p;
+  if (auto p = number(s.fetch_m(), model::kMinFetchM, model::kMaxFetchM, "SceneParams.fetch_m", "in [1, 1e8] m")) return p;
   if (auto p = amplitude(s.amplitude(), "SceneParams.amplitude")) return p;
   if (auto p = depth(s.depth_m(), "SceneParams.depth_m")) return p;
-  if (auto p = number(s.small_wave_m(), 0, kMaxSmallWaveM, "SceneParams.small_wave_m", "in [0, 1e6] m")) return p;
+  if (auto p = number(s.small_wave_m(), 0, model::kMaxSmallWaveM, "SceneParams.small_wave_m", "in [0, 1e6] m")) return p;
   if (auto p = choppiness(s.choppiness(), "SceneParams.choppiness")) return p;
   return gravity(s.gravity_mps2(), "SceneParams.gravity_mps2");
 }

@@ -52,21 +52,7 @@ inline constexpr std::size_t kMaxClientNameBytes = 64;
 inline constexpr std::size_t kMaxAdminTokenBytes = 128;
 inline constexpr std::size_t kMaxTextBytes = 256;
 
-// Scene ranges: exactly what model/scene_params.cpp validate() accepts, so every scene the
-// sim runs passes the wire check (depth differs only in encoding: 0 on the wire = deep water).
-inline constexpr std::uint16_t kMinSceneSize = 16;
-inline constexpr std::uint16_t kMaxSceneSize = 2048;
-inline constexpr double kMinPatchM = 0.01;
-inline constexpr double kMaxPatchM = 1e6;
-inline constexpr double kMaxWindSpeedMps = 100.0;
-inline constexpr double kMaxWindDirDeg = 1e6;  // magnitude
-inline constexpr double kMinFetchM = 1.0;
-inline constexpr double kMaxFetchM = 1e8;
-inline constexpr double kMaxAmplitude = 1e6;
-inline constexpr double kMaxSmallWaveM = 1e6;
-inline constexpr double kMaxChoppiness = 100.0;
-inline constexpr double kMinGravityMps2 = 0.01;
-inline constexpr double kMaxGravityMps2 = 1000.0;
+// Scene ranges: model/scene_params.hpp's (model::kMinSceneSize ...), which the wire checks too.
 
 // Stream and timing ranges.
 inline constexpr std::uint16_t kMaxRateHz = 240;

@@ -241,7 +241,7 @@ TEST_CASE("dimensions: grid, flags, scene size and vector lengths must agree") {
   expect_rejected(welcome, from_server(), Reason::bad_dimensions);
 
   welcome = sample_welcome();
-  welcome.stream = StreamParams{3, 256, 256, 256, 9.81, 0, 30, 0.01f, 1.0f / 256, 0.01f, true, true};
+  welcome.stream = StreamParams{3, 256, 256, 256, 9.81, 0, 30, 0.01f, 1.0f / 256, 0.01f, true, true, {}};
   welcome.offered_profiles = {3};
   welcome.scene.size_z = 128;  // a 256 stream cannot come from a 128-row scene
   expect_rejected(welcome, from_server(), Reason::bad_dimensions);
@@ -440,16 +440,16 @@ TEST_CASE("range edges: the sim's own limits are accepted, one step beyond is no
     return encode(SceneUpdate{0, 1, scene, 1});
   };
   CHECK(verify_message(scene_with([](SceneParams&) {}), from_server()).ok);
-  CHECK(verify_message(scene_with([](SceneParams& s) { s.choppiness = kMaxChoppiness; }), from_server()).ok);
-  CHECK(verify_message(scene_with([](SceneParams& s) { s.gravity_mps2 = kMinGravityMps2; }), from_server()).ok);
-  CHECK(verify_message(scene_with([](SceneParams& s) { s.size_x = kMaxSceneSize; }), from_server()).ok);
-  CHECK(verify_message(scene_with([](SceneParams& s) { s.wind_dir_deg = -kMaxWindDirDeg; }), from_server()).ok);
+  CHECK(verify_message(scene_with([](SceneParams& s) { s.choppiness = model::kMaxChoppiness; }), from_server()).ok);
+  CHECK(verify_message(scene_with([](SceneParams& s) { s.gravity_mps2 = model::kMinGravityMps2; }), from_server()).ok);
+  CHECK(verify_message(scene_with([](SceneParams& s) { s.size_x = model::kMaxSceneSize; }), from_server()).ok);
+  CHECK(verify_message(scene_with([](SceneParams& s) { s.wind_dir_deg = -model::kMaxWindDirDeg; }), from_server()).ok);
   const auto beyond = [](double x) { return std::nextafter(x, HUGE_VAL); };
-  expect_rejected(scene_with([&](SceneParams& s) { s.choppiness = beyond(kMaxChoppiness); }), from_server(),
+  expect_rejected(scene_with([&](SceneParams& s) { s.choppiness = beyond(model::kMaxChoppiness); }), from_server(),
                   Reason::out_of_range);
-  expect_rejected(scene_with([&](SceneParams& s) { s.fetch_m = std::nextafter(kMinFetchM, 0.0); }), from_server(),
+  expect_rejected(scene_with([&](SceneParams& s) { s.fetch_m = std::nextafter(model::kMinFetchM, 0.0); }), from_server(),
                   Reason::out_of_range);
-  expect_rejected(scene_with([&](SceneParams& s) { s.wind_speed_mps = beyond(kMaxWindSpeedMps); }), from_server(),
+  expect_rejected(scene_with([&](SceneParams& s) { s.wind_speed_mps = beyond(model::kMaxWindSpeedMps); }), from_server(),
                   Reason::out_of_range);
   expect_rejected(scene_with([](SceneParams& s) { s.size_z = 4096; }), from_server(), Reason::bad_dimensions);
   expect_rejected(scene_with([](SceneParams& s) { s.depth_m = -1; }), from_server(), Reason::out_of_range);

@@ -188,7 +188,8 @@ const ConfigOption kOptions[] = {
        if (error.empty()) c.scene.size_x = c.scene.size_z = n;
        return error;
      },
-     [](const ServerConfig& c) { return std::to_string(c.scene.size_x); }},
+     [](const ServerConfig& c) { return std::to_string(c.scene.size_x); },
+     "size_x size_z"},
     {"patch", "METRES", "side of the square ocean patch the grid covers, in [0.01, 1e6]", ValueKind::number, false,
      [](ServerConfig& c, std::string_view v) {
        double m = 0;
@@ -196,29 +197,36 @@ const ConfigOption kOptions[] = {
        if (error.empty()) c.scene.patch_x_m = c.scene.patch_z_m = m;
        return error;
      },
-     [](const ServerConfig& c) { return show_number(c.scene.patch_x_m); }},
+     [](const ServerConfig& c) { return show_number(c.scene.patch_x_m); },
+     "patch_x_m patch_z_m"},
     {"spectrum", kSpectrumChoices, "wave spectrum", ValueKind::text, true,
      [](ServerConfig& c, std::string_view v) {
        return apply_name(c.scene.spectrum, v, model::spectrum_from_name, model::spectrum_names);
      },
-     [](const ServerConfig& c) { return std::string(model::spectrum_name(c.scene.spectrum)); }},
+     [](const ServerConfig& c) { return std::string(model::spectrum_name(c.scene.spectrum)); },
+     "spectrum"},
     {"spreading", kSpreadingChoices, "directional spreading (JONSWAP only)", ValueKind::text, true,
      [](ServerConfig& c, std::string_view v) {
        return apply_name(c.scene.spreading, v, model::spreading_from_name, model::spreading_names);
      },
-     [](const ServerConfig& c) { return std::string(model::spreading_name(c.scene.spreading)); }},
+     [](const ServerConfig& c) { return std::string(model::spreading_name(c.scene.spreading)); },
+     "spreading"},
     {"wind-speed", "M/S", "wind speed U10 in m/s, in [0, 100]", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.wind_speed_mps); },
-     [](const ServerConfig& c) { return show_number(c.scene.wind_speed_mps); }},
+     [](const ServerConfig& c) { return show_number(c.scene.wind_speed_mps); },
+     "wind_speed_mps"},
     {"wind-dir", "DEG", "direction the wind blows towards, degrees from +x towards +z", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.wind_dir_deg); },
-     [](const ServerConfig& c) { return show_number(c.scene.wind_dir_deg); }},
+     [](const ServerConfig& c) { return show_number(c.scene.wind_dir_deg); },
+     "wind_dir_deg"},
     {"fetch", "METRES", "JONSWAP fetch, in [1, 1e8]", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.fetch_m); },
-     [](const ServerConfig& c) { return show_number(c.scene.fetch_m); }},
+     [](const ServerConfig& c) { return show_number(c.scene.fetch_m); },
+     "fetch_m"},
     {"amplitude", "A", "scale on the spectrum's energy, in [0, 1e6]", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.amplitude); },
-     [](const ServerConfig& c) { return show_number(c.scene.amplitude); }},
+     [](const ServerConfig& c) { return show_number(c.scene.amplitude); },
+     "amplitude"},
     {"depth", "METRES|deep", "water depth, > 0, or 'deep'", ValueKind::number_or_text, true,
      [](ServerConfig& c, std::string_view v) {
        if (v == "deep") {
@@ -230,16 +238,20 @@ const ConfigOption kOptions[] = {
      },
      [](const ServerConfig& c) {
        return std::isinf(c.scene.depth_m) ? std::string("deep") : show_number(c.scene.depth_m);
-     }},
+     },
+     "depth_m"},
     {"choppiness", "LAMBDA", "horizontal displacement scale, in [0, 100] (streamed by choppy profiles)", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.choppiness); },
-     [](const ServerConfig& c) { return show_number(c.scene.choppiness); }},
+     [](const ServerConfig& c) { return show_number(c.scene.choppiness); },
+     "choppiness"},
     {"small-wave", "METRES", "suppression length of tiny waves, in [0, 1e6] (0 = from the grid spacing)", ValueKind::number, true,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.scene.small_wave_m); },
-     [](const ServerConfig& c) { return show_number(c.scene.small_wave_m); }},
+     [](const ServerConfig& c) { return show_number(c.scene.small_wave_m); },
+     "small_wave_m"},
     {"seed", "N", "random seed of the wave phases, unsigned 64-bit: decimal or 0x hex (in TOML a string for seeds >= 2^63)",
      ValueKind::integer_or_text, false, [](ServerConfig& c, std::string_view v) { return parse_seed(v, c.scene.seed); },
-     [](const ServerConfig& c) { return std::to_string(c.scene.seed); }},
+     [](const ServerConfig& c) { return std::to_string(c.scene.seed); },
+     "seed"},
     {"tick-rate", "HZ", "simulation ticks per second, an integer in 1..240 and a multiple of every offered profile's rate",
      ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.tick_rate_hz); },

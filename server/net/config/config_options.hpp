@@ -30,6 +30,8 @@ struct ConfigOption {
   std::string (*apply)(ServerConfig& config, std::string_view value);
   // The default, as text, for --help.
   std::string (*show)(const ServerConfig& config);
+  // The scene fields (model::SceneParams) it sets, space-separated: a scene error names the flag.
+  std::string_view scene_fields = {};
 };
 
 std::span<const ConfigOption> config_options();

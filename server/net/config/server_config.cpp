@@ -14,17 +14,17 @@ namespace ocean::server {
 namespace {
 
 // model::validate names SceneParams fields ("wind_speed_mps = ..."); a user typed a flag.
-std::string name_scene_flag(const std::string& sim_message) {
-  static const std::pair<const char*, const char*> kFlags[] = {
-      {"size_x", "--size"},         {"size_z", "--size"},           {"patch_x_m", "--patch"},
-      {"patch_z_m", "--patch"},     {"spectrum", "--spectrum"},     {"spreading", "--spreading"},
-      {"wind_speed_mps", "--wind-speed"}, {"wind_dir_deg", "--wind-dir"}, {"fetch_m", "--fetch"},
-      {"amplitude", "--amplitude"}, {"depth_m", "--depth"},         {"small_wave_m", "--small-wave"},
-      {"choppiness", "--choppiness"}, {"seed", "--seed"}};
-  const std::string field = sim_message.substr(0, sim_message.find(' '));
-  for (const auto& [name, flag] : kFlags)
-    if (field == name) return std::string(flag) + ": " + sim_message;
-  return "scene: " + sim_message;
+std::string name_scene_flag(const std::string& scene_message) {
+  const std::string field = scene_message.substr(0, scene_message.find(' '));
+  for (const ConfigOption& option : config_options()) {
+    std::string_view fields = option.scene_fields;
+    while (!fields.empty()) {
+      const std::size_t space = fields.find(' ');
+      if (fields.substr(0, space) == field) return "--" + std::string(option.name) + ": " + scene_message;
+      fields = space == std::string_view::npos ? std::string_view() : fields.substr(space + 1);
+    }
+  }
+  return "scene: " + scene_message;
 }
 
 std::string validate_profiles(const ServerConfig& config) {
