@@ -19,6 +19,7 @@ class NpyWriter {
   void append(std::span<const float> frame);  // rows * cols values, row-major
   void close();                               // rewrites the header with the final shape
   std::uint64_t frames() const { return frames_; }
+  int cols() const { return cols_; }
 
   static constexpr std::size_t kHeaderBytes = 128;  // fixed, so the shape can be patched in place
 

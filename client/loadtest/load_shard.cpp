@@ -186,7 +186,7 @@ void LoadShard::record(std::size_t, const codec::ReconstructedFrame& frame, Tick
   if (!record_error_.empty() || (recorded_tick_ && tick <= *recorded_tick_)) return;
   recorded_tick_ = tick;
   try {
-    recorder_->append(tick, facts_->grid, frame.height);
+    recorder_->append(tick, facts_->lattices, frame);
   } catch (const std::exception& e) {
     record_error_ = std::string("--record: ") + e.what();
   }

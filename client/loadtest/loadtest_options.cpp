@@ -61,7 +61,7 @@ void add_flags(CLI::App& app, LoadtestOptions& o, Flags& f) {
                "state share one decode, which gives bit-identical frames at a fraction of the CPU)");
   app.add_option("--csv", o.csv_path, "write a per-second series to this CSV file");
   app.add_option("--plot", o.plot_path, "render kbps, on-time % and latency over time to this PNG (gnuplot)");
-  app.add_option("--record", o.record_path, "record client 0's reconstructed heights to this .npy file, and each frame's tick to FILE.ticks.npy (int64)");
+  app.add_option("--record", o.record_path, "record client 0's decoded frames: heights to this .npy file, each frame's tick to FILE.ticks.npy, every channel of every lattice to FILE.<channel>.npy (CODEC.md 10)");
 }
 
 // After parsing: the server list, the ranges, and the scenario filling in what was not given.

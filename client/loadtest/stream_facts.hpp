@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "frame_recorder.hpp"
 #include "frame_verdict.hpp"
 #include "message_types.hpp"
 
@@ -18,6 +19,7 @@ struct StreamFacts {
   int tick_rate_hz = 0;
   Tick interval_ticks = 1;  // ticks between the stream's frames
   int grid = 0;
+  std::vector<int> lattices;  // the frames' lattice sizes, in order (client::stream_lattices)
   bool choppy = false;  // the stream carries displacement and its derivatives: so must the truth
   ErrorBounds bounds{0.0, 0.0};
   double epoch_s = 0.0;  // unix seconds of tick 0
@@ -30,6 +32,7 @@ struct StreamFacts {
     if (w.stream.rate_hz)
       f.interval_ticks = std::max<Tick>(1, static_cast<Tick>(std::lround(f.tick_rate_hz / double(w.stream.rate_hz))));
     f.grid = w.stream.grid;
+    f.lattices = client::stream_lattices(w.stream);
     f.choppy = w.stream.choppy;
     f.bounds = ErrorBounds{w.stream.height_step_m / 2.0, w.stream.normals ? w.stream.slope_step / 2.0 : 0.0,
                            f.choppy ? w.stream.disp_step_m / 2.0 : 0.0, f.choppy ? w.stream.slope_step / 2.0 : 0.0};

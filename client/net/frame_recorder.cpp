@@ -1,6 +1,7 @@
 // The tick file has NpyWriter's layout: a fixed 128-byte header, so the length can be patched.
 #include "frame_recorder.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <stdexcept>
@@ -47,18 +48,76 @@ std::string ticks_path_for(const std::string& heights_path) {
   return heights_path + ".ticks.npy";
 }
 
-void FrameRecorder::append(std::int64_t tick, int grid, std::span<const float> heights) {
-  if (!heights_) {
-    heights_.emplace(path_, grid, grid);
-    ticks_.emplace(ticks_path_for(path_));
-  }
-  heights_->append(heights);
+namespace {
+
+// Every channel a ReconstructedFrame may carry, as the recording names its file.
+struct ChannelField {
+  const char* name;
+  std::vector<float> codec::ReconstructedFrame::*field;
+};
+constexpr ChannelField kChannels[] = {
+    {"height", &codec::ReconstructedFrame::height},   {"slope_x", &codec::ReconstructedFrame::slope_x},
+    {"slope_z", &codec::ReconstructedFrame::slope_z}, {"disp_x", &codec::ReconstructedFrame::disp_x},
+    {"disp_z", &codec::ReconstructedFrame::disp_z},   {"disp_xx", &codec::ReconstructedFrame::disp_xx},
+    {"disp_zz", &codec::ReconstructedFrame::disp_zz}, {"disp_xz", &codec::ReconstructedFrame::disp_xz},
+    {"jacobian", &codec::ReconstructedFrame::jacobian},
+};
+
+// "run.npy" + "height" -> "run.height.npy".
+std::string beside(const std::string& path, const std::string& what) {
+  const std::string ticks = ticks_path_for(path);
+  return ticks.substr(0, ticks.size() - std::string("ticks.npy").size()) + what + ".npy";
+}
+
+}  // namespace
+
+struct FrameRecorder::Channel {
+  std::vector<float> codec::ReconstructedFrame::*field;
+  NpyWriter writer;
+};
+
+std::vector<int> stream_lattices(const protocol::StreamParams& stream) {
+  if (stream.cascades.empty()) return {stream.grid};
+  std::vector<int> sizes;
+  for (const Cascade& c : stream.cascades) sizes.push_back(c.grid);
+  return sizes;
+}
+
+FrameRecorder::FrameRecorder(std::string heights_path) : path_(std::move(heights_path)) {}
+FrameRecorder::~FrameRecorder() = default;
+
+void FrameRecorder::open(std::span<const int> lattices, const codec::ReconstructedFrame& frame) {
+  lattices_.assign(lattices.begin(), lattices.end());
+  std::size_t samples = 0;
+  for (const int n : lattices_) samples += static_cast<std::size_t>(n) * n;
+  heights_.emplace(path_, lattices_.front(), lattices_.front());
+  ticks_.emplace(ticks_path_for(path_));
+  TickNpyWriter sizes(beside(path_, "lattices"));
+  for (const int n : lattices_) sizes.append(n);
+  sizes.close();
+  for (const ChannelField& c : kChannels)
+    if ((frame.*c.field).size() == samples)
+      channels_.push_back(std::unique_ptr<Channel>(new Channel{c.field, NpyWriter(beside(path_, c.name), 1, static_cast<int>(samples))}));
+}
+
+bool FrameRecorder::append(std::int64_t tick, std::span<const int> lattices, const codec::ReconstructedFrame& frame) {
+  if (lattices.empty()) return false;
+  if (!heights_) open(lattices, frame);
+  if (!std::equal(lattices.begin(), lattices.end(), lattices_.begin(), lattices_.end())) return false;
+  const auto first = static_cast<std::size_t>(lattices_.front()) * lattices_.front();
+  if (frame.height.size() < first) return false;
+  for (const auto& c : channels_)
+    if ((frame.*c->field).size() != static_cast<std::size_t>(c->writer.cols())) return false;
+  heights_->append(std::span<const float>(frame.height).first(first));
   ticks_->append(tick);
+  for (const auto& c : channels_) c->writer.append(frame.*c->field);
+  return true;
 }
 
 void FrameRecorder::close() {
   if (heights_) heights_->close();
   if (ticks_) ticks_->close();
+  for (const auto& c : channels_) c->writer.close();
 }
 
 }  // namespace ocean::client

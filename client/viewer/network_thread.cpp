@@ -26,9 +26,8 @@ std::uint64_t session_bytes(const client::ClientSession& s) { return s.stats().t
 }  // namespace
 
 struct NetworkThread::Recording {
-  std::optional<client::FrameRecorder> writer;  // heights, and each frame's tick beside them
-  int grid = 0;
-  std::optional<Tick> last_tick;  // the file holds frames in tick order
+  std::optional<client::FrameRecorder> writer;  // every channel and lattice, each frame's tick
+  std::optional<Tick> last_tick;  // the files hold frames in tick order
 };
 
 NetworkThread::NetworkThread(NetworkThreadConfig config) : config_(std::move(config)) {}
@@ -151,6 +150,7 @@ void NetworkThread::on_welcome(const protocol::Welcome& welcome) {
   render::stream_layout(welcome.stream.grid, welcome.stream.patch_x_m, welcome.stream.patch_z_m, welcome.stream.cascades,
                         stream_.layout, stream_.layout_error);
   stream_.profile = profile ? std::string(profile->name) : "profile-" + std::to_string(welcome.stream.profile_id);
+  stream_.lattices = client::stream_lattices(welcome.stream);
   stream_.tick_period_s = welcome.tick_period_s;
   stream_.send_interval_s = send_interval;
 }
@@ -164,18 +164,13 @@ void NetworkThread::on_frame(const codec::ReconstructedFrame& frame, Tick tick) 
   if (config_.record_path.empty()) return;
   const double t0 = thread_cpu_ms();
   std::lock_guard lock(mutex_);
-  // The tile: a cascaded stream's fields go on with its coarse cascade's samples after it.
-  const int grid = stream_.layout.tile.n;
   try {
-    if (!recording_->writer && stats_.record_error.empty()) {
-      recording_->writer.emplace(config_.record_path);
-      recording_->grid = grid;
-    }
-    if (recording_->writer && recording_->grid == grid && grid > 0 &&
-        frame.height.size() >= static_cast<std::size_t>(grid) * grid && (!recording_->last_tick || tick > *recording_->last_tick)) {
+    if (!recording_->writer && stats_.record_error.empty()) recording_->writer.emplace(config_.record_path);
+    // Every lattice and channel of the stream; a frame of another stream (after a reconnection to
+    // another profile) is counted, not recorded.
+    if (recording_->writer && (!recording_->last_tick || tick > *recording_->last_tick) &&
+        recording_->writer->append(static_cast<std::int64_t>(tick), stream_.lattices, frame)) {
       recording_->last_tick = tick;
-      recording_->writer->append(static_cast<std::int64_t>(tick), grid,
-                                 std::span<const float>(frame.height).first(static_cast<std::size_t>(grid) * grid));
       ++stats_.frames_recorded;
     } else {
       ++stats_.frames_not_recorded;

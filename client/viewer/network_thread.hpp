@@ -35,6 +35,7 @@ struct StreamShape {
   render::StreamLayout layout;  // the tile and the coarse cascade, from the Welcome
   std::string layout_error;     // why the renderer cannot draw the stream, if it cannot
   std::string profile;
+  std::vector<int> lattices;  // the sizes of the frames' lattices, in order
   double tick_period_s = 0.0;
   double send_interval_s = 0.0;
   double wind_speed_mps = 0.0;  // of the newest scene announced: the weather's light follows it

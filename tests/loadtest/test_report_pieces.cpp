@@ -75,19 +75,30 @@ TEST_CASE("summary json: the fields the CTest wrapper reads, server cpu only whe
   CHECK(j.find('\n') == std::string::npos);
 }
 
+namespace {
+
+std::vector<char> file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::vector<char>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
 TEST_CASE("frame recorder: the ticks file sits beside the heights, int64, one per frame") {
   CHECK(ticks_path_for("/tmp/run.npy") == "/tmp/run.ticks.npy");
   CHECK(ticks_path_for("/tmp/run") == "/tmp/run.ticks.npy");
   const std::string path = "/tmp/ocean-loadtest-test-" + std::to_string(::getpid()) + ".npy";
+  const std::string base = path.substr(0, path.size() - 4);
   {
     FrameRecorder recorder(path);
-    const std::vector<float> heights(4 * 4, 0.5f);
-    recorder.append(5000000000LL, 4, heights);  // beyond 32 bits: the file keeps it whole
-    recorder.append(5000000008LL, 4, heights);
+    ocean::codec::ReconstructedFrame frame;
+    frame.height.assign(4 * 4, 0.5f);
+    const std::vector<int> lattices{4};
+    CHECK(recorder.append(5000000000LL, lattices, frame));  // beyond 32 bits: the file keeps it whole
+    CHECK(recorder.append(5000000008LL, lattices, frame));
     recorder.close();
   }
-  std::ifstream in(ticks_path_for(path), std::ios::binary);
-  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<char> bytes = file_bytes(ticks_path_for(path));
   REQUIRE(bytes.size() == 128 + 16);
   const std::string header(bytes.begin(), bytes.begin() + 128);
   CHECK_THAT(header, Catch::Contains("'descr': '<i8'"));
@@ -98,6 +109,61 @@ TEST_CASE("frame recorder: the ticks file sits beside the heights, int64, one pe
   std::memcpy(&second, bytes.data() + 136, 8);
   CHECK(first == 5000000000LL);
   CHECK(second == 5000000008LL);
-  std::remove(path.c_str());
-  std::remove(ticks_path_for(path).c_str());
+  for (const std::string& f : {path, ticks_path_for(path), base + ".lattices.npy", base + ".height.npy"})
+    std::remove(f.c_str());
+}
+
+TEST_CASE("frame recorder: every channel the stream carries, over all its lattices, and nothing of another stream") {
+  const std::string path = "/tmp/ocean-loadtest-channels-" + std::to_string(::getpid()) + ".npy";
+  const std::string base = path.substr(0, path.size() - 4);
+  const std::vector<int> lattices{4, 2};  // a cascaded stream: 16 + 4 samples a channel
+  ocean::codec::ReconstructedFrame frame;
+  for (std::vector<float>* c : {&frame.height, &frame.slope_x, &frame.slope_z, &frame.disp_x, &frame.disp_z,
+                                &frame.disp_xx, &frame.disp_zz, &frame.disp_xz, &frame.jacobian})
+    c->assign(20, 0.0f);
+  for (int i = 0; i < 20; ++i) frame.jacobian[i] = 0.5f + static_cast<float>(i);
+  {
+    FrameRecorder recorder(path);
+    CHECK(recorder.append(10, lattices, frame));
+    CHECK(recorder.append(12, lattices, frame));
+    const std::vector<int> other{4};  // after a reconnection to another profile
+    CHECK_FALSE(recorder.append(14, other, frame));
+    recorder.close();
+  }
+  const char* names[] = {"height", "slope_x", "slope_z", "disp_x", "disp_z", "disp_xx", "disp_zz", "disp_xz", "jacobian"};
+  for (const char* name : names) {
+    const std::vector<char> bytes = file_bytes(base + "." + name + ".npy");
+    INFO(name);
+    REQUIRE(bytes.size() == 128 + 2 * 20 * 4);
+    CHECK_THAT(std::string(bytes.begin(), bytes.begin() + 128), Catch::Contains("'shape': (2, 1, 20)"));
+  }
+  // The second lattice's samples follow the first's, in each frame.
+  const std::vector<char> jacobian = file_bytes(base + ".jacobian.npy");
+  float last = 0.0f;
+  std::memcpy(&last, jacobian.data() + 128 + 19 * 4, 4);
+  CHECK(last == 19.5f);
+  const std::vector<char> sizes = file_bytes(base + ".lattices.npy");
+  REQUIRE(sizes.size() == 128 + 16);
+  std::int64_t n0 = 0, n1 = 0;
+  std::memcpy(&n0, sizes.data() + 128, 8);
+  std::memcpy(&n1, sizes.data() + 136, 8);
+  CHECK((n0 == 4 && n1 == 2));
+  // The first lattice's heights keep the file they always had.
+  CHECK(file_bytes(path).size() == 128 + 2 * 16 * 4);
+  // A stream without choppy channels writes no files for them.
+  const std::string plain = "/tmp/ocean-loadtest-plain-" + std::to_string(::getpid()) + ".npy";
+  {
+    FrameRecorder recorder(plain);
+    ocean::codec::ReconstructedFrame heights_only;
+    heights_only.height.assign(16, 1.0f);
+    CHECK(recorder.append(1, std::vector<int>{4}, heights_only));
+    recorder.close();
+  }
+  const std::string plain_base = plain.substr(0, plain.size() - 4);
+  CHECK(file_bytes(plain_base + ".jacobian.npy").empty());
+  CHECK(file_bytes(plain_base + ".height.npy").size() == 128 + 16 * 4);
+  for (const std::string& b : {base, plain_base}) {
+    for (const char* name : names) std::remove((b + "." + name + ".npy").c_str());
+    for (const char* f : {".npy", ".ticks.npy", ".lattices.npy"}) std::remove((b + f).c_str());
+  }
 }
