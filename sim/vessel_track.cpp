@@ -54,7 +54,13 @@ HullPose pose_at(const VesselTrack& track, double t_s) {
   const std::vector<Waypoint>& p = track.points;
   HullPose pose{track.hull, p.front().x_m, p.front().z_m, 0.0};
   if (p.size() == 1) return pose;
-  double heading = heading_of(p[0], p[1], 0.0);
+  // Before the first leg that moves (a dwell at the start), the heading it will sail; on a circuit,
+  // the one it arrived with, so a lap joins the next without a turn.
+  double heading = 0.0;
+  if (track.repeat)
+    for (std::size_t i = 1; i < p.size(); ++i) heading = heading_of(p[i - 1], p[i], heading);
+  else
+    for (std::size_t i = p.size() - 1; i > 0; --i) heading = heading_of(p[i - 1], p[i], heading);
   const double period = p.back().t_s;
   double t = t_s;
   if (track.repeat && t > period) t = std::fmod(t, period);

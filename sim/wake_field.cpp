@@ -68,21 +68,23 @@ void WakeField::prepare_step(double dt_s) {
     // column stay 0, so the field stays real.
     const auto row = static_cast<int>(m / columns_), column = static_cast<int>(m % columns_);
     if (w == 0.0 || row == n / 2 || column == n / 2) continue;
-    double c, sd;  // C and S above
+    double c, sd;  // e^{-g dt} C and e^{-g dt} S
     if (w > g) {
-      const double wd = std::sqrt(w * w - g * g);
-      c = std::cos(wd * dt_s);
-      sd = std::sin(wd * dt_s) / wd;
+      const double wd = std::sqrt(w * w - g * g), e = std::exp(-g * dt_s);
+      c = e * std::cos(wd * dt_s);
+      sd = e * std::sin(wd * dt_s) / wd;
     } else {
+      // As the two decays e^{-(g -+ r) dt}, so that no cosh overflows under strong damping;
+      // g - r = w^2 / (g + r) without cancellation.
       const double r = std::sqrt(g * g - w * w);
-      c = std::cosh(r * dt_s);
-      sd = r * dt_s < 1e-8 ? dt_s : std::sinh(r * dt_s) / r;
+      const double slow = std::exp(-w * w / (g + r) * dt_s), fast = std::exp(-(g + r) * dt_s);
+      c = 0.5 * (slow + fast);
+      sd = r * dt_s < 1e-8 ? std::exp(-g * dt_s) * dt_s : 0.5 * (slow - fast) / r;
     }
-    const double e = std::exp(-g * dt_s);
-    c_ee_[m] = e * (c + g * sd);
-    c_ev_[m] = e * sd;
-    c_ve_[m] = -e * w * w * sd;
-    c_vv_[m] = e * (c - g * sd);
+    c_ee_[m] = c + g * sd;
+    c_ev_[m] = sd;
+    c_ve_[m] = -w * w * sd;
+    c_vv_[m] = c - g * sd;
   }
 }
 
@@ -140,9 +142,11 @@ std::vector<double> WakeField::heights() const {
     in[m][0] = static_cast<float>(eta_[m].real());
     in[m][1] = static_cast<float>(eta_[m].imag());
   }
-  std::vector<float> out(static_cast<std::size_t>(n) * n);
-  synthesis_->execute(in.get(), out.data());
-  return std::vector<double>(out.begin(), out.end());
+  // An output of the plan's own alignment: FFTW then runs it on these arrays, never on the plan's
+  // staging buffer, so concurrent calls do not share memory.
+  const FftwArray<float> out = fftw_array<float>(static_cast<std::size_t>(n) * n);
+  synthesis_->execute(in.get(), out.get());
+  return std::vector<double>(out.get(), out.get() + static_cast<std::size_t>(n) * n);
 }
 
 double WakeField::height_at(double x_m, double z_m) const {

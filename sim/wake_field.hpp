@@ -15,6 +15,7 @@
 
 #include <complex>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -46,7 +47,7 @@ struct WakeRegion {
   double size_m = 1024.0;   // the square's side
   int n = 256;              // modes (and samples) per side, a power of two
   double gravity_mps2 = 9.81;
-  double depth_m = 1e300;   // deep water: any depth beyond half the longest wave
+  double depth_m = std::numeric_limits<double>::infinity();  // deep water, as in a scene
   double decay_per_s = 0.02;  // amplitude decay of every wave (about 50 s)
   double viscosity_m2ps = 1e-6;  // kinematic: short waves fade faster (2 nu k^2)
 };

@@ -62,6 +62,9 @@ def main():
                 winds = [s["scene"]["wind_speed_mps"]] + [a["scene"]["wind_speed_mps"] for a in s["announced"]]
                 if 17.5 not in winds:
                     failures.append(f"show: the changed wind is neither in force nor announced: {s}")
+                # Deep water as the wire says it (0), not a JSON null.
+                if s["scene"]["depth_m"] != 0:
+                    failures.append(f"show: a deep sea's depth_m is {s['scene']['depth_m']!r}, not 0")
             env = dict(os.environ, OCEAN_ADMIN_TOKEN="test-admin-token")
             expect("token from the environment", admin("--server", addr, "--amplitude", "1.5", env=env), 0)
             expect("wrong token", admin("--server", addr, "--token-file", wrong, "--wind-speed", "12"), 3,

@@ -128,3 +128,15 @@ TEST_CASE("a vessel on a circuit leaves a wake that follows it round") {
   CHECK(behind > 0.01);
   CHECK(ahead < 0.05 * behind);
 }
+
+TEST_CASE("a vessel waiting at its first waypoint already faces its first leg; a circuit keeps its arrival heading") {
+  VesselTrack t;
+  t.points = {{0, 100, 100}, {10, 100, 100}, {20, 100, 200}};  // waits 10 s, then sails +z
+  CHECK(pose_at(t, 5.0).heading_rad == Approx(pi / 2));
+  CHECK(pose_at(t, -1.0).heading_rad == Approx(pi / 2));
+  VesselTrack circuit;
+  circuit.repeat = true;  // waits at the start of each lap, having arrived heading -z
+  circuit.points = {{0, 100, 100}, {5, 100, 100}, {15, 200, 100}, {25, 200, 200}, {35, 100, 200}, {45, 100, 100}};
+  REQUIRE(validate(circuit, TrackLimits{}).empty());
+  CHECK(pose_at(circuit, 45.0 + 2.0).heading_rad == Approx(pose_at(circuit, 44.9).heading_rad));
+}

@@ -174,3 +174,16 @@ TEST_CASE("the same poses give the same wake bit for bit") {
   const Run a = run_straight(6.0, 5.0), b = run_straight(6.0, 5.0);
   CHECK(a.field.heights() == b.field.heights());
 }
+
+TEST_CASE("any damping gives finite heights: an overdamped sea relaxes, it never overflows") {
+  for (double decay : {0.02, 3.0, 800.0, 1e6}) {
+    WakeRegion r = test_region();
+    r.decay_per_s = decay;
+    WakeField field(r);
+    const HullPose pose{Hull{40.0, 16.0, 2.0}, 512.0, 512.0, 0.0};
+    for (int s = 0; s < 20; ++s) field.step(1.0, std::span<const HullPose>(&pose, 1));
+    CAPTURE(decay);
+    for (double v : field.heights()) REQUIRE(std::isfinite(v));
+    CHECK(std::fabs(field.height_at(512.0, 512.0)) <= 2.5);
+  }
+}

@@ -78,6 +78,7 @@ Server::Server(ServerConfig config)
       producer_(schedule_, offered_profiles(config_)),
       tick_loop_(TickClock(config_.tick_rate_hz, config_.epoch_unix_ms),
                  [this](const TickDecision& decision) { on_tick(decision); }) {
+  open_listeners();  // first: an address in use is told before the simulation is built
   // Fail now, with the option to change, rather than on the simulation thread at the first tick.
   const TickClock& clock = tick_loop_.clock();
   const double now_s = clock.sim_time_s(clock.tick_at(system_unix_ns()));
@@ -87,7 +88,6 @@ Server::Server(ServerConfig config)
                                 std::to_string(kMaxSimTimeS) + " s, so choose an epoch within ~31 years of now");
   // Builds the per-profile band evaluators before the first deadline (and surfaces any ParamError).
   (void)producer_.produce(clock.tick_at(system_unix_ns()), now_s);
-  open_listeners();
   {
     asio::ip::udp::socket socket = open_udp_beside_tcp();
     udp_port_ = socket.local_endpoint().port();
