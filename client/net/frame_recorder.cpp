@@ -92,6 +92,7 @@ void FrameRecorder::open(std::span<const int> lattices, const codec::Reconstruct
   for (const int n : lattices_) samples += static_cast<std::size_t>(n) * n;
   heights_.emplace(path_, lattices_.front(), lattices_.front());
   ticks_.emplace(ticks_path_for(path_));
+  baselines_.emplace(beside(path_, "baselines"));
   TickNpyWriter sizes(beside(path_, "lattices"));
   for (const int n : lattices_) sizes.append(n);
   sizes.close();
@@ -110,6 +111,7 @@ bool FrameRecorder::append(std::int64_t tick, std::span<const int> lattices, con
     if ((frame.*c->field).size() != static_cast<std::size_t>(c->writer.cols())) return false;
   heights_->append(std::span<const float>(frame.height).first(first));
   ticks_->append(tick);
+  baselines_->append(static_cast<std::int64_t>(frame.baseline));
   for (const auto& c : channels_) c->writer.append(frame.*c->field);
   return true;
 }
@@ -117,6 +119,7 @@ bool FrameRecorder::append(std::int64_t tick, std::span<const int> lattices, con
 void FrameRecorder::close() {
   if (heights_) heights_->close();
   if (ticks_) ticks_->close();
+  if (baselines_) baselines_->close();
   for (const auto& c : channels_) c->writer.close();
 }
 

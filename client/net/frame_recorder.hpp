@@ -1,9 +1,10 @@
 // FrameRecorder: --record FILE.npy (viewer, load test) - everything a client decoded, frame by
 // frame, so a recording can be compared with the sim tick by tick or measured offline (CODEC.md
-// "Recordings" is the format): FILE.npy the first lattice's heights (frames x grid x grid
-// float32), FILE.ticks.npy each frame's tick (int64), FILE.lattices.npy the stream's lattice sizes
-// (int64), and FILE.<channel>.npy every channel the stream carries over all its lattices
-// (frames x 1 x samples float32, the lattices one after the other, each row-major z * n + x).
+// section 10 is the format): FILE.npy the first lattice's heights (frames x grid x grid float32),
+// FILE.ticks.npy each frame's tick and FILE.baselines.npy the tick of the state it was decoded
+// from (a key's own tick) (int64), FILE.lattices.npy the stream's lattice sizes (int64), and
+// FILE.<channel>.npy every channel the stream carries over all its lattices (frames x 1 x samples
+// float32, the lattices one after the other, each row-major z * n + x).
 #pragma once
 
 #include <cstdint>
@@ -61,7 +62,7 @@ class FrameRecorder {
   std::string path_;
   std::vector<int> lattices_;
   std::optional<NpyWriter> heights_;
-  std::optional<TickNpyWriter> ticks_;
+  std::optional<TickNpyWriter> ticks_, baselines_;
   std::vector<std::unique_ptr<Channel>> channels_;
 };
 

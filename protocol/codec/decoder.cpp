@@ -143,6 +143,8 @@ ChunkError Decoder::accept(const ChunkView& c) {
   return ChunkError::ok;
 }
 
+Tick Decoder::baseline_of(Tick tick, const Pending& p) { return p.key ? tick : p.baseline; }
+
 void Decoder::show(Tick tick) {
   shown_tick_ = tick;
   shown_dirty_ = true;
@@ -187,6 +189,7 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
     ReconstructedFrame frame;
     to_float(p.fields.synthesis, p.fields.corrections, config_, frame, parallel_);
     frame.tick = tick;
+    frame.baseline = baseline_of(tick, p);
     frame.complete = true;
     const DecodeMemo::Result& r =
         p.key ? memo->remember_key(tick, p.key_payloads, state, std::move(frame))
@@ -199,9 +202,11 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
     recycle(std::move(shown_fields_));
     shown_fields_ = std::move(p.fields);
     shown_complete_ = true;
+    shown_baseline_ = baseline_of(tick, p);
   } else {
     recycle(std::move(late_fields_));
     late_fields_ = std::move(p.fields);
+    late_baseline_ = baseline_of(tick, p);
   }
   hold(tick, state);
 }
@@ -229,6 +234,7 @@ const ReconstructedFrame* Decoder::just_completed() {
   if (!late_converted_) {
     to_float(late_fields_.synthesis, late_fields_.corrections, config_, late_, parallel_);
     late_.tick = *completed_tick_;
+    late_.baseline = late_baseline_;
     late_.complete = true;
     late_.shared_id = 0;
     late_converted_ = true;
@@ -268,6 +274,7 @@ void Decoder::drop_pending(std::map<Tick, Pending>::iterator it) {
     recycle(std::move(shown_fields_));
     shown_fields_ = std::move(it->second.fields);
     shown_complete_ = false;
+    shown_baseline_ = baseline_of(it->first, it->second);
   } else {
     recycle(std::move(it->second.fields));
   }
@@ -283,6 +290,7 @@ const ReconstructedFrame* Decoder::latest() {
     const FrameFields& fields = held ? shown_fields_ : it->second.fields;
     to_float(fields.synthesis, fields.corrections, config_, shown_, parallel_);
     shown_.tick = *shown_tick_;
+    shown_.baseline = held ? shown_baseline_ : baseline_of(*shown_tick_, it->second);
     shown_.complete = held && shown_complete_;
     shown_dirty_ = false;
   }

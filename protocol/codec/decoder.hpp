@@ -74,6 +74,8 @@ class Decoder {
     UnroundedFields synthesis;
     Corrections corrections;
   };
+  struct Pending;
+  static Tick baseline_of(Tick tick, const Pending& p);
   struct Pending {
     Tick baseline = 0;
     bool key = false;
@@ -117,12 +119,14 @@ class Decoder {
   std::optional<Tick> shown_tick_;              // newest tick with something to show
   FrameFields shown_fields_;                    // its fields once it left pending_
   bool shown_complete_ = false;
+  Tick shown_baseline_ = 0;                     // of shown_fields_
   ReconstructedFrame shown_;
   DecodeMemo::Frame shown_shared_;              // set instead of shown_ when the memo holds the frame
   bool shown_dirty_ = true;
   // A frame completed while a newer one was on show (just_completed()).
   std::optional<Tick> completed_tick_;
   FrameFields late_fields_;
+  Tick late_baseline_ = 0;
   DecodeMemo::Frame late_shared_;
   ReconstructedFrame late_;
   bool late_converted_ = false;

@@ -17,6 +17,7 @@ namespace ocean::codec {
 // derivatives, row-major z * n + x. Fields a stream does not carry are empty.
 struct ReconstructedFrame {
   Tick tick = 0;
+  Tick baseline = 0;      // the tick of the state it was decoded from; a key's own tick
   bool complete = false;  // all chunks arrived (only complete frames can be baselines)
   std::uint64_t shared_id = 0;  // nonzero: this very frame is shown by every decoder of a DecodeMemo that got it
   std::vector<float> height, slope_x, slope_z;

@@ -111,7 +111,9 @@ inline RunStats run_stream(const SyntheticOcean& ocean, const StreamConfig& conf
     if (dec.is_complete(tick)) {
       ++st.complete_frames;
       const ReconstructedFrame* r = dec.latest();
-      if (!r || r->tick != tick || r->height != f->reconstruction.height || r->slope_x != f->reconstruction.slope_x ||
+      // Tick, baseline (a key's own tick) and fields as the encoder sent them.
+      if (!r || r->tick != tick || r->baseline != (f->key ? tick : f->base.tick) ||
+          r->height != f->reconstruction.height || r->slope_x != f->reconstruction.slope_x ||
           r->slope_z != f->reconstruction.slope_z)
         st.bitwise = false;
       if (!(*dec.state(tick) == *enc.state(f->id))) st.states_equal = false;

@@ -15,8 +15,8 @@ using ocean::Tick;
 namespace {
 
 bool same_frame(const ReconstructedFrame* a, const ReconstructedFrame* b) {
-  return a && b && a->tick == b->tick && a->complete == b->complete && a->height == b->height &&
-         a->slope_x == b->slope_x && a->slope_z == b->slope_z;
+  return a && b && a->tick == b->tick && a->baseline == b->baseline && a->complete == b->complete &&
+         a->height == b->height && a->slope_x == b->slope_x && a->slope_z == b->slope_z;
 }
 
 // Payloads large enough that every delta is one chunk (the memo only shares single-chunk deltas).

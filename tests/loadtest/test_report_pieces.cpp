@@ -109,7 +109,7 @@ TEST_CASE("frame recorder: the ticks file sits beside the heights, int64, one pe
   std::memcpy(&second, bytes.data() + 136, 8);
   CHECK(first == 5000000000LL);
   CHECK(second == 5000000008LL);
-  for (const std::string& f : {path, ticks_path_for(path), base + ".lattices.npy", base + ".height.npy"})
+  for (const std::string& f : {path, ticks_path_for(path), base + ".lattices.npy", base + ".height.npy", base + ".baselines.npy"})
     std::remove(f.c_str());
 }
 
@@ -118,6 +118,7 @@ TEST_CASE("frame recorder: every channel the stream carries, over all its lattic
   const std::string base = path.substr(0, path.size() - 4);
   const std::vector<int> lattices{4, 2};  // a cascaded stream: 16 + 4 samples a channel
   ocean::codec::ReconstructedFrame frame;
+  frame.baseline = 8;  // a delta from tick 8
   for (std::vector<float>* c : {&frame.height, &frame.slope_x, &frame.slope_z, &frame.disp_x, &frame.disp_z,
                                 &frame.disp_xx, &frame.disp_zz, &frame.disp_xz, &frame.jacobian})
     c->assign(20, 0.0f);
@@ -148,6 +149,11 @@ TEST_CASE("frame recorder: every channel the stream carries, over all its lattic
   std::memcpy(&n0, sizes.data() + 128, 8);
   std::memcpy(&n1, sizes.data() + 136, 8);
   CHECK((n0 == 4 && n1 == 2));
+  const std::vector<char> baselines = file_bytes(base + ".baselines.npy");
+  REQUIRE(baselines.size() == 128 + 16);
+  std::int64_t b0 = 0;
+  std::memcpy(&b0, baselines.data() + 128, 8);
+  CHECK(b0 == 8);
   // The first lattice's heights keep the file they always had.
   CHECK(file_bytes(path).size() == 128 + 2 * 16 * 4);
   // A stream without choppy channels writes no files for them.
@@ -164,6 +170,6 @@ TEST_CASE("frame recorder: every channel the stream carries, over all its lattic
   CHECK(file_bytes(plain_base + ".height.npy").size() == 128 + 16 * 4);
   for (const std::string& b : {base, plain_base}) {
     for (const char* name : names) std::remove((b + "." + name + ".npy").c_str());
-    for (const char* f : {".npy", ".ticks.npy", ".lattices.npy"}) std::remove((b + f).c_str());
+    for (const char* f : {".npy", ".ticks.npy", ".lattices.npy", ".baselines.npy"}) std::remove((b + f).c_str());
   }
 }
