@@ -14,7 +14,7 @@ class R2cTransform {
   R2cTransform(const R2cTransform&) = delete;
   R2cTransform& operator=(const R2cTransform&) = delete;
 
-  float* input() { return input_.get(); }  // n_z x n_x, row-major; kept by execute()
+  float* input() { return input_.get(); }  // n_z x n_x, row-major; execute() may overwrite it
   const fftwf_complex* output() const { return output_.get(); }
   void execute();
 
@@ -22,7 +22,6 @@ class R2cTransform {
   int n_x_, n_z_;
   FftwArray<float> input_;
   FftwArray<fftwf_complex> output_;
-  FftwArray<float> scratch_;  // r2c may overwrite its input: it works on a copy
   fftwf_plan plan_ = nullptr;
 };
 

@@ -16,6 +16,7 @@ namespace ocean::sim {
 
 using model::bad_param;
 using model::format_value;
+using model::initial_amplitude;  // deduces the sim's arithmetic from its Spectrum
 using model::ParamError;
 using model::power_of_two_in;
 using model::SceneParams;
@@ -27,8 +28,5 @@ inline double angular_frequency(double k, double gravity, double depth_m) {
   return model::angular_frequency<model::Libm>(k, gravity, depth_m);
 }
 
-inline std::complex<double> initial_amplitude(const SceneParams& p, const Spectrum& spectrum, int kx, int kz) {
-  return model::initial_amplitude(p, spectrum, kx, kz);
-}
 
 }  // namespace ocean::sim

@@ -39,6 +39,5 @@ struct StreamTransport {
 
 // In listening order; the first is the primary one (always on: --listen, which UDP shares).
 std::span<const StreamTransport> stream_transports();
-const StreamTransport* find_stream_transport(std::string_view name);
 
 }  // namespace ocean::server

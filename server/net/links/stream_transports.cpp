@@ -25,10 +25,4 @@ const StreamTransport kStreamTransports[] = {
 
 std::span<const StreamTransport> stream_transports() { return kStreamTransports; }
 
-const StreamTransport* find_stream_transport(std::string_view name) {
-  for (const StreamTransport& t : kStreamTransports)
-    if (t.name == name) return &t;
-  return nullptr;
-}
-
 }  // namespace ocean::server
