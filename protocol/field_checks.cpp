@@ -5,6 +5,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "common/wake_lattice.hpp"
 #include "profile.hpp"
 #include "scene_params.hpp"
 #include "wire_limits.hpp"
@@ -125,6 +126,10 @@ Problem check_stream(const wire::StreamParams& s) {
     same = Cascade{c->patch_scale(), c->grid(), {c->band_min(), c->band_max()}} == profile->cascades[i];
   }
   if (!same) return fail(Reason::bad_dimensions, "StreamParams.cascades", "the profile's cascades");
+  if (const wire::WakeLattice* w = s.wake()) {
+    const WakeLattice wake{w->grid(), w->size_m(), w->origin_x_m(), w->origin_z_m(), w->decay_per_s(), w->viscosity_m2ps()};
+    if (const char* problem = wake_problem(wake)) return fail(Reason::out_of_range, "StreamParams.wake", problem);
+  }
   if (auto p = patch(s.patch_x_m(), "StreamParams.patch_x_m")) return p;
   if (auto p = patch(s.patch_z_m(), "StreamParams.patch_z_m")) return p;
   if (auto p = gravity(s.gravity_mps2(), "StreamParams.gravity_mps2")) return p;

@@ -44,6 +44,10 @@ Offset<wire::StreamParams> stream_of(FlatBufferBuilder& fbb, const StreamParams&
                        static_cast<std::uint16_t>(c.band.min_cycles), static_cast<std::uint16_t>(c.band.max_cycles));
     cascades = fbb.CreateVectorOfStructs(out);
   }
+  Offset<wire::WakeLattice> wake = 0;
+  if (s.wake.grid != 0)
+    wake = wire::CreateWakeLattice(fbb, static_cast<std::uint16_t>(s.wake.grid), s.wake.size_m, s.wake.origin_x_m,
+                                   s.wake.origin_z_m, s.wake.decay_per_s, s.wake.viscosity_m2ps);
   wire::StreamParamsBuilder b(fbb);
   b.add_profile_id(s.profile_id);
   b.add_grid(s.grid);
@@ -58,6 +62,7 @@ Offset<wire::StreamParams> stream_of(FlatBufferBuilder& fbb, const StreamParams&
   b.add_normals(s.normals);
   b.add_choppy(s.choppy);
   if (!s.cascades.empty()) b.add_cascades(cascades);
+  if (s.wake.grid != 0) b.add_wake(wake);
   return b.Finish();
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/cascade.hpp"
+#include "common/wake_lattice.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -34,6 +35,7 @@ struct StreamParams {
   bool normals = false;
   bool choppy = false;
   std::vector<Cascade> cascades;  // the profile's; empty for one lattice
+  WakeLattice wake;  // grid 0: the stream carries no wake (no vessels)
   bool operator==(const StreamParams&) const = default;
 };
 

@@ -64,6 +64,9 @@ class WakeField {
 
   // Heights (m) at the n x n sample points x = i size/n, z = j size/n, row j = z, column i = x.
   std::vector<double> heights() const;
+  // The wake's Fourier coefficients (height = sum a e^{i k.x} over the full spectrum): n rows (kz
+  // in FFT order) of n/2 + 1 columns (kx >= 0), row-major.
+  const std::vector<std::complex<double>>& modes() const { return eta_; }
   // The height at one point (a sum over the modes: for checks and buoyancy, not for frames).
   double height_at(double x_m, double z_m) const;
 

@@ -16,8 +16,11 @@ constexpr std::uint8_t kFlagBinary32 = 1u << 5;
 // Codec version 5: the stream has cascades (several lattices); decoders of version 4 refuse it
 // as a reserved bit, so they show nothing rather than one lattice's samples as the sea.
 constexpr std::uint8_t kFlagCascaded = 1u << 6;
+// Codec version 6: the stream has a wake lattice (its items follow the sea's); a version 5 decoder
+// refuses the reserved bit rather than show the wake's samples as the sea's.
+constexpr std::uint8_t kFlagWake = 1u << 7;
 constexpr std::uint8_t kKnownFlags =
-    kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole | kFlagChoppy | kFlagBinary32 | kFlagCascaded;
+    kFlagKey | kFlagNormals | kFlagModeled | kFlagWhole | kFlagChoppy | kFlagBinary32 | kFlagCascaded | kFlagWake;
 constexpr std::size_t kCrcOffset = 1;
 constexpr std::size_t kFixedHeaderBytes = 4;  // flags, CRC (2), scene tag
 
@@ -109,6 +112,7 @@ std::vector<std::uint8_t> write_payload(const ChunkHeader& h, const ChunkView& e
   out.push_back(static_cast<std::uint8_t>((h.key ? kFlagKey : 0) | (h.normals ? kFlagNormals : 0) |
                                           (h.key && h.modeled ? kFlagModeled : 0) | (h.whole ? kFlagWhole : 0) |
                                           (h.choppy ? kFlagChoppy : 0) | (h.cascaded ? kFlagCascaded : 0) |
+                                          (h.wake ? kFlagWake : 0) |
                                           kFlagBinary32));
   out.push_back(0);
   out.push_back(0);  // CRC placeholder
@@ -142,6 +146,7 @@ ChunkError parse_payload(const ChunkView& c, std::size_t max_payload, int grid_l
   h.whole = (flags & kFlagWhole) != 0;
   h.choppy = (flags & kFlagChoppy) != 0;
   h.cascaded = (flags & kFlagCascaded) != 0;
+  h.wake = (flags & kFlagWake) != 0;
   if (h.key != c.key || (h.modeled && !h.key)) return ChunkError::bad_flags;
   h.scene_tag = p[3];
   std::size_t pos = kFixedHeaderBytes;

@@ -12,7 +12,7 @@
 
 namespace ocean::codec {
 
-inline constexpr std::uint8_t kCodecVersion = 5;
+inline constexpr std::uint8_t kCodecVersion = 6;
 inline constexpr std::size_t kDefaultMaxPayload = 1100;
 // Bytes a frame record adds around the payload in a lean UDP datagram (PROTOCOL.md 7): lag,
 // count, length and its share of the datagram's kind byte and tick; the bench charges this per
@@ -72,6 +72,7 @@ struct ChunkHeader {
   bool normals = false;
   bool choppy = false;         // codec version 3: the choppy channels follow the slopes
   bool cascaded = false;       // codec version 5: the stream has cascades (StreamConfig::cascades)
+  bool wake = false;           // codec version 6: the stream has a wake lattice (StreamConfig::wake)
   bool modeled = false;        // key only: the state comes from the scene model, not coefficients
   bool whole = false;          // the chunk covers every item of its frame; no range is written
   std::uint8_t scene_tag = 0;  // the scene in force at the chunk's tick (SceneUpdate.serial mod 256)

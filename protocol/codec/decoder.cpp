@@ -35,7 +35,8 @@ const ModalState* Decoder::state(Tick tick) const {
 }
 
 ChunkError Decoder::check(const ChunkView& c, const ChunkHeader& h, const BodyLayout& layout) const {
-  if (h.normals != config_.normals || h.choppy != config_.choppy || h.cascaded != !config_.cascades.empty())
+  if (h.normals != config_.normals || h.choppy != config_.choppy || h.cascaded != !config_.cascades.empty() ||
+      h.wake != config_.has_wake())
     return ChunkError::wrong_dimensions;
   if (h.item_begin >= h.item_end || h.item_end > layout.total()) return ChunkError::bad_range;
   if (h.key && !h.modeled && (h.pos_shift > 40 || h.vel_shift > 40)) return ChunkError::bad_value;
@@ -178,7 +179,8 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
     model_.synthesize(p.predicted.cur, scenes_.at(tick)->scene.choppiness, p.fields.synthesis);
   }
   if (!p.fields.corrections.height.empty())
-    model_.add_correction(p.predicted, height_correction_field(model_.samples(), p.fields.corrections.height));
+    model_.add_correction(p.predicted, height_correction_field(model_.samples(), p.fields.corrections.height),
+                         p.key ? 0 : tick - p.baseline);
   const DecodeMemo::State state = memo ? memo->intern(tick, std::move(p.predicted))
                                        : DecodeMemo::State(std::make_shared<ModalState>(std::move(p.predicted)));
   const bool shown = !shown_tick_ || tick >= *shown_tick_;

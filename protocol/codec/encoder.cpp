@@ -294,13 +294,15 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predic
   proto.normals = config_.normals;
   proto.choppy = config_.choppy;
   proto.cascaded = !config_.cascades.empty();
+  proto.wake = config_.has_wake();
   proto.scene_tag = scenes_.at(tick)->tag;
   proto.pos_shift = static_cast<std::uint8_t>(explicit_key ? key->pos_shift : 0);
   proto.vel_shift = static_cast<std::uint8_t>(explicit_key ? key->vel_shift : 0);
   static const std::vector<KeyCoefficient> kNoCoefficients;
   chunk_frame(*frame, layout, proto, explicit_key ? key->coefficients : kNoCoefficients, corr);
 
-  if (!corr.height.empty()) model_.add_correction(predicted, height_correction_field(model_.samples(), corr.height));
+  if (!corr.height.empty())
+    model_.add_correction(predicted, height_correction_field(model_.samples(), corr.height), key ? 0 : tick - base.tick);
   // Deltas of one tick from different baselines often land on the same state (without
   // corrections, advancing is path-independent): one id for one state lets later deltas from
   // either be encoded once for every client.

@@ -38,6 +38,13 @@ inline std::int64_t dot_round30(std::int64_t a, std::int64_t x, std::int64_t b, 
 // For p < 0, -floor((-p + h) / 2^s) = floor((p + h - 1) / 2^s) with h = 2^(s-1): one add and one
 // shift instead of negating the 128-bit product twice (the decoder does this for every mode of
 // every channel).
+// v / d rounded half away from zero (d >= 1), so -v gives the opposite result.
+inline std::int64_t div_round_sym(std::int64_t v, std::uint64_t d) {
+  const std::uint64_t magnitude = v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+  const std::uint64_t q = magnitude / d + (magnitude % d >= d - d / 2 ? 1 : 0);
+  return v < 0 ? static_cast<std::int64_t>(0 - q) : static_cast<std::int64_t>(q);
+}
+
 inline std::int64_t mul_round_sym(std::int64_t a, std::int64_t b, int s) {
   const __int128 p = static_cast<__int128>(a) * b;
   const __int128 neg = p >> 127;  // 0 or -1; branch-free because signs are random here

@@ -23,6 +23,19 @@ const StreamConfig& require_valid(const StreamConfig& config) {
   return config;
 }
 
+// The wake's damped oscillator sampled every dt (CODEC.md 7.9): the roots of x^2 - a x + b are
+// e^{(-g +- i wd) dt}, or e^{-(g -+ r) dt} for an overdamped mode; b = e^{-2 g dt} either way.
+std::pair<double, double> damped_recurrence(double w, double g, double dt) {
+  if (w > g) {
+    const double wd = std::sqrt(w * w - g * g);
+    return {2.0 * model::det_exp_neg(g * dt) * model::det_cos(wd * dt), model::det_exp_neg(2.0 * g * dt)};
+  }
+  const double r = std::sqrt(g * g - w * w);
+  if (g + r == 0.0) return {2.0, 1.0};  // the mean level of undamped water: it stays
+  // g - r as w^2 / (g + r): no cancellation when the damping is strong.
+  return {model::det_exp_neg(w * w / (g + r) * dt) + model::det_exp_neg((g + r) * dt), model::det_exp_neg(2.0 * g * dt)};
+}
+
 // A state value as binary32 (CODEC.md 7.2): through double, as every language can.
 float to_binary32(std::int64_t v) { return static_cast<float>(static_cast<double>(v)); }
 
@@ -40,15 +53,24 @@ ModalModel::ModalModel(const StreamConfig& config)
   disp_factor_ = (static_cast<double>(config.height_step_m) / 65536.0) / (static_cast<double>(config.disp_step_m) / 65536.0);
   jac_factor_ = factor;
   std::size_t largest = 0;
+  wake_at_ = config.modes();
   for (const StreamConfig::Lattice& l : lattices_) {
     const int n = l.n, hc = n / 2 + 1;
+    if (l.wake) wake_at_ = l.modes_at;
     for (int r = 0; r < n; ++r) {
       const double kz = model::kTwoPi * signed_index(r, n) / l.patch_z_m;
       for (int c = 0; c < hc; ++c) {
         const double kx = model::kTwoPi * signed_index(c, n) / l.patch_x_m;
         const double k = std::sqrt(kx * kx + kz * kz);
         const double w = model::angular_frequency<model::Det>(k, config.gravity_mps2, model::scene_depth(config.depth_m));
-        a_.push_back(model::to_fixed(2.0 * model::det_cos(w * dt), kRecurrenceBits));
+        if (!l.wake) {
+          a_.push_back(model::to_fixed(2.0 * model::det_cos(w * dt), kRecurrenceBits));
+          continue;
+        }
+        const double g = config.wake.decay_per_s + 2.0 * config.wake.viscosity_m2ps * (k * k);
+        const auto [a, b] = damped_recurrence(w, g, dt);
+        a_.push_back(model::to_fixed(a, kRecurrenceBits));
+        b_.push_back(model::to_fixed(b, kRecurrenceBits));
       }
     }
     auto grid = std::make_unique<Grid>(n);
@@ -103,9 +125,28 @@ void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t 
   // Mode by mode, every step: each mode's recurrence is its own, so any split of the modes gives
   // the same integers. Each mode is read before it is written, so `out` may be `from`.
   const std::int64_t* a = a_.data();
+  const std::int64_t* b = b_.data() - wake_at_;  // indexed by mode, from wake_at_ on
+  const auto damped = [&](const std::vector<std::int64_t>& prev, const std::vector<std::int64_t>& cur,
+                          std::vector<std::int64_t>& out_prev, std::vector<std::int64_t>& out_cur, std::size_t begin,
+                          std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      std::int64_t p = prev[i], c = cur[i];
+      for (std::uint64_t step = 0; step < steps; ++step) {
+        const std::int64_t next = wsub(mul_round_sym(a[i], c, kRecurrenceBits), mul_round_sym(b[i], p, kRecurrenceBits));
+        p = c;
+        c = next;
+      }
+      out_prev[i] = p;
+      out_cur[i] = c;
+    }
+  };
   const auto modes = [&](const std::vector<std::int64_t>& prev, const std::vector<std::int64_t>& cur,
                          std::vector<std::int64_t>& out_prev, std::vector<std::int64_t>& out_cur, std::size_t begin,
                          std::size_t end) {
+    if (end > wake_at_) {
+      damped(prev, cur, out_prev, out_cur, std::max(begin, wake_at_), end);
+      end = std::max(begin, wake_at_);
+    }
     if (steps == 1) {  // nearly every delta: one step, straight through
       for (std::size_t i = begin; i < end; ++i) {
         const std::int64_t p = prev[i], c = cur[i];
@@ -281,12 +322,17 @@ void ModalModel::lattice_spectrum(std::size_t g, const std::int64_t* all_fields,
   }
 }
 
-void ModalModel::add_correction(ModalState& s, const std::vector<std::int64_t>& field) {
+void ModalModel::add_correction(ModalState& s, const std::vector<std::int64_t>& field, std::uint64_t lag) {
   HalfSpectrum d;
   spectrum_of(field.data(), d);
   for (std::size_t i = 0; i < d.re.size(); ++i) {
     s.cur.re[i] = wadd(s.cur.re[i], d.re[i]);
     s.cur.im[i] = wadd(s.cur.im[i], d.im[i]);
+    if (i >= wake_at_ && lag != 0) {
+      s.prev.re[i] = wadd(s.prev.re[i], wsub(d.re[i], div_round_sym(d.re[i], kWakeVelocityShare * lag)));
+      s.prev.im[i] = wadd(s.prev.im[i], wsub(d.im[i], div_round_sym(d.im[i], kWakeVelocityShare * lag)));
+      continue;
+    }
     s.prev.re[i] = wadd(s.prev.re[i], d.re[i]);
     s.prev.im[i] = wadd(s.prev.im[i], d.im[i]);
   }

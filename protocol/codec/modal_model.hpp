@@ -28,6 +28,10 @@ inline constexpr int kSlopeQuantumShift = 10;   // slope corrections count slope
 // steps like heights; the Jacobian's inputs in slope units, corrected like slopes.
 inline constexpr int kDispFracBits = 16;
 inline constexpr int kDispQuantumShift = 14;
+// A delta's correction of the wake lattice counts as velocity by 1 / (this x lag) (CODEC.md 7.9):
+// 1 tracks the hulls' forcing fastest but feeds every quantization error back as motion, and the
+// free waves then keep needing corrections; 4 nearly silences them (test_wake_stream measures both).
+inline constexpr std::uint64_t kWakeVelocityShare = 4;
 
 // n rows x (n/2 + 1) columns (kx >= 0 half), row-major; the rest follows by X(-k) = conj X(k).
 struct HalfSpectrum {
@@ -92,9 +96,12 @@ class ModalModel {
   // Half-spectrum of a real field (every lattice's samples, units as heights), made exactly Hermitian.
   void spectrum_of(const std::int64_t* field, HalfSpectrum& out);
 
-  // Adds the spectrum of a spatial height correction to both X(t-1) and X(t): shifts the
-  // position of every mode without giving it velocity.
-  void add_correction(ModalState& state, const std::vector<std::int64_t>& correction_field);
+  // Adds the spectrum D of a spatial height correction to both X(t-1) and X(t): shifts the
+  // position of every mode without giving it velocity. The wake lattice's modes, in a delta of
+  // `lag` ticks (0 for a key: a shift as above), take D into X(t) and D - D / (4 lag) into X(t-1):
+  // a miss that grew over the lag is partly motion the hulls gave, and the pair then carries that
+  // share of it (CODEC.md 7.9).
+  void add_correction(ModalState& state, const std::vector<std::int64_t>& correction_field, std::uint64_t lag);
 
   // Key-frame modes: the kx >= 0 half minus DC, the Nyquist row and column and the redundant
   // kx = 0 partners; indices into a HalfSpectrum, in transmission order.
@@ -103,6 +110,8 @@ class ModalModel {
   void mirror_key_column(HalfSpectrum& s) const;
 
   std::int64_t recurrence_coef(int index) const { return a_[index]; }
+  // Where the wake lattice's modes start (modes() when the stream has none).
+  std::size_t wake_modes_at() const { return wake_at_; }
 
  private:
   struct SynthesisChannel {
@@ -130,6 +139,9 @@ class ModalModel {
   bool choppy_;
   double disp_factor_ = 0.0, jac_factor_ = 0.0;  // height units to displacement / slope units
   std::vector<std::int64_t> a_;  // Q48, per half-spectrum mode
+  // The wake lattice's damped recurrence X(t+1) = a X(t) - b X(t-1): b in Q48 per mode from wake_at_.
+  std::size_t wake_at_ = 0;
+  std::vector<std::int64_t> b_;
   std::vector<std::int32_t> key_modes_;
   // Choppy: kx/k, kz/k, kx^2/k, kz^2/k, kx kz/k per half-spectrum mode (0 at DC and Nyquist), and
   // their float factors for the choppiness they were last built for.

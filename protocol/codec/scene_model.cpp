@@ -52,6 +52,7 @@ SceneModel::SceneModel(const StreamConfig& stream, const model::SceneParams& sce
   const std::vector<StreamConfig::Lattice> lattices = stream.lattices();
   for (std::size_t i = 0; i < lattices.size(); ++i) {
     const StreamConfig::Lattice& l = lattices[i];
+    if (l.wake) continue;  // the wake starts at rest: no scene draws it (CODEC.md 7.9)
     // A cascade's waves are its own scene's (CODEC.md 7.7); one lattice is the scene itself.
     const model::SceneParams own =
         stream.cascades.empty() ? scene_ : model::cascade_scene(scene_, stream.cascades[i], static_cast<int>(i));

@@ -1,6 +1,7 @@
 // SceneTimeline: lazily built models per scene; recurrences shared by scenes of one depth.
 #include "scene_timeline.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -84,10 +85,35 @@ void SceneTimeline::advance(ModalState& state, Tick from, Tick to) const {
   Tick now = from;
   const Tick start = start_of(to);
   if (start > from) {
-    model_state(start, state);
+    if (config_.has_wake()) {
+      replace_sea(state, from, start);
+    } else {
+      model_state(start, state);
+    }
     now = start;
   }
   recurrence_of(held_at(now)).advance(state, to - now);
+}
+
+// The wake is the vessels' doing, not the weather's: it rides through a change of scene, advanced
+// by the recurrence of each scene in force on the way (so advancing in parts gives the same
+// integers), while the sea's lattices take the new scene's model state (CODEC.md 7.9).
+void SceneTimeline::replace_sea(ModalState& state, Tick from, Tick start) const {
+  Tick now = from;
+  for (auto it = entries_.upper_bound(from); it != entries_.end() && it->first <= start; ++it) {
+    recurrence_of(held_at(now)).advance(state, it->first - now);
+    now = it->first;
+  }
+  ModalState sea;
+  model_state(start, sea);
+  const std::size_t wake_at = recurrence_of(held_at(start)).wake_modes_at();
+  for (auto [to, from_wake] : {std::pair{&sea.prev, &state.prev}, std::pair{&sea.cur, &state.cur}}) {
+    std::copy(from_wake->re.begin() + static_cast<std::ptrdiff_t>(wake_at), from_wake->re.end(),
+              to->re.begin() + static_cast<std::ptrdiff_t>(wake_at));
+    std::copy(from_wake->im.begin() + static_cast<std::ptrdiff_t>(wake_at), from_wake->im.end(),
+              to->im.begin() + static_cast<std::ptrdiff_t>(wake_at));
+  }
+  state = std::move(sea);
 }
 
 const ModalModel& SceneTimeline::recurrence_of(const Held& held) const {
@@ -99,7 +125,8 @@ const ModalModel& SceneTimeline::recurrence_of(const Held& held) const {
 void SceneTimeline::advance(const ModalState& state, Tick from, Tick to, ModalState& out,
                             const ParallelFor& parallel) const {
   if (start_of(to) > from) {
-    advance(out, from, to);  // starts from the scene model's state: `state` plays no part
+    if (config_.has_wake()) out = state;  // the wake rides through the change
+    advance(out, from, to);  // else from the scene model's state: `state` plays no part
     return;
   }
   recurrence_of(held_at(from)).advance(state, out, to - from, parallel);

@@ -68,6 +68,7 @@ class SceneTimeline {
   const SceneModel& model_of(const Held& held) const;
   const ModalModel& recurrence_of(const Held& held) const;
   StreamConfig with_depth(const Held& held) const;
+  void replace_sea(ModalState& state, Tick from, Tick start) const;
 
   StreamConfig config_;
   std::map<Tick, std::unique_ptr<Held>> entries_;

@@ -32,12 +32,13 @@ std::vector<StreamConfig::Lattice> StreamConfig::lattices() const {
   std::vector<Lattice> out;
   std::size_t modes_at = 0, samples_at = 0;
   const auto add = [&](int n, double scale, WaveBand band) {
-    out.push_back({n, patch_x_m * scale, patch_z_m * scale, band, modes_at, samples_at});
+    out.push_back({n, patch_x_m * scale, patch_z_m * scale, band, modes_at, samples_at, false});
     modes_at += static_cast<std::size_t>(n) * (n / 2 + 1);
     samples_at += static_cast<std::size_t>(n) * n;
   };
   if (cascades.empty()) add(grid, 1.0, {});
   for (const Cascade& c : cascades) add(c.grid, static_cast<double>(c.patch_scale), c.band);
+  if (has_wake()) out.push_back({wake.grid, wake.size_m, wake.size_m, {}, modes_at, samples_at, true});
   return out;
 }
 
@@ -56,7 +57,7 @@ bool operator==(const StreamConfig& a, const StreamConfig& b) {
          a.patch_z_m == b.patch_z_m && a.gravity_mps2 == b.gravity_mps2 && a.depth_m == b.depth_m &&
          a.rate_hz == b.rate_hz && a.effective_tick_rate_hz() == b.effective_tick_rate_hz() && a.height_step_m == b.height_step_m && a.slope_step == b.slope_step &&
          a.disp_step_m == b.disp_step_m && a.normals == b.normals && a.choppy == b.choppy &&
-         a.cascades == b.cascades;
+         a.cascades == b.cascades && a.wake == b.wake;
 }
 
 std::string validate(const StreamConfig& c) {
@@ -96,6 +97,9 @@ std::string validate(const StreamConfig& c) {
     else if (c.patch_x_m * cascade.patch_scale > 1e6 || c.patch_z_m * cascade.patch_scale > 1e6)
       m << "cascade " << i << ": its patch, " << cascade.patch_scale << " x the stream's, exceeds 1e6 metres";
   }
+  if (const char* problem = c.has_wake() ? wake_problem(c.wake) : nullptr; m.str().empty() && problem)
+    m << problem << " (grid " << c.wake.grid << ", size " << c.wake.size_m << " m, decay " << c.wake.decay_per_s
+      << "/s, viscosity " << c.wake.viscosity_m2ps << " m^2/s)";
   return m.str();
 }
 

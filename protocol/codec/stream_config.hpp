@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/cascade.hpp"
+#include "common/wake_lattice.hpp"
 #include "profile.hpp"
 
 #include <cstddef>
@@ -13,6 +14,7 @@
 namespace ocean::codec {
 
 inline constexpr std::size_t kMaxCascades = 4;
+
 
 // L of a power of two n = 2^L (a lattice's side).
 int log2_of(int n);
@@ -40,6 +42,8 @@ struct StreamConfig {
   // patch above with every wave; else each cascade's, over the patch above times its scale, with
   // `grid` the first cascade's. A stream's state, fields and items are its lattices' in this order.
   std::vector<Cascade> cascades;
+  // After the sea's lattices, when wake.grid != 0 (codec version 6).
+  WakeLattice wake;
 
   // One lattice as the codec uses it.
   struct Lattice {
@@ -48,7 +52,9 @@ struct StreamConfig {
     WaveBand band;
     std::size_t modes_at;    // where its half spectrum starts in the stream's
     std::size_t samples_at;  // where its samples start in the stream's fields
+    bool wake = false;       // the wake lattice: starts at rest, damped, corrected as forced
   };
+  bool has_wake() const { return wake.grid != 0; }
   std::vector<Lattice> lattices() const;
   std::size_t samples() const;  // every lattice's n^2
   std::size_t modes() const;    // every lattice's n (n/2 + 1)

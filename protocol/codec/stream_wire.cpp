@@ -16,6 +16,7 @@ void copy_stream_fields(const From& from, To& to) {
   to.patch_z_m = from.patch_z_m;
   to.gravity_mps2 = from.gravity_mps2;
   to.depth_m = from.depth_m;
+  to.wake = from.wake;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Generator of the codec test vectors (CODEC.md section 12): two short streams of the lite profile
 // and one of mobile-choppy (codec version 3's choppy channels), written by codec version 4, and one
-// of desktop (codec version 5's cascades), as ocean-server would send them to one client - the
+// of desktop (codec version 5's cascades) and one of mobile with a wake lattice (codec version 6),
+// as ocean-server would send them to one client - the
 // Welcome, a SceneUpdate, every chunk with its envelope and its frames datagram, a few chunks a
 // decoder must refuse, and what a decoder shows once each frame completes. The truth is the scene
 // model's own field with a few samples pushed off by 0.6 step, so keys are modeled and frames carry
@@ -193,6 +194,9 @@ class Writer {
           << " disp_step_m=" << text_of(c.disp_step_m) << " normals=" << int(c.normals) << " choppy=" << int(c.choppy)
           << " max_payload=" << client_decoder_options(w).max_payload << " history_ticks=32 max_lag=1024";
     if (!c.cascades.empty()) text_ << " cascades=" << cascades_text(c.cascades);
+    if (c.has_wake())
+      text_ << " wake=" << c.wake.grid << ":" << text_of(c.wake.size_m) << ":" << text_of(c.wake.origin_x_m) << ":"
+            << text_of(c.wake.origin_z_m) << ":" << text_of(c.wake.decay_per_s) << ":" << text_of(c.wake.viscosity_m2ps);
     text_ << "\n";
     text_ << "scene from=0 serial=" << w.scene_serial << " tag=" << (w.scene_serial % 256) << " " << scene_fields(w.scene)
           << "\n";
@@ -479,14 +483,13 @@ void mobile_choppy(Writer& w) {
   const auto key = enc.encode_key(kKeyTick);
   REQUIRE(key->chunks.size() == 1);
   REQUIRE(key->stats.corrections_choppy >= 6);
-  w.comment("Refused first: the key re-signed with flag bit 4 (choppy) clear, the key with flag bit 7 set,");
-  w.comment("and the key with flag bit 5 (binary32 synthesis) clear, as version 3 would send it (the flags");
-  w.comment("are read before the CRC, so it need not be re-signed).");
+  w.comment("Refused first: the key re-signed with flag bit 4 (choppy) clear, the key re-signed with flag");
+  w.comment("bit 7 (wake, codec version 6) set, and the key with flag bit 5 (binary32 synthesis) clear, as");
+  w.comment("version 3 would send it (the flags are read before the CRC, so it need not be re-signed).");
   w.chunk(rebuilt(key->chunks[0], c.grid_log2(), [](ChunkHeader& h) { h.choppy = false; }), "not_choppy",
           ChunkError::wrong_dimensions);
-  Chunk reserved = key->chunks[0];
-  reserved.payload.at(0) |= 0x80;
-  w.chunk(reserved, "reserved_flag", ChunkError::bad_flags);
+  w.chunk(rebuilt(key->chunks[0], c.grid_log2(), [](ChunkHeader& h) { h.wake = true; }), "wake_flag",
+          ChunkError::wrong_dimensions);
   Chunk version3 = key->chunks[0];
   version3.payload.at(0) &= static_cast<std::uint8_t>(~0x20u);
   w.chunk(version3, "version_3", ChunkError::unknown_version);
@@ -578,6 +581,80 @@ void desktop_cascaded(Writer& w) {
   w.frame_in_order(*d3, "delta");
 }
 
+// A hollow 0.25 m deep, 12 m wide, moving 3 m a tick along x through the wake lattice (the truth
+// of a wake need not be a sim's: any field is corrected), heights and exact slopes added to the
+// lattice's samples of `storage`.
+void add_moving_hollow(const StreamConfig& c, Tick tick, ReconstructedFrame& storage) {
+  const StreamConfig::Lattice wake = c.lattices().back();
+  REQUIRE(wake.wake);
+  const double spacing = wake.patch_x_m / wake.n, sigma = 12.0, depth = 0.25;
+  const double cx = 60.0 + 3.0 * static_cast<double>(tick - kKeyTick), cz = 128.0;
+  for (int j = 0; j < wake.n; ++j)
+    for (int i = 0; i < wake.n; ++i) {
+      const double x = i * spacing - cx, z = j * spacing - cz;
+      const double h = -depth * std::exp(-(x * x + z * z) / (2 * sigma * sigma));
+      const std::size_t at = wake.samples_at + static_cast<std::size_t>(j) * wake.n + i;
+      storage.height.at(at) += static_cast<float>(h);
+      storage.slope_x.at(at) += static_cast<float>(-h * x / (sigma * sigma));
+      storage.slope_z.at(at) += static_cast<float>(-h * z / (sigma * sigma));
+    }
+}
+
+void mobile_wake(Writer& w) {
+  protocol::SceneParams scene = base_scene();
+  scene.size_x = scene.size_z = 64;
+  protocol::Welcome welcome = welcome_of(scene, 1, {1, 4});
+  welcome.stream.wake = WakeLattice{32, 256.0, -128.0, -128.0, 0.5, 1e-3};
+  w.comment("The mobile profile (profile 1: grid 64, slopes, 30 Hz) under 30 Hz server ticks, with a wake");
+  w.comment("lattice (codec version 6, CODEC.md 7.9): 32 x 32 samples over 256 m, decay 0.5/s, viscosity");
+  w.comment("1e-3 m^2/s (strong, so the damped recurrence shows within a few ticks). Samples 0..4095 are the");
+  w.comment("sea's, 4096..5119 the wake's. K = " + std::to_string(kKeyTick) + ". Scene 0 as lite_modeled's, at");
+  w.comment("grid 64; scene 1 from K+5 by a SceneUpdate: 20 m of water (the wake rides through the change).");
+  w.comment("The wake's truth: a hollow 0.25 m deep, 12 m wide, moving 3 m a tick along the lattice. No .f32 file.");
+  w.welcome(welcome);
+  const StreamConfig& c = w.config();
+  REQUIRE(c.has_wake());
+  REQUIRE(c.samples() == 64u * 64 + 32u * 32);
+  protocol::SceneParams scene1 = scene;
+  scene1.depth_m = 20.0;
+  const Tick change = kKeyTick + 5;
+  const protocol::SceneUpdate update{0, change, scene1, 1};
+  Encoder enc(c, server_encoder_options());
+  enc.set_scene(0, 0, scene);
+  enc.set_scene(change, 1, scene1);
+  ReconstructedFrame truth;
+  for (Tick t = kKeyTick - 1; t <= kKeyTick + 7; ++t) {
+    std::vector<Push> pushed;
+    if (t == kKeyTick) pushed = {{0, 100}, {1, 2000}};
+    model_truth(c, t < change ? scene : scene1, t, pushed, truth);
+    add_moving_hollow(c, t, truth);
+    enc.add_truth(t, TruthView{truth.height, truth.slope_x, truth.slope_z, truth.disp_x, truth.disp_z, truth.disp_xx,
+                               truth.disp_zz, truth.disp_xz});
+  }
+  w.comment("The key: the scene model's state (the wake's modes 0); the hollow comes as corrections, which a");
+  w.comment("key folds into both X(t-1) and X(t) of every lattice.");
+  w.model(kKeyTick);
+  const auto key = enc.encode_key(kKeyTick);
+  w.comment("Refused first: the key re-signed with flag bit 7 (wake) clear, as a stream without a wake would send it.");
+  w.chunk(rebuilt(key->chunks[0], c.grid_log2(), [](ChunkHeader& h) { h.wake = false; }), "not_wake",
+          ChunkError::wrong_dimensions);
+  w.frame_in_order(*key, "modeled_key");
+  w.comment("K+1 from K (lag 1: the wake's corrections go into X(t) only), K+4 from K+1 (lag 3: X(t-1) takes");
+  w.comment("D - D/3), K+6 from K+4 across the change at K+5 (the sea's lattice takes scene 1's model state at");
+  w.comment("K+5; the wake's modes advance to K+5 with scene 0's damped recurrence, then to K+6 with scene 1's),");
+  w.comment("K+7 from K+6.");
+  const auto d1 = enc.encode_delta(kKeyTick + 1, key->id);
+  w.frame_in_order(*d1, "delta");
+  const auto d4 = enc.encode_delta(kKeyTick + 4, d1->id);
+  w.frame_in_order(*d4, "delta");
+  w.scene_update(update);
+  w.model(change);
+  const auto d6 = enc.encode_delta(kKeyTick + 6, d4->id);
+  w.frame_in_order(*d6, "delta");
+  const auto d7 = enc.encode_delta(kKeyTick + 7, d6->id);
+  w.frame_in_order(*d7, "delta");
+}
+
 }  // namespace
 
 TEST_CASE("codec vectors: the generator's streams decode to the encoder's reconstructions", "[generate]") {
@@ -590,11 +667,15 @@ TEST_CASE("codec vectors: the generator's streams decode to the encoder's recons
   Writer cascaded("desktop_cascaded", "a cascaded stream (codec version 5): a modeled key with corrections in both lattices, deltas, a change of depth", 5,
                   false);
   desktop_cascaded(cascaded);
+  Writer wake("mobile_wake", "a stream with a wake lattice (codec version 6): a modeled key, deltas at lags 1 and 3, a change of depth", 6,
+              false);
+  mobile_wake(wake);
   if (const char* dir = std::getenv("OCEAN_WRITE_CODEC_VECTORS"); dir && *dir) {
     modeled.write(dir);
     explicit_key.write(dir);
     choppy.write(dir);
     cascaded.write(dir);
+    wake.write(dir);
     WARN("codec vectors written to " << dir);
   }
 }

@@ -119,6 +119,11 @@ Counts run_sequence(const std::string& name) {
       CHECK(line.u64("normals") == (c.normals ? 1u : 0u));
       CHECK(line.u64("choppy") == (c.choppy ? 1u : 0u));
       CHECK((line.fields.count("cascades") ? line.at("cascades") : std::string()) == cascades_text(c.cascades));
+      CHECK(line.fields.count("wake") == (c.has_wake() ? 1u : 0u));
+      if (c.has_wake())
+        CHECK(line.at("wake") == std::to_string(c.wake.grid) + ":" + text_of(c.wake.size_m) + ":" + text_of(c.wake.origin_x_m) +
+                                     ":" + text_of(c.wake.origin_z_m) + ":" + text_of(c.wake.decay_per_s) + ":" +
+                                     text_of(c.wake.viscosity_m2ps));
       REQUIRE(validate(c).empty());
       DecoderOptions options;
       options.max_payload = line.u64("max_payload");
@@ -250,6 +255,14 @@ TEST_CASE("codec vectors: mobile_choppy decodes bit for bit (choppy channels, Ja
   CHECK(counts.updates == 1);
   CHECK(counts.models == 2);
   CHECK(counts.chunks >= 9);  // K+3 comes in several chunks
+}
+
+TEST_CASE("codec vectors: mobile_wake decodes bit for bit (codec version 6: a wake lattice, lags 1 and 3)") {
+  const Counts counts = run_sequence("mobile_wake");
+  CHECK(counts.frames == 5);
+  CHECK(counts.refused == 1);
+  CHECK(counts.updates == 1);
+  CHECK(counts.models == 2);
 }
 
 TEST_CASE("codec vectors: desktop_cascaded decodes bit for bit (codec version 5: two lattices)") {

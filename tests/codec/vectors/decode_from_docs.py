@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# A transcription of protocol/codec/CODEC.md (codec version 5) and of PROTOCOL.md 7.1 (frame
+# A transcription of protocol/codec/CODEC.md (codec version 6, the wake lattice of section 7.9 included) and of PROTOCOL.md 7.1 (frame
 # records) into plain Python, written from the text alone (no FlatBuffers package: a few lines
 # read the Welcome and SceneUpdate tables). It checks that the two documents suffice to decode:
 # the function values of CODEC.md 12.1, the scene-model hashes of 12.2 and every chunk, refusal,
@@ -238,10 +238,9 @@ def parse_payload(env, p, max_payload, grid_log2):
     if len(p) > max_payload: raise Refused('oversized')
     if len(p) < 4: raise Refused('truncated')
     flags = p[0]
-    if flags & 0x80: raise Refused('bad_flags')  # bit 7 reserved (4 choppy: version 3; 6 cascaded: version 5)
     if not flags & 0x20: raise Refused('unknown_version')  # bit 5: binary32 synthesis, version 4
     h = dict(key=bool(flags & 1), normals=bool(flags & 2), modeled=bool(flags & 4), whole=bool(flags & 8),
-             choppy=bool(flags & 16), cascaded=bool(flags & 64), tag=p[3])
+             choppy=bool(flags & 16), cascaded=bool(flags & 64), wake=bool(flags & 128), tag=p[3])
     if h['key'] != key or (h['modeled'] and not h['key']): raise Refused('bad_flags')
     pos = 4
     if not h['whole']:
@@ -486,7 +485,7 @@ class Stream:
                 outr[r * hc + c] = outr[(n - r) * hc + c]; outi[r * hc + c] = wrap64(-outi[(n - r) * hc + c])
             outi[c] = 0; outi[(n // 2) * hc + c] = 0
         return outr, outi
-    def add_correction(self, st, height_corr):
+    def add_correction(self, st, height_corr, lag=0):  # lag: the wake's rule, Waked's business
         field = [0] * (self.n * self.n)
         for pos, v in height_corr:
             field[pos] = wrap64(v << 14)
@@ -718,7 +717,7 @@ class Cascaded:
             for ch in range(8):
                 if part[ch] is not None: out[ch] = (out[ch] or []) + part[ch]
         return out
-    def add_correction(self, st, height_corr):
+    def add_correction(self, st, height_corr, lag=0):
         parts = self.parts(st)
         for lat, p, part in zip(self.lattices, self.samples_at, parts):
             mine = [(pos - p, v) for pos, v in height_corr if p <= pos < p + lat.samples]
@@ -739,6 +738,94 @@ class CascadedModel:
         self.models = [SceneModel(lat, cascade_scene(sc, c, index)) for index, (lat, c) in enumerate(zip(stream.lattices, stream.cascades))]
     def state(self, stream, T):
         return stream.joined([m.state(lat, T) for m, lat in zip(self.models, stream.lattices)])
+
+# ---- 7.9 the wake lattice
+def div_round_sym(v, d):  # v / d rounded half away from zero
+    q = (abs(v) + d // 2) // d
+    return q if v >= 0 else -q
+
+def damped(w, g, dt):
+    if w > g:
+        wd = math.sqrt(w * w - g * g)
+        return 2.0 * det_exp_neg(g * dt) * det_cos(wd * dt), det_exp_neg(2.0 * g * dt)
+    r = math.sqrt(g * g - w * w)
+    if g + r == 0.0: return 2.0, 1.0
+    return det_exp_neg(w * w / (g + r) * dt) + det_exp_neg((g + r) * dt), det_exp_neg(2.0 * g * dt)
+
+class Waked:
+    """7.9: the sea's lattices (a Stream or Cascaded) and then the wake lattice, whose modes start at
+    rest, ring down by the damped recurrence and take a delta's corrections as motion."""
+    def __init__(self, sea, wake, gravity, R, hstep, sstep, normals, dstep, choppy):
+        grid, size, _ox, _oz, self.decay, self.visc = wake
+        self.sea = sea
+        self.wake = Stream(grid, size, size, gravity, R, hstep, sstep, normals, dstep, choppy)
+        self.L, self.normals, self.choppy, self.cascaded = sea.L, normals, choppy, sea.cascaded
+        self.hstep, self.sstep, self.dstep = hstep, sstep, dstep
+        self.wake_at, self.wake_samples_at = sea.modes, sea.samples
+        self.modes, self.samples = sea.modes + self.wake.modes, sea.samples + self.wake.samples
+        self.key_modes = sea.key_modes + [sea.modes + i for i in self.wake.key_modes]
+        self.recurrences = {}
+    def parts(self, st):
+        return ({k: v[:self.wake_at] for k, v in st.items()}, {k: v[self.wake_at:] for k, v in st.items()})
+    def joined(self, sea, wake):
+        return {k: sea[k] + wake[k] for k in ('pr', 'pi', 'cr', 'ci')}
+    def recurrence(self, D):
+        if D not in self.recurrences:
+            w = self.wake; n, hc = w.n, w.hc
+            dt = 1.0 / float(w.R)
+            a, b = [0] * (n * hc), [0] * (n * hc)
+            for r in range(n):
+                kz = kTwoPi * s_(r, n) / w.patch_z
+                for c in range(hc):
+                    kx = kTwoPi * s_(c, n) / w.patch_x
+                    k = math.sqrt(kx * kx + kz * kz)
+                    g = self.decay + 2.0 * self.visc * (k * k)
+                    x, y = damped(det_w(k, w.g, D), g, dt)
+                    a[r * hc + c] = to_fixed(x, 48); b[r * hc + c] = to_fixed(y, 48)
+            self.recurrences[D] = (self.sea.recurrence(D), a, b)
+        return self.recurrences[D]
+    def zero(self):
+        return self.joined(self.sea.zero(), self.wake.zero())
+    def advance(self, st, rec, steps):
+        sea_a, a, b = rec
+        sea, wake = self.parts(st)
+        self.sea.advance(sea, sea_a, steps)
+        for _ in range(steps):
+            for key_c, key_p in (('cr', 'pr'), ('ci', 'pi')):
+                cur = wake[key_c]; prev = wake[key_p]
+                nxt = [wrap64(mul_sym(a[i], cur[i], 48) - mul_sym(b[i], prev[i], 48)) for i in range(len(a))]
+                wake[key_p] = cur; wake[key_c] = nxt
+        st.update(self.joined(sea, wake))
+    def model(self, sc):
+        sea_model = self.sea.model(sc)
+        stream = self
+        class Model:
+            def state(self, _s, T):
+                return stream.joined(sea_model.state(stream.sea, T), stream.wake.zero())
+        return Model()
+    def synthesize(self, cr, ci, lam=0.0):
+        a = self.wake_at
+        sea = self.sea.synthesize(cr[:a], ci[:a], lam)
+        wake = self.wake.synthesize(cr[a:], ci[a:], lam)
+        return [None if s is None else s + w for s, w in zip(sea, wake)]
+    def add_correction(self, st, height_corr, lag=0):
+        sea, wake = self.parts(st)
+        p = self.wake_samples_at
+        mine = [(pos, v) for pos, v in height_corr if pos < p]
+        if mine: self.sea.add_correction(sea, mine)
+        field = [0] * self.wake.samples
+        for pos, v in height_corr:
+            if pos >= p: field[pos - p] = wrap64(v << 14)
+        dr, di = self.wake.spectrum_of(field)
+        for kc, kp, d in (('cr', 'pr', dr), ('ci', 'pi', di)):
+            wake[kc] = [wrap64(x + y) for x, y in zip(wake[kc], d)]
+            wake[kp] = [wrap64(x + (y - div_round_sym(y, 4 * lag) if lag else y)) for x, y in zip(wake[kp], d)]
+        st.update(self.joined(sea, wake))
+    def key_state(self, coefs, ps, vs):
+        k = len(self.sea.key_modes)
+        return self.joined(self.sea.key_state(coefs[:k], ps, vs), self.wake.key_state(coefs[k:], ps, vs))
+    def floats(self, fields):
+        return Stream.floats(self, fields)  # per sample
 
 def hash_state(st):
     h = 1469598103934665603
@@ -775,7 +862,13 @@ class Decoder:
     def advance(self, st, frm, to):
         now = frm
         E = self.start_of(to)
-        if E > frm:
+        if E > frm and isinstance(self.s, Waked):
+            # 7.9: the wake rides through: advanced change by change, each with its scene's recurrence
+            for e in sorted(f for f in self.scenes if frm < f <= E):
+                self.s.advance(st, self.s.recurrence(self.scenes[self.start_of(now)][1]['depth_m']), e - now); now = e
+            wake = self.s.parts(st)[1]
+            st = self.s.joined(self.s.parts(self.model_state(E))[0], wake)
+        elif E > frm:
             st = self.model_state(E); now = E
         self.s.advance(st, self.s.recurrence(self.scenes[self.start_of(now)][1]['depth_m']), to - now)
         return st
@@ -788,7 +881,8 @@ class Decoder:
         total = S + s.samples
         if h['whole']:
             h['begin'], h['end'] = 0, total
-        if h['normals'] != s.normals or h['choppy'] != s.choppy or h['cascaded'] != s.cascaded: raise Refused('wrong_dimensions')
+        if h['normals'] != s.normals or h['choppy'] != s.choppy or h['cascaded'] != s.cascaded or h['wake'] != isinstance(s, Waked):
+            raise Refused('wrong_dimensions')
         if h['begin'] >= h['end'] or h['end'] > total: raise Refused('bad_range')
         if h['key'] and not h['modeled'] and (h['pos_shift'] > 40 or h['vel_shift'] > 40): raise Refused('bad_value')
         if count == 0 or count > 4096 or index >= count: raise Refused('bad_index')
@@ -839,7 +933,7 @@ class Decoder:
                     for pos, v in p['corr'][ch]:
                         p['fields'][ch][pos] = wrap64(p['fields'][ch][pos] + (v << SHIFT[ch]))
             if p['corr'][0]:
-                s.add_correction(p['state'], p['corr'][0])
+                s.add_correction(p['state'], p['corr'][0], 0 if key else tick - baseline)
             self.states[tick] = p['state']
             del self.pending[tick]
             self.completed = (tick, p['fields'])
@@ -916,6 +1010,14 @@ SCENE = [('size_x', '<H', 0), ('size_z', '<H', 0), ('patch_x_m', '<d', 0.0), ('p
 STREAM = [('profile_id', '<B', 0), ('grid', '<H', 0), ('patch_x_m', '<d', 0.0), ('patch_z_m', '<d', 0.0), ('gravity_mps2', '<d', 0.0),
           ('depth_m', '<d', 0.0), ('rate_hz', '<H', 0), ('height_step_m', '<f', 0.0), ('slope_step', '<f', 0.0),
           ('disp_step_m', '<f', 0.0), ('normals', '<B', 0), ('choppy', '<B', 0)]
+WAKE = [('grid', '<H', 0), ('size_m', '<d', 0.0), ('origin_x_m', '<d', 0.0), ('origin_z_m', '<d', 0.0), ('decay_per_s', '<d', 0.0),
+        ('viscosity_m2ps', '<d', 0.0)]
+def read_wake(buf, stream_table):
+    # StreamParams slot 13: table WakeLattice (PROTOCOL.md 8); absent: no wake.
+    t = table_ref(buf, stream_table, 13)
+    if t is None: return None
+    w = read_table(buf, t, WAKE)
+    return tuple(w[name] for name, _, _ in WAKE)
 def read_table(buf, t, spec):
     return {name: table_field(buf, t, i, fmt, d) for i, (name, fmt, d) in enumerate(spec)}
 def read_cascades(buf, stream_table):
@@ -952,7 +1054,8 @@ def run(name):
         if kind == 'welcome':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
             assert version == 2 and bt == 2, (version, bt)
-            w = {'stream': read_table(buf, table_ref(buf, body, 1), STREAM), 'cascades': read_cascades(buf, table_ref(buf, body, 1)), 'scene': read_table(buf, table_ref(buf, body, 2), SCENE),
+            w = {'stream': read_table(buf, table_ref(buf, body, 1), STREAM), 'cascades': read_cascades(buf, table_ref(buf, body, 1)),
+                 'wake': read_wake(buf, table_ref(buf, body, 1)), 'scene': read_table(buf, table_ref(buf, body, 2), SCENE),
                  'tick_period_s': table_field(buf, body, 6, '<d', 0.0), 'max_message_bytes': table_field(buf, body, 9, '<I', 0),
                  'current_tick64': table_field(buf, body, 10, '<Q', 0), 'scene_serial': table_field(buf, body, 11, '<I', 0),
                  'current_tick': table_field(buf, body, 5, '<I', None)}
@@ -973,6 +1076,11 @@ def run(name):
             stream = kind_(*first, st['patch_x_m'], st['patch_z_m'], st['gravity_mps2'], R, st['height_step_m'], st['slope_step'], bool(st['normals']),
                            st['disp_step_m'], bool(st['choppy']))
             if cascades: assert cascades[0][1] == st['grid']
+            wake = w['wake']
+            assert f.get('wake', '') == (':'.join('%.17g' % x if isinstance(x, float) else str(x) for x in wake) if wake else '')
+            if wake:
+                stream = Waked(stream, wake, st['gravity_mps2'], R, st['height_step_m'], st['slope_step'], bool(st['normals']),
+                               st['disp_step_m'], bool(st['choppy']))
             dec = Decoder(stream, int(f['max_payload']), int(f['history_ticks']), int(f['max_lag']))
         elif kind == 'scene_update':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
@@ -1064,7 +1172,7 @@ def tables(big):
 
 
 if __name__ == '__main__':
-    for n in ['lite_modeled', 'lite_explicit', 'mobile_choppy', 'desktop_cascaded']:
+    for n in ['lite_modeled', 'lite_explicit', 'mobile_choppy', 'desktop_cascaded', 'mobile_wake']:
         t0 = time.time()
         run(n)
         print('  ', round(time.time() - t0, 1), 's')
