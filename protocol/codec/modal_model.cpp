@@ -125,14 +125,14 @@ void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t 
   // Mode by mode, every step: each mode's recurrence is its own, so any split of the modes gives
   // the same integers. Each mode is read before it is written, so `out` may be `from`.
   const std::int64_t* a = a_.data();
-  const std::int64_t* b = b_.data() - wake_at_;  // indexed by mode, from wake_at_ on
   const auto damped = [&](const std::vector<std::int64_t>& prev, const std::vector<std::int64_t>& cur,
                           std::vector<std::int64_t>& out_prev, std::vector<std::int64_t>& out_cur, std::size_t begin,
                           std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       std::int64_t p = prev[i], c = cur[i];
       for (std::uint64_t step = 0; step < steps; ++step) {
-        const std::int64_t next = wsub(mul_round_sym(a[i], c, kRecurrenceBits), mul_round_sym(b[i], p, kRecurrenceBits));
+        const std::int64_t next =
+            wsub(mul_round_sym(a[i], c, kRecurrenceBits), mul_round_sym(b_[i - wake_at_], p, kRecurrenceBits));
         p = c;
         c = next;
       }

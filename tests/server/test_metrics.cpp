@@ -209,7 +209,7 @@ TEST_CASE("server metrics register the documented families", "[metrics]") {
   REQUIRE(build);
   CHECK(build->value == 1.0);
   CHECK(build->labels.at("protocol") == "2");
-  CHECK(build->labels.at("codec") == "5");
+  CHECK(build->labels.at("codec") == "6");
   CHECK(!build->labels.at("version").empty());
 }
 
