@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "common/wake_lattice.hpp"
+#include "vessel_track.hpp"
 #include "profile.hpp"
 #include "scene_params.hpp"
 #include "wire_limits.hpp"
@@ -147,6 +148,8 @@ Problem check(const wire::Hello& m, const wire::Message&, std::size_t, wire::Tra
   return text(m.client_name(), kMaxClientNameBytes, "Hello.client_name", "UTF-8, at most 64 bytes");
 }
 
+Problem check_vessels(const wire::Welcome& m);
+
 Problem check(const wire::Welcome& m, const wire::Message&, std::size_t, wire::Transport) {
   if (auto p = session(m.session_id(), "Welcome.session_id")) return p;
   if (!m.stream()) return fail(Reason::missing_field, "Welcome.stream", "present");
@@ -172,6 +175,30 @@ Problem check(const wire::Welcome& m, const wire::Message&, std::size_t, wire::T
     return fail(Reason::bad_cookie, "Welcome.udp_cookie", "empty when udp_port is 0");
   if (m.max_message_bytes() < kMinMaxMessageBytes || m.max_message_bytes() > kMaxMaxMessageBytes)
     return fail(Reason::out_of_range, "Welcome.max_message_bytes", "in [1200, 4194304]");
+  return check_vessels(m);
+}
+
+// Each vessel a track model::validate accepts in a world of +-1e7 m (PROTOCOL.md 8), and only
+// beside a wake lattice they can force.
+Problem check_vessels(const wire::Welcome& m) {
+  if (!m.vessels() || m.vessels()->size() == 0) return kOk;
+  if (!m.stream()->wake()) return fail(Reason::bad_dimensions, "Welcome.vessels", "absent without StreamParams.wake");
+  if (m.vessels()->size() > kMaxVessels) return fail(Reason::bad_dimensions, "Welcome.vessels", "at most 32 vessels");
+  model::TrackLimits limits;
+  limits.world_min_m = -1e7;
+  limits.world_max_m = 1e7;
+  for (const wire::Vessel* v : *m.vessels()) {
+    if (!v->waypoints() || v->waypoints()->size() == 0 || v->waypoints()->size() > kMaxWaypoints)
+      return fail(Reason::bad_dimensions, "Vessel.waypoints", "1..64 waypoints");
+    model::VesselTrack track;
+    track.hull = {v->length_m(), v->beam_m(), v->draft_m()};
+    track.repeat = v->repeat();
+    for (const wire::Waypoint* p : *v->waypoints()) track.points.push_back({p->t_s(), p->x_m(), p->z_m()});
+    if (!model::validate(track, limits).empty())
+      return fail(Reason::out_of_range, "Welcome.vessels",
+                  "hulls (0, 400] m long, beam (0, length], draft (0, 25] m; waypoints within 1e7 m, times from 0 "
+                  "increasing, legs at most 20 m/s, a repeating track closed");
+  }
   return kOk;
 }
 

@@ -106,6 +106,17 @@ Bytes encode(const Welcome& m) {
   const auto scene = scene_of(fbb, m.scene);
   const auto offered = bytes_of(fbb, m.offered_profiles);
   const auto cookie = bytes_of(fbb, m.udp_cookie);
+  Offset<flatbuffers::Vector<Offset<wire::Vessel>>> vessels = 0;
+  if (!m.vessels.empty()) {
+    std::vector<Offset<wire::Vessel>> out;
+    for (const model::VesselTrack& v : m.vessels) {
+      std::vector<wire::Waypoint> points;
+      for (const model::Waypoint& p : v.points) points.emplace_back(p.t_s, p.x_m, p.z_m);
+      out.push_back(wire::CreateVessel(fbb, v.id, v.hull.length_m, v.hull.beam_m, v.hull.draft_m, v.repeat,
+                                       fbb.CreateVectorOfStructs(points)));
+    }
+    vessels = fbb.CreateVector(out);
+  }
   wire::WelcomeBuilder b(fbb);
   b.add_session_id(m.session_id);
   b.add_stream(stream);
@@ -118,6 +129,7 @@ Bytes encode(const Welcome& m) {
   b.add_udp_port(m.udp_port);
   b.add_udp_cookie(cookie);
   b.add_max_message_bytes(m.max_message_bytes);
+  if (!m.vessels.empty()) b.add_vessels(vessels);
   return finish(fbb, wire::Body::Welcome, b.Finish());
 }
 

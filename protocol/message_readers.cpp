@@ -76,6 +76,16 @@ Welcome read(const wire::Welcome& m) {
   out.udp_cookie = bytes_of(m.udp_cookie());
   out.max_message_bytes = m.max_message_bytes();
   out.scene_serial = m.scene_serial();
+  if (m.vessels())
+    for (const wire::Vessel* v : *m.vessels()) {
+      model::VesselTrack track;
+      track.id = v->id();
+      track.hull = {v->length_m(), v->beam_m(), v->draft_m()};
+      track.repeat = v->repeat();
+      if (v->waypoints())
+        for (const wire::Waypoint* p : *v->waypoints()) track.points.push_back({p->t_s(), p->x_m(), p->z_m()});
+      out.vessels.push_back(std::move(track));
+    }
   return out;
 }
 

@@ -5,6 +5,7 @@
 
 #include "common/cascade.hpp"
 #include "common/wake_lattice.hpp"
+#include "vessel_track.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -63,6 +64,7 @@ struct Welcome {
   Bytes udp_cookie;
   std::uint32_t max_message_bytes = 0;
   std::uint32_t scene_serial = 0;  // the serial of `scene`; chunks name it mod 256
+  std::vector<model::VesselTrack> vessels;  // forcing the stream's wake lattice (CODEC.md 7.9)
   bool operator==(const Welcome&) const = default;
 };
 

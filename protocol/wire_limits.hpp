@@ -48,6 +48,9 @@ inline constexpr std::size_t kUdpHelloMinBytes = 256;
 inline constexpr std::size_t kMinCookieBytes = 8;
 inline constexpr std::size_t kMaxCookieBytes = 64;
 inline constexpr std::size_t kMaxOfferedProfiles = 16;
+// Welcome.vessels (PROTOCOL.md 8): at most this many, each of at most kMaxWaypoints points.
+inline constexpr std::size_t kMaxVessels = 32;
+inline constexpr std::size_t kMaxWaypoints = 64;
 inline constexpr std::size_t kMaxClientNameBytes = 64;
 inline constexpr std::size_t kMaxAdminTokenBytes = 128;
 inline constexpr std::size_t kMaxTextBytes = 256;

@@ -2,7 +2,6 @@
 #include "wake_field.hpp"
 
 #include "c2r_transform.hpp"
-#include "r2c_transform.hpp"
 #include "sea_model.hpp"
 
 #include <algorithm>
@@ -10,14 +9,9 @@
 #include <numbers>
 
 namespace ocean::sim {
-namespace {
 
-// A hull's pressure is laid out to this many standard deviations (e^-12.5 of its peak beyond).
-constexpr double kSplatSigmas = 5.0;
-
-}  // namespace
-
-WakeField::WakeField(const WakeRegion& region) : region_(region), columns_(region.n / 2 + 1) {
+WakeField::WakeField(const WakeRegion& region)
+    : region_(region), columns_(region.n / 2 + 1), pressure_(region.n, region.size_m) {
   const int n = region.n;
   if (n < 16 || n > 4096 || (n & (n - 1)) != 0)
     throw ParamError(bad_param("wake n", n, "a power of two in [16, 4096]"));
@@ -41,7 +35,7 @@ WakeField::WakeField(const WakeRegion& region) : region_(region), columns_(regio
     }
   eta_.assign(modes, {});
   velocity_.assign(modes, {});
-  pressure_ = std::make_unique<R2cTransform>(n, n);
+  forcing_.assign(modes, {});
   synthesis_ = std::make_unique<C2rTransform>(n, n);
 }
 
@@ -88,46 +82,14 @@ void WakeField::prepare_step(double dt_s) {
   }
 }
 
-// p / (rho g) of a Gaussian hull on the region's grid (wrapping at its edges): draft
-// exp(-along^2 / (2 sx^2) - across^2 / (2 sz^2)).
-void WakeField::splat(const HullPose& pose, float* grid) const {
-  const int n = region_.n;
-  const double dx = region_.size_m / n;
-  const double sx = std::max(0.25 * pose.hull.length_m, dx), sz = std::max(0.25 * pose.hull.beam_m, dx);
-  const double c = std::cos(pose.heading_rad), s = std::sin(pose.heading_rad);
-  const double reach = kSplatSigmas * std::max(sx, sz);
-  const int i0 = static_cast<int>(std::floor((pose.x_m - reach) / dx)), i1 = static_cast<int>(std::ceil((pose.x_m + reach) / dx));
-  const int j0 = static_cast<int>(std::floor((pose.z_m - reach) / dx)), j1 = static_cast<int>(std::ceil((pose.z_m + reach) / dx));
-  for (int j = j0; j <= j1; ++j)
-    for (int i = i0; i <= i1; ++i) {
-      const double x = i * dx - pose.x_m, z = j * dx - pose.z_m;
-      const double along = x * c + z * s, across = -x * s + z * c;
-      const double e = 0.5 * (along * along / (sx * sx) + across * across / (sz * sz));
-      if (e > 0.5 * kSplatSigmas * kSplatSigmas) continue;
-      const int wi = ((i % n) + n) % n, wj = ((j % n) + n) % n;
-      grid[static_cast<std::size_t>(wj) * n + wi] += static_cast<float>(pose.hull.draft_m * std::exp(-e));
-    }
-}
-
 void WakeField::step(double dt_s, std::span<const HullPose> mid) {
   if (!(dt_s > 0.0 && dt_s <= 1.0)) throw ParamError(bad_param("wake dt", dt_s, "(0, 1] s"));
   prepare_step(dt_s);
-  const int n = region_.n;
-  const std::size_t samples = static_cast<std::size_t>(n) * n;
-  float* grid = pressure_->input();
-  std::fill(grid, grid + samples, 0.0f);
-  for (const HullPose& pose : mid) splat(pose, grid);
-  const fftwf_complex* spectrum = nullptr;
-  if (!mid.empty()) {
-    pressure_->execute();
-    spectrum = pressure_->output();
-  }
-  // Fourier series coefficients of the grid: the transform over n^2.
-  const double scale = 1.0 / static_cast<double>(samples);
+  std::fill(forcing_.begin(), forcing_.end(), std::complex<double>{});
+  for (const HullPose& pose : mid) pressure_.add(pose, 1.0, forcing_.data());
   for (std::size_t m = 0; m < eta_.size(); ++m) {
     if (c_ev_[m] == 0.0 && c_vv_[m] == 0.0) continue;  // a mode that never moves (prepare_step)
-    const std::complex<double> p =
-        spectrum ? std::complex<double>(spectrum[m][0], spectrum[m][1]) * scale : std::complex<double>{};
+    const std::complex<double> p = forcing_[m];
     const std::complex<double> xi = eta_[m] + p, v = velocity_[m];
     eta_[m] = c_ee_[m] * xi + c_ev_[m] * v - p;
     velocity_[m] = c_ve_[m] * xi + c_vv_[m] * v;

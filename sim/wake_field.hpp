@@ -7,11 +7,14 @@
 // dispersion relation allows: the Kelvin wedge, the transverse wavelength 2 pi U^2 / g, rings at
 // the group velocity, all without tuning. Pressure is held over a step at its value mid-step and
 // the oscillator is advanced exactly, so a step costs one rotation per mode. The hulls' pressure
-// is laid on the region's grid and transformed once a step, so a step costs the same for one hull
-// as for sixteen. gamma = decay + 2 nu k^2: a wake fades, so the sea at a tick depends on a
+// comes straight as Fourier coefficients (model/hull_pressure.hpp: the codec predicts the same
+// forcing), a complex product per mode and hull a step. gamma = decay + 2 nu k^2: a wake fades, so the sea at a tick depends on a
 // bounded history of poses.
 // Pure: time steps are arguments; the same poses give the same bits in any process.
 #pragma once
+
+#include "hull_pressure.hpp"
+#include "vessel_track.hpp"
 
 #include <complex>
 #include <cstddef>
@@ -23,25 +26,9 @@
 namespace ocean::sim {
 
 class C2rTransform;
-class R2cTransform;
 
-// A hull as the water feels it: a Gaussian pressure patch of the hull's displacement, standard
-// deviations a quarter of the length and beam (at least the region's sample spacing: the grid
-// holds nothing narrower), peak pressure rho g draft.
-struct Hull {
-  double length_m = 40.0;
-  double beam_m = 8.0;
-  double draft_m = 2.0;
-};
-
-// Where a hull is at one instant, in the region's metres (x east, z north), heading in radians
-// from +x towards +z.
-struct HullPose {
-  Hull hull;
-  double x_m = 0.0;
-  double z_m = 0.0;
-  double heading_rad = 0.0;
-};
+using model::Hull;
+using model::HullPose;
 
 struct WakeRegion {
   double size_m = 1024.0;   // the square's side
@@ -59,7 +46,8 @@ class WakeField {
   WakeField(WakeField&&) noexcept;
   WakeField& operator=(WakeField&&) noexcept;
 
-  // Advances by dt seconds with the hulls at `mid` (their poses at the middle of the step).
+  // Advances by dt seconds with the hulls at `mid` (their poses at the middle of the step, in the
+  // region's metres from its corner).
   void step(double dt_s, std::span<const HullPose> mid);
 
   // Heights (m) at the n x n sample points x = i size/n, z = j size/n, row j = z, column i = x.
@@ -75,7 +63,6 @@ class WakeField {
 
  private:
   void prepare_step(double dt_s);
-  void splat(const HullPose& pose, float* grid) const;
 
   WakeRegion region_;
   int columns_;                  // n / 2 + 1: the half spectrum a real field needs
@@ -83,7 +70,8 @@ class WakeField {
   std::vector<double> omega_, gamma_;
   // Per mode of the half spectrum: eta and eta' (complex Fourier coefficients of the height).
   std::vector<std::complex<double>> eta_, velocity_;
-  std::unique_ptr<R2cTransform> pressure_;  // p / (rho g) on the grid, to its spectrum
+  model::HullPressure<model::Libm> pressure_;  // p / (rho g) of the hulls, per mode
+  std::vector<std::complex<double>> forcing_;
   std::unique_ptr<C2rTransform> synthesis_;
   // The exact propagator of each mode for the last dt (recomputed when dt changes).
   double step_dt_ = 0.0;

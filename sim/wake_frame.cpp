@@ -50,6 +50,13 @@ void synthesize(C2rTransform& fft, fftwf_complex* spectrum,
 }  // namespace
 
 void WakeSampler::sample(const WakeField& wake, int grid, FrameRequest request, double choppiness, Frame& out) {
+  const WakeField* one = &wake;
+  sample(std::span<const WakeField* const>(&one, 1), grid, request, choppiness, out);
+}
+
+void WakeSampler::sample(std::span<const WakeField* const> wakes, int grid, FrameRequest request, double choppiness,
+                         Frame& out) {
+  const WakeField& wake = *wakes.front();
   const int n = wake.region().n;
   if (grid < 2 || grid > n || (grid & (grid - 1)) != 0)
     throw ParamError(bad_param("wake sample grid", grid, "a power of two up to the wake's " + std::to_string(n)));
@@ -62,8 +69,8 @@ void WakeSampler::sample(const WakeField& wake, int grid, FrameRequest request, 
     if (signed_j == -grid / 2) continue;
     const int wake_row = signed_j >= 0 ? signed_j : signed_j + n;
     for (int i = 0; i < grid / 2; ++i)
-      p.band[static_cast<std::size_t>(j) * columns + i] =
-          wake.modes()[static_cast<std::size_t>(wake_row) * wake_columns + i];
+      for (const WakeField* w : wakes)
+        p.band[static_cast<std::size_t>(j) * columns + i] += w->modes()[static_cast<std::size_t>(wake_row) * wake_columns + i];
   }
   const double size = wake.region().size_m;
   out.n_x = out.n_z = grid;

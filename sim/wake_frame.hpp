@@ -10,6 +10,7 @@
 
 #include <map>
 #include <memory>
+#include <span>
 
 namespace ocean::sim {
 
@@ -23,6 +24,8 @@ class WakeSampler {
   // `out` becomes the wake's frame on a grid x grid lattice (a power of two, at most the field's n),
   // choppy channels scaled by `choppiness`.
   void sample(const WakeField& wake, int grid, FrameRequest request, double choppiness, Frame& out);
+  // The same of the sum of several fields over one region.
+  void sample(std::span<const WakeField* const> wakes, int grid, FrameRequest request, double choppiness, Frame& out);
 
  private:
   struct Plan;

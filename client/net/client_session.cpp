@@ -176,6 +176,7 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   options.parallel = config_.decode_parallel;
   try {
     decoder_ = std::make_unique<codec::Decoder>(config, options);
+    if (config.has_wake()) decoder_->set_vessels(welcome.vessels);  // their hulls force the wake
   } catch (const std::invalid_argument& e) {
     return close(std::string("cannot build the decoder for Welcome.stream: ") + e.what());
   }

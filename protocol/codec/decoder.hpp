@@ -46,6 +46,8 @@ class Decoder {
   // are refused as unknown_scene. Throws std::invalid_argument when the scene does not fit.
   void add_scene(Tick from, std::uint8_t tag, const model::SceneParams& scene) { scenes_.add(from, tag, scene); }
   const SceneTimeline& scenes() const { return scenes_; }
+  // The vessels forcing the stream's wake lattice (Welcome.vessels; CODEC.md 7.9).
+  void set_vessels(std::vector<model::VesselTrack> vessels) { scenes_.set_vessels(std::move(vessels)); }
 
   // Takes one chunk; on any error nothing inside the decoder changes.
   ChunkError accept(const ChunkView& chunk);

@@ -75,6 +75,8 @@ class Encoder {
   // first encode, and announced to the decoders before any frame of its ticks reaches them.
   void set_scene(Tick from, std::uint8_t tag, const model::SceneParams& scene);
   const SceneTimeline& scenes() const { return scenes_; }
+  // The vessels forcing the stream's wake lattice, as its decoders are told (CODEC.md 7.9).
+  void set_vessels(std::vector<model::VesselTrack> vessels) { scenes_.set_vessels(std::move(vessels)); }
   // That scene's model, built ahead elsewhere (SceneTimeline::provide_model): the first frame of
   // a new scene then costs no model build (a desktop stream's took 50-100 ms).
   void provide_scene_model(Tick from, const model::SceneParams& scene, std::shared_ptr<const SceneModel> model) {

@@ -10,8 +10,10 @@
 #include "field_conversion.hpp"
 #include "fixed_point.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace ocean::codec {
@@ -25,15 +27,32 @@ const StreamConfig& require_valid(const StreamConfig& config) {
 
 // The wake's damped oscillator sampled every dt (CODEC.md 7.9): the roots of x^2 - a x + b are
 // e^{(-g +- i wd) dt}, or e^{-(g -+ r) dt} for an overdamped mode; b = e^{-2 g dt} either way.
-std::pair<double, double> damped_recurrence(double w, double g, double dt) {
+// `stay` is how much of a displacement held still is left after dt (the propagator's
+// position-to-position term), which shapes the response to pressure held over a step.
+struct Damped {
+  double a, b, stay;
+};
+Damped damped_recurrence(double w, double g, double dt) {
   if (w > g) {
-    const double wd = std::sqrt(w * w - g * g);
-    return {2.0 * model::det_exp_neg(g * dt) * model::det_cos(wd * dt), model::det_exp_neg(2.0 * g * dt)};
+    const double wd = std::sqrt(w * w - g * g), e = model::det_exp_neg(g * dt);
+    const double c = model::det_cos(wd * dt), s = model::det_sin(wd * dt);
+    return {2.0 * e * c, model::det_exp_neg(2.0 * g * dt), e * (c + g * (s / wd))};
   }
   const double r = std::sqrt(g * g - w * w);
-  if (g + r == 0.0) return {2.0, 1.0};  // the mean level of undamped water: it stays
+  if (g + r == 0.0) return {2.0, 1.0, 1.0};  // the mean level of undamped water: it stays
   // g - r as w^2 / (g + r): no cancellation when the damping is strong.
-  return {model::det_exp_neg(w * w / (g + r) * dt) + model::det_exp_neg((g + r) * dt), model::det_exp_neg(2.0 * g * dt)};
+  const double slow = model::det_exp_neg(w * w / (g + r) * dt), fast = model::det_exp_neg((g + r) * dt);
+  const double sd = r * dt < 1e-8 ? model::det_exp_neg(g * dt) * dt : 0.5 * (slow - fast) / r;
+  return {slow + fast, model::det_exp_neg(2.0 * g * dt), 0.5 * (slow + fast) + g * sd};
+}
+
+// Nearest integer (halves up), saturated at +-2^62, 0 for NaN: a forcing term from any hull.
+std::int64_t forcing_units(double x) {
+  constexpr double kLimit = 0x1.0p62;
+  if (!(x == x)) return 0;
+  if (x >= kLimit) return static_cast<std::int64_t>(kLimit);
+  if (x <= -kLimit) return -static_cast<std::int64_t>(kLimit);
+  return static_cast<std::int64_t>(std::floor(x + 0.5));
 }
 
 // A state value as binary32 (CODEC.md 7.2): through double, as every language can.
@@ -68,9 +87,14 @@ ModalModel::ModalModel(const StreamConfig& config)
           continue;
         }
         const double g = config.wake.decay_per_s + 2.0 * config.wake.viscosity_m2ps * (k * k);
-        const auto [a, b] = damped_recurrence(w, g, dt);
-        a_.push_back(model::to_fixed(a, kRecurrenceBits));
-        b_.push_back(model::to_fixed(b, kRecurrenceBits));
+        const Damped d = damped_recurrence(w, g, dt);
+        a_.push_back(model::to_fixed(d.a, kRecurrenceBits));
+        b_.push_back(model::to_fixed(d.b, kRecurrenceBits));
+        // Pressure p held over each step adds alpha p(t-1) + beta p(t) (CODEC.md 7.9); the
+        // Nyquist row and column are not forced (a real field cannot hold them as a hull would).
+        const bool nyquist = r == n / 2 || c == n / 2;
+        alpha_.push_back(nyquist ? 0.0 : d.a - d.b - d.stay);
+        beta_.push_back(nyquist ? 0.0 : d.stay - 1.0);
       }
     }
     auto grid = std::make_unique<Grid>(n);
@@ -119,9 +143,10 @@ void ModalModel::advance(ModalState& s) const { advance(s, s, 1); }
 
 void ModalModel::advance(ModalState& s, std::uint64_t steps) const { advance(s, s, steps); }
 
-void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t steps, const ParallelFor& parallel) const {
-  const std::size_t m = a_.size();
-  for (auto* v : {&out.prev.re, &out.prev.im, &out.cur.re, &out.cur.im}) v->resize(m);
+void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t steps, const ParallelFor& parallel,
+                         WakeForcing* forcing, Tick first) const {
+  const std::size_t m = forcing ? wake_at_ : a_.size();  // with forcing, the wake's modes below
+  for (auto* v : {&out.prev.re, &out.prev.im, &out.cur.re, &out.cur.im}) v->resize(a_.size());
   // Mode by mode, every step: each mode's recurrence is its own, so any split of the modes gives
   // the same integers. Each mode is read before it is written, so `out` may be `from`.
   const std::int64_t* a = a_.data();
@@ -172,6 +197,40 @@ void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t 
     modes(from.prev.re, from.cur.re, out.prev.re, out.cur.re, begin, end);
     modes(from.prev.im, from.cur.im, out.prev.im, out.cur.im, begin, end);
   });
+  if (forcing) advance_forced_wake(from, out, steps, *forcing, first);
+}
+
+// Tick by tick, since each tick's forcing is every mode's: X(t+1) = a X(t) - b X(t-1) + F(t),
+// F(t) = alpha P(t-1) + beta P(t) rounded to units, P(t) the hulls' pressure during the step from t.
+void ModalModel::advance_forced_wake(const ModalState& from, ModalState& out, std::uint64_t steps, WakeForcing& forcing,
+                                     Tick first) const {
+  const std::size_t begin = wake_at_, count = a_.size() - wake_at_;
+  if (&from != &out)
+    for (auto [src, dst] : {std::pair{&from.prev.re, &out.prev.re}, std::pair{&from.prev.im, &out.prev.im},
+                            std::pair{&from.cur.re, &out.cur.re}, std::pair{&from.cur.im, &out.cur.im}})
+      std::copy(src->begin() + static_cast<std::ptrdiff_t>(begin), src->end(), dst->begin() + static_cast<std::ptrdiff_t>(begin));
+  std::vector<double> f_re(count), f_im(count);
+  for (std::uint64_t step = 0; step < steps; ++step) {
+    const Tick t = first + step;
+    {
+      const std::vector<std::complex<double>>& before = forcing.pressure(t - 1);
+      for (std::size_t i = 0; i < count; ++i) {
+        f_re[i] = alpha_[i] * before[i].real();
+        f_im[i] = alpha_[i] * before[i].imag();
+      }
+    }
+    const std::vector<std::complex<double>>& during = forcing.pressure(t);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::size_t mode = begin + i;
+      for (auto [prev, cur, f] : {std::tuple{&out.prev.re, &out.cur.re, f_re[i] + beta_[i] * during[i].real()},
+                                  std::tuple{&out.prev.im, &out.cur.im, f_im[i] + beta_[i] * during[i].imag()}}) {
+        const std::int64_t p = (*prev)[mode], c = (*cur)[mode];
+        (*prev)[mode] = c;
+        (*cur)[mode] = wadd(wsub(mul_round_sym(a_[mode], c, kRecurrenceBits), mul_round_sym(b_[i], p, kRecurrenceBits)),
+                            forcing_units(f));
+      }
+    }
+  }
 }
 
 void ModalModel::build_choppy_factors(double choppiness) {

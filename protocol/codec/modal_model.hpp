@@ -10,6 +10,8 @@
 #include "float_fft.hpp"
 #include "parallel_for.hpp"
 #include "stream_config.hpp"
+#include "tick.hpp"
+#include "wake_forcing.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -85,7 +87,10 @@ class ModalModel {
   void advance(ModalState& state, std::uint64_t steps) const;
   // `from` advanced by `steps` ticks into `out` (another state, or `from` itself): a delta's state
   // needs no copy of its baseline first; parts of the modes side by side with `parallel`.
-  void advance(const ModalState& from, ModalState& out, std::uint64_t steps, const ParallelFor& parallel = {}) const;
+  // With `forcing`, the wake lattice's modes also take the hulls' pressure, the first step being
+  // from tick `first` (CODEC.md 7.9).
+  void advance(const ModalState& from, ModalState& out, std::uint64_t steps, const ParallelFor& parallel = {},
+               WakeForcing* forcing = nullptr, Tick first = 0) const;
 
   // Heights (and slopes, displacement and its derivatives when streamed) of the field whose
   // spectrum is `cur`; `choppiness` is the lambda of the scene in force at the frame's tick.
@@ -142,6 +147,9 @@ class ModalModel {
   // The wake lattice's damped recurrence X(t+1) = a X(t) - b X(t-1): b in Q48 per mode from wake_at_.
   std::size_t wake_at_ = 0;
   std::vector<std::int64_t> b_;
+  std::vector<double> alpha_, beta_;  // per wake mode: the forcing's weights of P(t-1) and P(t)
+  void advance_forced_wake(const ModalState& from, ModalState& out, std::uint64_t steps, WakeForcing& forcing,
+                           Tick first) const;
   std::vector<std::int32_t> key_modes_;
   // Choppy: kx/k, kz/k, kx^2/k, kz^2/k, kx kz/k per half-spectrum mode (0 at DC and Nyquist), and
   // their float factors for the choppiness they were last built for.

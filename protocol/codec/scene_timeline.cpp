@@ -92,7 +92,12 @@ void SceneTimeline::advance(ModalState& state, Tick from, Tick to) const {
     }
     now = start;
   }
-  recurrence_of(held_at(now)).advance(state, to - now);
+  recurrence_of(held_at(now)).advance(state, state, to - now, {}, forcing_.get(), now);
+}
+
+void SceneTimeline::set_vessels(std::vector<model::VesselTrack> vessels) {
+  if (!config_.has_wake()) throw std::invalid_argument("SceneTimeline::set_vessels: the stream has no wake lattice");
+  forcing_ = vessels.empty() ? nullptr : std::make_unique<WakeForcing>(config_, std::move(vessels));
 }
 
 // The wake is the vessels' doing, not the weather's: it rides through a change of scene, advanced
@@ -101,7 +106,7 @@ void SceneTimeline::advance(ModalState& state, Tick from, Tick to) const {
 void SceneTimeline::replace_sea(ModalState& state, Tick from, Tick start) const {
   Tick now = from;
   for (auto it = entries_.upper_bound(from); it != entries_.end() && it->first <= start; ++it) {
-    recurrence_of(held_at(now)).advance(state, it->first - now);
+    recurrence_of(held_at(now)).advance(state, state, it->first - now, {}, forcing_.get(), now);
     now = it->first;
   }
   ModalState sea;
@@ -129,7 +134,7 @@ void SceneTimeline::advance(const ModalState& state, Tick from, Tick to, ModalSt
     advance(out, from, to);  // else from the scene model's state: `state` plays no part
     return;
   }
-  recurrence_of(held_at(from)).advance(state, out, to - from, parallel);
+  recurrence_of(held_at(from)).advance(state, out, to - from, parallel, forcing_.get(), from);
 }
 
 void SceneTimeline::forget_before(Tick tick) {

@@ -9,6 +9,7 @@
 #include "scene_model.hpp"
 #include "stream_config.hpp"
 #include "tick.hpp"
+#include "wake_forcing.hpp"
 
 #include <cstdint>
 #include <map>
@@ -58,6 +59,10 @@ class SceneTimeline {
   StreamConfig model_config(const model::SceneParams& scene) const;
   void provide_model(Tick from, const model::SceneParams& scene, std::shared_ptr<const SceneModel> model);
 
+  // The vessels whose hulls force the wake lattice (CODEC.md 7.9), from now on in every advance;
+  // none: the wake rings down freely. Throws std::invalid_argument for a stream without a wake.
+  void set_vessels(std::vector<model::VesselTrack> vessels);
+
   // Forgets entries no longer in force at `tick` or later.
   void forget_before(Tick tick);
   std::size_t size() const { return entries_.size(); }
@@ -73,6 +78,8 @@ class SceneTimeline {
   StreamConfig config_;
   std::map<Tick, std::unique_ptr<Held>> entries_;
   ModelCache* cache_ = nullptr;
+  // Mutable: it keeps each tick's pressure for the next advance across it.
+  mutable std::unique_ptr<WakeForcing> forcing_;
 };
 
 }  // namespace ocean::codec

@@ -201,6 +201,7 @@ class Writer {
     text_ << "scene from=0 serial=" << w.scene_serial << " tag=" << (w.scene_serial % 256) << " " << scene_fields(w.scene)
           << "\n";
     decoder_ = std::make_unique<Decoder>(c, client_decoder_options(w));
+    if (c.has_wake()) decoder_->set_vessels(w.vessels);
     decoder_->add_scene(0, static_cast<std::uint8_t>(w.scene_serial), w.scene);
     config_ = c;
     positions_.assign(std::begin(kSamplePositions), std::end(kSamplePositions));
@@ -605,12 +606,27 @@ void mobile_wake(Writer& w) {
   scene.size_x = scene.size_z = 64;
   protocol::Welcome welcome = welcome_of(scene, 1, {1, 4});
   welcome.stream.wake = WakeLattice{32, 256.0, -128.0, -128.0, 0.5, 1e-3};
+  // One vessel, 20 x 5 m with 1.2 m draft, waiting at (-80, 10) until 10 s before K, then sailing
+  // east at 6 m/s through the lattice's middle; one moored (a single waypoint), heading +x.
+  const double k_s = static_cast<double>(kKeyTick) / kTickRateHz;
+  model::VesselTrack sailing;
+  sailing.id = 1;
+  sailing.hull = {20.0, 5.0, 1.2};
+  sailing.points = {{0.0, -80.0, 10.0}, {k_s - 10.0, -80.0, 10.0}, {k_s + 90.0, 520.0, 10.0}};
+  model::VesselTrack moored;
+  moored.id = 2;
+  moored.hull = {12.0, 4.0, 0.8};
+  moored.points = {{0.0, 40.0, -30.0}};
+  welcome.vessels = {sailing, moored};
   w.comment("The mobile profile (profile 1: grid 64, slopes, 30 Hz) under 30 Hz server ticks, with a wake");
   w.comment("lattice (codec version 6, CODEC.md 7.9): 32 x 32 samples over 256 m, decay 0.5/s, viscosity");
   w.comment("1e-3 m^2/s (strong, so the damped recurrence shows within a few ticks). Samples 0..4095 are the");
   w.comment("sea's, 4096..5119 the wake's. K = " + std::to_string(kKeyTick) + ". Scene 0 as lite_modeled's, at");
   w.comment("grid 64; scene 1 from K+5 by a SceneUpdate: 20 m of water (the wake rides through the change).");
   w.comment("The wake's truth: a hollow 0.25 m deep, 12 m wide, moving 3 m a tick along the lattice. No .f32 file.");
+  w.comment("Welcome.vessels: vessel 1 (20 x 5 m, draft 1.2) waits at (-80, 10) until K/30 - 10 s, then sails");
+  w.comment("east at 6 m/s along z = 10; vessel 2 (12 x 4 m, draft 0.8) is moored at (40, -30): their");
+  w.comment("pressure forces every advance of the wake's modes (CODEC.md 7.9), and the hollow is corrected.");
   w.welcome(welcome);
   const StreamConfig& c = w.config();
   REQUIRE(c.has_wake());
@@ -622,6 +638,7 @@ void mobile_wake(Writer& w) {
   Encoder enc(c, server_encoder_options());
   enc.set_scene(0, 0, scene);
   enc.set_scene(change, 1, scene1);
+  enc.set_vessels(welcome.vessels);
   ReconstructedFrame truth;
   for (Tick t = kKeyTick - 1; t <= kKeyTick + 7; ++t) {
     std::vector<Push> pushed;

@@ -131,6 +131,8 @@ Counts run_sequence(const std::string& name) {
       options.max_lag = static_cast<std::uint32_t>(line.u64("max_lag"));
       CHECK(options.max_payload == protocol::max_chunk_payload(welcome->max_message_bytes));
       decoder = std::make_unique<Decoder>(c, options);
+      if (c.has_wake()) decoder->set_vessels(welcome->vessels);  // Welcome.vessels force the wake (CODEC.md 7.9)
+      CHECK(welcome->vessels.empty() == !c.has_wake());
     } else if (line.kind == "scene") {
       REQUIRE(decoder);
       REQUIRE(welcome);

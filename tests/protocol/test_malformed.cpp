@@ -241,7 +241,7 @@ TEST_CASE("dimensions: grid, flags, scene size and vector lengths must agree") {
   expect_rejected(welcome, from_server(), Reason::bad_dimensions);
 
   welcome = sample_welcome();
-  welcome.stream = StreamParams{3, 256, 256, 256, 9.81, 0, 30, 0.01f, 1.0f / 256, 0.01f, true, true, {}};
+  welcome.stream = StreamParams{3, 256, 256, 256, 9.81, 0, 30, 0.01f, 1.0f / 256, 0.01f, true, true, {}, {}};
   welcome.offered_profiles = {3};
   welcome.scene.size_z = 128;  // a 256 stream cannot come from a 128-row scene
   expect_rejected(welcome, from_server(), Reason::bad_dimensions);

@@ -1,5 +1,6 @@
 // The wake's physics from its own heights: the Kelvin wedge, the transverse wavelength along the
 // track, and the decay once a vessel is gone - none of it tuned into the model.
+#include "epoch_wake.hpp"
 #include "wake_field.hpp"
 
 #include <catch2/catch.hpp>
@@ -38,7 +39,7 @@ Run run_straight(double speed, double seconds, double x0 = 100.0, double depth_m
   for (int step = 0; step * dt < seconds; ++step) {
     const double t_mid = (step + 0.5) * dt;
     const double ease = t_mid < 20.0 ? std::pow(std::sin(0.5 * pi * t_mid / 20.0), 2) : 1.0;
-    HullPose pose{Hull{hull.length_m, hull.beam_m, hull.draft_m * ease}, x0 + speed * t_mid, 512.0, 0.0};
+    HullPose pose{Hull{hull.length_m, hull.beam_m, hull.draft_m * ease}, x0 + speed * t_mid, 512.0, 1.0, 0.0};
     run.field.step(dt, std::span<const HullPose>(&pose, 1));
     run.x_end = x0 + speed * (step + 1) * dt;
   }
@@ -64,7 +65,7 @@ double dominant_wavenumber(const std::vector<double>& samples, double dx, double
 
 TEST_CASE("a hull at rest sits in its hydrostatic hollow, and the field stays real") {
   // A beam the 4 m samples resolve (a narrower hull's hollow is the band-limited one).
-  const HullPose pose{Hull{40.0, 16.0, 2.0}, 512.0, 512.0, 0.3};
+  const HullPose pose{Hull{40.0, 16.0, 2.0}, 512.0, 512.0, std::cos(0.3), std::sin(0.3)};
   // Damped so that the start-up oscillation dies within the minute: what stays is the hollow.
   WakeRegion still = test_region();
   still.decay_per_s = 0.2;
@@ -115,7 +116,7 @@ TEST_CASE("in shallow water the transverse waves are the ones whose phase speed 
 TEST_CASE("a dropped object's rings: at radius r and time t the waves are those of group velocity r / t") {
   WakeField field(test_region());
   // An object of about a tonne lands at the centre and is gone after half a second.
-  const HullPose drop{Hull{8.0, 8.0, 1.0}, 512.0, 512.0, 0.0};
+  const HullPose drop{Hull{8.0, 8.0, 1.0}, 512.0, 512.0, 1.0, 0.0};
   for (int s = 0; s < 5; ++s) field.step(0.1, std::span<const HullPose>(&drop, 1));
   for (int s = 0; s < 400; ++s) field.step(0.1, {});
   const double t = field.time_s() - 0.25;  // from the middle of the impulse
@@ -180,10 +181,57 @@ TEST_CASE("any damping gives finite heights: an overdamped sea relaxes, it never
     WakeRegion r = test_region();
     r.decay_per_s = decay;
     WakeField field(r);
-    const HullPose pose{Hull{40.0, 16.0, 2.0}, 512.0, 512.0, 0.0};
+    const HullPose pose{Hull{40.0, 16.0, 2.0}, 512.0, 512.0, 1.0, 0.0};
     for (int s = 0; s < 20; ++s) field.step(1.0, std::span<const HullPose>(&pose, 1));
     CAPTURE(decay);
     for (double v : field.heights()) REQUIRE(std::isfinite(v));
     CHECK(std::fabs(field.height_at(512.0, 512.0)) <= 2.5);
   }
+}
+
+// The server's wake is a function of the tracks alone (EpochWake): a replica that starts late, or
+// a ground truth asked for an older tick, computes the same bits as one that stepped all along.
+TEST_CASE("the wake at a tick is the same however it was reached") {
+  ocean::model::VesselTrack v;
+  v.hull = Hull{20.0, 5.0, 1.2};
+  v.repeat = true;
+  v.points = {{0, -100, -100}, {25, 100, -100}, {50, 100, 100}, {75, -100, 100}, {100, -100, -100}};  // 8 m/s
+  WakeRegion region;
+  region.size_m = 512.0;
+  region.n = 64;
+  region.decay_per_s = 0.3;  // e^{-3} of an amplitude in one 10 s epoch
+  const auto make = [&] { return EpochWake(region, -256.0, -256.0, {v}, 10, 100); };
+  EpochWake all_along = make(), late = make(), back = make();
+  for (std::int64_t t = 0; t <= 450; ++t) all_along.advance_to(t);
+  late.advance_to(450);
+  back.advance_to(600);
+  back.advance_to(450);
+  const auto same = [](const EpochWake& a, const EpochWake& b) {
+    const auto fa = a.fields(), fb = b.fields();
+    if (fa.size() != fb.size()) return false;
+    for (std::size_t i = 0; i < fa.size(); ++i)
+      if (fa[i]->modes() != fb[i]->modes()) return false;
+    return true;
+  };
+  CHECK(all_along.fields().size() == 2);  // epochs 3 and 4 of 100 ticks
+  CHECK(same(all_along, late));
+  CHECK(same(all_along, back));
+  // And the dropped history was small: the wake of epochs 3 and 4 against one stepped from 0.
+  WakeField from_rest(region);
+  for (std::int64_t t = 0; t < 450; ++t) {
+    HullPose pose = ocean::model::pose_at(v, (static_cast<double>(t) + 0.5) / 10);
+    pose.x_m += 256.0;
+    pose.z_m += 256.0;
+    from_rest.step(0.1, std::span<const HullPose>(&pose, 1));
+  }
+  double diff = 0, size = 0;
+  for (std::size_t m = 0; m < from_rest.modes().size(); ++m) {
+    std::complex<double> sum{};
+    for (const WakeField* f : all_along.fields()) sum += f->modes()[m];
+    diff += std::norm(sum - from_rest.modes()[m]);
+    size += std::norm(from_rest.modes()[m]);
+  }
+  CAPTURE(diff, size);
+  // Dropped: forcing before tick 300, at least 15 s old, its amplitude below e^{-4.5}.
+  CHECK(diff < 1e-3 * size);
 }

@@ -394,7 +394,7 @@ class Stream:
         return {'pr': [0] * m, 'pi': [0] * m, 'cr': [0] * m, 'ci': [0] * m}
     def model(self, sc):
         return SceneModel(self, sc)
-    def advance(self, st, a, steps):
+    def advance(self, st, a, steps, first=None):
         for _ in range(steps):
             for key_c, key_p in (('cr', 'pr'), ('ci', 'pi')):
                 cur = st[key_c]; prev = st[key_p]
@@ -706,7 +706,7 @@ class Cascaded:
         return sum((lat.recurrence(D) for lat in self.lattices), [])
     def zero(self):
         return self.joined([lat.zero() for lat in self.lattices])
-    def advance(self, st, a, steps):
+    def advance(self, st, a, steps, first=None):
         Stream.advance(self, st, a, steps)  # per mode: the lattices need no telling apart
     def model(self, sc):
         return CascadedModel(self, sc)
@@ -744,19 +744,72 @@ def div_round_sym(v, d):  # v / d rounded half away from zero
     q = (abs(v) + d // 2) // d
     return q if v >= 0 else -q
 
-def damped(w, g, dt):
+def damped(w, g, dt):  # a, b and stay (7.9)
     if w > g:
-        wd = math.sqrt(w * w - g * g)
-        return 2.0 * det_exp_neg(g * dt) * det_cos(wd * dt), det_exp_neg(2.0 * g * dt)
+        wd = math.sqrt(w * w - g * g); e = det_exp_neg(g * dt)
+        c = det_cos(wd * dt); s = det_sin(wd * dt)
+        return 2.0 * e * c, det_exp_neg(2.0 * g * dt), e * (c + g * (s / wd))
     r = math.sqrt(g * g - w * w)
-    if g + r == 0.0: return 2.0, 1.0
-    return det_exp_neg(w * w / (g + r) * dt) + det_exp_neg((g + r) * dt), det_exp_neg(2.0 * g * dt)
+    if g + r == 0.0: return 2.0, 1.0, 1.0
+    slow = det_exp_neg(w * w / (g + r) * dt); fast = det_exp_neg((g + r) * dt)
+    sd = det_exp_neg(g * dt) * dt if r * dt < 1e-8 else 0.5 * (slow - fast) / r
+    return slow + fast, det_exp_neg(2.0 * g * dt), 0.5 * (slow + fast) + g * sd
+
+def pose_at(v, t):  # model/vessel_track.cpp: (x, z, dir_x, dir_z) at t seconds
+    p = v['points']
+    def heading_of(a, b, prev):
+        dx = b[1] - a[1]; dz = b[2] - a[2]
+        if dx == 0.0 and dz == 0.0: return prev
+        length = math.sqrt(dx * dx + dz * dz)
+        return (dx / length, dz / length)
+    x, z = p[0][1], p[0][2]
+    if len(p) == 1: return x, z, 1.0, 0.0
+    heading = (1.0, 0.0)
+    rng = range(1, len(p)) if v['repeat'] else range(len(p) - 1, 0, -1)
+    for i in rng: heading = heading_of(p[i - 1], p[i], heading)
+    period = p[-1][0]
+    if v['repeat'] and t > period: t = math.fmod(t, period)
+    if t <= 0.0: return x, z, heading[0], heading[1]
+    for i in range(1, len(p)):
+        heading = heading_of(p[i - 1], p[i], heading)
+        if t <= p[i][0] or i + 1 == len(p):
+            f = min(1.0, (t - p[i - 1][0]) / (p[i][0] - p[i - 1][0]))
+            return p[i - 1][1] + f * (p[i][1] - p[i - 1][1]), p[i - 1][2] + f * (p[i][2] - p[i - 1][2]), heading[0], heading[1]
+    return x, z, heading[0], heading[1]
+
+def hull_pressure(lat, v, x, z, dx, dz, scale, out):  # model/hull_pressure.cpp in the Det arithmetic
+    n, hc, size = lat.n, lat.hc, lat.patch_x
+    sa = 0.25 * v['length_m']; sc = 0.25 * v['beam_m']
+    peak = v['draft_m'] * (kTwoPi * sa * sc) / (size * size)
+    col = []
+    for c in range(hc):
+        ph = kTwoPi * s_(c, n) / size * x
+        col.append((det_cos(ph), -det_sin(ph)))
+    for r in range(n):
+        ph = kTwoPi * s_(r, n) / size * z
+        rr, ri = scale * det_cos(ph), -(scale * det_sin(ph))
+        kz = kTwoPi * s_(r, n) / size
+        for c in range(hc):
+            kx = kTwoPi * s_(c, n) / size
+            ka = kx * dx + kz * dz; kc = kz * dx - kx * dz
+            e = peak * det_exp(-(0.5 * (sa * sa * (ka * ka) + sc * sc * (kc * kc))))
+            kr, ki = col[c]
+            re = rr * kr - ri * ki; im = rr * ki + ri * kr
+            o = out[r * hc + c]
+            out[r * hc + c] = (o[0] + re * e, o[1] + im * e)
+
+def forcing_units(x):
+    if x != x: return 0
+    if x >= 2.0 ** 62: return 1 << 62
+    if x <= -2.0 ** 62: return -(1 << 62)
+    return math.floor(x + 0.5)
 
 class Waked:
     """7.9: the sea's lattices (a Stream or Cascaded) and then the wake lattice, whose modes start at
     rest, ring down by the damped recurrence and take a delta's corrections as motion."""
     def __init__(self, sea, wake, gravity, R, hstep, sstep, normals, dstep, choppy):
-        grid, size, _ox, _oz, self.decay, self.visc = wake
+        grid, size, self.ox, self.oz, self.decay, self.visc = wake
+        self.vessels = []; self.pressures = {}
         self.sea = sea
         self.wake = Stream(grid, size, size, gravity, R, hstep, sstep, normals, dstep, choppy)
         self.L, self.normals, self.choppy, self.cascaded = sea.L, normals, choppy, sea.cascaded
@@ -774,26 +827,46 @@ class Waked:
             w = self.wake; n, hc = w.n, w.hc
             dt = 1.0 / float(w.R)
             a, b = [0] * (n * hc), [0] * (n * hc)
+            alpha, beta = [0.0] * (n * hc), [0.0] * (n * hc)
             for r in range(n):
                 kz = kTwoPi * s_(r, n) / w.patch_z
                 for c in range(hc):
                     kx = kTwoPi * s_(c, n) / w.patch_x
                     k = math.sqrt(kx * kx + kz * kz)
                     g = self.decay + 2.0 * self.visc * (k * k)
-                    x, y = damped(det_w(k, w.g, D), g, dt)
+                    x, y, stay = damped(det_w(k, w.g, D), g, dt)
                     a[r * hc + c] = to_fixed(x, 48); b[r * hc + c] = to_fixed(y, 48)
-            self.recurrences[D] = (self.sea.recurrence(D), a, b)
+                    if r != n // 2 and c != n // 2:
+                        alpha[r * hc + c] = x - y - stay; beta[r * hc + c] = stay - 1.0
+            self.recurrences[D] = (self.sea.recurrence(D), a, b, alpha, beta)
         return self.recurrences[D]
     def zero(self):
         return self.joined(self.sea.zero(), self.wake.zero())
-    def advance(self, st, rec, steps):
-        sea_a, a, b = rec
+    def pressure(self, t):  # the hulls during the step from tick t, in units x n^2 (7.9)
+        if t not in self.pressures:
+            w = self.wake
+            out = [(0.0, 0.0)] * w.modes
+            scale = float(w.n) * float(w.n) / (self.hstep / 65536.0)
+            for v in self.vessels:
+                x, z, dx, dz = pose_at(v, (float(t) + 0.5) / float(w.R))
+                hull_pressure(w, v, x - self.ox, z - self.oz, dx, dz, scale, out)
+            self.pressures[t] = out
+        return self.pressures[t]
+    def advance(self, st, rec, steps, first=None):
+        sea_a, a, b, alpha, beta = rec
         sea, wake = self.parts(st)
         self.sea.advance(sea, sea_a, steps)
-        for _ in range(steps):
-            for key_c, key_p in (('cr', 'pr'), ('ci', 'pi')):
+        for step in range(steps):
+            if self.vessels:
+                t = first + step
+                p0, p1 = self.pressure(t - 1), self.pressure(t)
+                F = [(forcing_units(alpha[i] * p0[i][0] + beta[i] * p1[i][0]), forcing_units(alpha[i] * p0[i][1] + beta[i] * p1[i][1]))
+                     for i in range(len(a))]
+            else:
+                F = [(0, 0)] * len(a)
+            for key_c, key_p, part in (('cr', 'pr', 0), ('ci', 'pi', 1)):
                 cur = wake[key_c]; prev = wake[key_p]
-                nxt = [wrap64(mul_sym(a[i], cur[i], 48) - mul_sym(b[i], prev[i], 48)) for i in range(len(a))]
+                nxt = [wrap64(wrap64(mul_sym(a[i], cur[i], 48) - mul_sym(b[i], prev[i], 48)) + F[i][part]) for i in range(len(a))]
                 wake[key_p] = cur; wake[key_c] = nxt
         st.update(self.joined(sea, wake))
     def model(self, sc):
@@ -865,12 +938,12 @@ class Decoder:
         if E > frm and isinstance(self.s, Waked):
             # 7.9: the wake rides through: advanced change by change, each with its scene's recurrence
             for e in sorted(f for f in self.scenes if frm < f <= E):
-                self.s.advance(st, self.s.recurrence(self.scenes[self.start_of(now)][1]['depth_m']), e - now); now = e
+                self.s.advance(st, self.s.recurrence(self.scenes[self.start_of(now)][1]['depth_m']), e - now, now); now = e
             wake = self.s.parts(st)[1]
             st = self.s.joined(self.s.parts(self.model_state(E))[0], wake)
         elif E > frm:
             st = self.model_state(E); now = E
-        self.s.advance(st, self.s.recurrence(self.scenes[self.start_of(now)][1]['depth_m']), to - now)
+        self.s.advance(st, self.s.recurrence(self.scenes[self.start_of(now)][1]['depth_m']), to - now, now)
         return st
     def accept(self, env, payload):
         self.completed = None
@@ -1018,6 +1091,21 @@ def read_wake(buf, stream_table):
     if t is None: return None
     w = read_table(buf, t, WAKE)
     return tuple(w[name] for name, _, _ in WAKE)
+def read_vessels(buf, welcome_table):
+    # Welcome slot 12: a vector of tables Vessel {id:uint32, length_m, beam_m, draft_m:double,
+    # repeat:bool, waypoints:[struct Waypoint {t_s, x_m, z_m:double}]} (PROTOCOL.md 8).
+    v = table_ref(buf, welcome_table, 12)
+    if v is None: return []
+    out = []
+    for i in range(u32(buf, v)):
+        at = v + 4 + 4 * i
+        t = at + u32(buf, at)
+        w = table_ref(buf, t, 5)
+        points = [struct.unpack_from('<ddd', buf, w + 4 + 24 * j) for j in range(u32(buf, w))] if w is not None else []
+        out.append({'id': table_field(buf, t, 0, '<I', 0), 'length_m': table_field(buf, t, 1, '<d', 0.0),
+                    'beam_m': table_field(buf, t, 2, '<d', 0.0), 'draft_m': table_field(buf, t, 3, '<d', 0.0),
+                    'repeat': bool(table_field(buf, t, 4, '<B', 0)), 'points': points})
+    return out
 def read_table(buf, t, spec):
     return {name: table_field(buf, t, i, fmt, d) for i, (name, fmt, d) in enumerate(spec)}
 def read_cascades(buf, stream_table):
@@ -1055,7 +1143,7 @@ def run(name):
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
             assert version == 2 and bt == 2, (version, bt)
             w = {'stream': read_table(buf, table_ref(buf, body, 1), STREAM), 'cascades': read_cascades(buf, table_ref(buf, body, 1)),
-                 'wake': read_wake(buf, table_ref(buf, body, 1)), 'scene': read_table(buf, table_ref(buf, body, 2), SCENE),
+                 'wake': read_wake(buf, table_ref(buf, body, 1)), 'vessels': read_vessels(buf, body), 'scene': read_table(buf, table_ref(buf, body, 2), SCENE),
                  'tick_period_s': table_field(buf, body, 6, '<d', 0.0), 'max_message_bytes': table_field(buf, body, 9, '<I', 0),
                  'current_tick64': table_field(buf, body, 10, '<Q', 0), 'scene_serial': table_field(buf, body, 11, '<I', 0),
                  'current_tick': table_field(buf, body, 5, '<I', None)}
@@ -1081,6 +1169,7 @@ def run(name):
             if wake:
                 stream = Waked(stream, wake, st['gravity_mps2'], R, st['height_step_m'], st['slope_step'], bool(st['normals']),
                                st['disp_step_m'], bool(st['choppy']))
+                stream.vessels = w['vessels']
             dec = Decoder(stream, int(f['max_payload']), int(f['history_ticks']), int(f['max_lag']))
         elif kind == 'scene_update':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))

@@ -1,21 +1,40 @@
 // VesselTrack: where a vessel is at any time - waypoints with the times it passes them, straight
 // at constant speed between them, heading along the leg it is on - and the check that refuses a
 // track no vessel could sail (too fast, out of the world, times out of order). Pure: time is an
-// argument, so every replica computes the same poses from the same track.
+// argument, so every replica computes the same poses from the same track, and only + - * / and
+// sqrt (no libm), so the sim and every decoder compute the same bits (the codec's wake forcing,
+// CODEC.md 7.9, uses these poses).
 #pragma once
-
-#include "wake_field.hpp"
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace ocean::sim {
+namespace ocean::model {
+
+// A hull as the water feels it: a Gaussian pressure patch of the hull's displacement, standard
+// deviations a quarter of the length and beam, peak pressure rho g draft (hull_pressure.hpp).
+struct Hull {
+  double length_m = 40.0;
+  double beam_m = 8.0;
+  double draft_m = 2.0;
+  bool operator==(const Hull&) const = default;
+};
+
+// Where a hull is at one instant (x east, z north, metres) and which way it points: the unit
+// vector (dir_x, dir_z) of its heading.
+struct HullPose {
+  Hull hull;
+  double x_m = 0.0;
+  double z_m = 0.0;
+  double dir_x = 1.0, dir_z = 0.0;
+};
 
 struct Waypoint {
   double t_s = 0.0;  // seconds from the track's start
   double x_m = 0.0;
   double z_m = 0.0;
+  bool operator==(const Waypoint&) const = default;
 };
 
 struct VesselTrack {
@@ -25,6 +44,7 @@ struct VesselTrack {
   // waypoint is its first again, and it sails round with the period of the last time.
   std::vector<Waypoint> points;
   bool repeat = false;
+  bool operator==(const VesselTrack&) const = default;
 };
 
 struct TrackLimits {
@@ -40,4 +60,4 @@ std::string validate(const VesselTrack& track, const TrackLimits& limits);
 // a track that does not repeat, at the last (moored: the heading of its last leg).
 HullPose pose_at(const VesselTrack& track, double t_s);
 
-}  // namespace ocean::sim
+}  // namespace ocean::model

@@ -1,20 +1,26 @@
 #include "vessel_track.hpp"
 
-#include "sea_model.hpp"
+#include "param_message.hpp"
 
+#include <algorithm>
 #include <cmath>
 
-namespace ocean::sim {
+namespace ocean::model {
 namespace {
 
 std::string vessel(const VesselTrack& track) { return "vessel " + std::to_string(track.id) + ": "; }
 
 bool inside(double v, const TrackLimits& limits) { return v >= limits.world_min_m && v <= limits.world_max_m; }
 
-// The heading of the leg from a to b; a leg of no length keeps `previous`.
-double heading_of(const Waypoint& a, const Waypoint& b, double previous) {
+// The heading of the leg from a to b as a unit vector; a leg of no length keeps `previous`.
+struct Direction {
+  double x = 1.0, z = 0.0;
+};
+Direction heading_of(const Waypoint& a, const Waypoint& b, Direction previous) {
   const double dx = b.x_m - a.x_m, dz = b.z_m - a.z_m;
-  return dx == 0.0 && dz == 0.0 ? previous : std::atan2(dz, dx);
+  if (dx == 0.0 && dz == 0.0) return previous;
+  const double length = std::sqrt(dx * dx + dz * dz);
+  return {dx / length, dz / length};
 }
 
 }  // namespace
@@ -52,11 +58,11 @@ std::string validate(const VesselTrack& track, const TrackLimits& limits) {
 
 HullPose pose_at(const VesselTrack& track, double t_s) {
   const std::vector<Waypoint>& p = track.points;
-  HullPose pose{track.hull, p.front().x_m, p.front().z_m, 0.0};
+  HullPose pose{track.hull, p.front().x_m, p.front().z_m, 1.0, 0.0};
   if (p.size() == 1) return pose;
   // Before the first leg that moves (a dwell at the start), the heading it will sail; on a circuit,
   // the one it arrived with, so a lap joins the next without a turn.
-  double heading = 0.0;
+  Direction heading;
   if (track.repeat)
     for (std::size_t i = 1; i < p.size(); ++i) heading = heading_of(p[i - 1], p[i], heading);
   else
@@ -65,7 +71,8 @@ HullPose pose_at(const VesselTrack& track, double t_s) {
   double t = t_s;
   if (track.repeat && t > period) t = std::fmod(t, period);
   if (t <= 0.0) {
-    pose.heading_rad = heading;
+    pose.dir_x = heading.x;
+    pose.dir_z = heading.z;
     return pose;
   }
   for (std::size_t i = 1; i < p.size(); ++i) {
@@ -74,11 +81,12 @@ HullPose pose_at(const VesselTrack& track, double t_s) {
       const double f = std::min(1.0, (t - p[i - 1].t_s) / (p[i].t_s - p[i - 1].t_s));
       pose.x_m = p[i - 1].x_m + f * (p[i].x_m - p[i - 1].x_m);
       pose.z_m = p[i - 1].z_m + f * (p[i].z_m - p[i - 1].z_m);
-      pose.heading_rad = heading;
+      pose.dir_x = heading.x;
+      pose.dir_z = heading.z;
       return pose;
     }
   }
   return pose;
 }
 
-}  // namespace ocean::sim
+}  // namespace ocean::model

@@ -1,0 +1,37 @@
+// WakeForcing: the hulls' pressure on the wake lattice at every tick (CODEC.md 7.9), from the
+// vessels' tracks: each hull at its pose half a tick after the tick (the middle of the step that
+// starts there), as Fourier coefficients in the stream's height units (model/hull_pressure.hpp in
+// the Det arithmetic), so every decoder and the encoder predict the same forcing. Kept per tick,
+// since every delta that advances across a tick needs it.
+#pragma once
+
+#include "hull_pressure.hpp"
+#include "stream_config.hpp"
+#include "tick.hpp"
+#include "vessel_track.hpp"
+
+#include <complex>
+#include <map>
+#include <vector>
+
+namespace ocean::codec {
+
+class WakeForcing {
+ public:
+  // `config` must have a wake lattice.
+  WakeForcing(const StreamConfig& config, std::vector<model::VesselTrack> vessels);
+
+  // The pressure of every hull during the step from tick t to t + 1, per wake mode.
+  const std::vector<std::complex<double>>& pressure(Tick t);
+
+  const std::vector<model::VesselTrack>& vessels() const { return vessels_; }
+
+ private:
+  StreamConfig::Lattice lattice_;
+  double origin_x_m_, origin_z_m_, rate_hz_, scale_;
+  std::vector<model::VesselTrack> vessels_;
+  model::HullPressure<model::Det> hulls_;
+  std::map<Tick, std::vector<std::complex<double>>> ticks_;  // the newest ones asked for
+};
+
+}  // namespace ocean::codec

@@ -1,0 +1,63 @@
+#include "epoch_wake.hpp"
+
+#include "sea_model.hpp"
+
+namespace ocean::sim {
+
+EpochWake::EpochWake(const WakeRegion& region, double origin_x_m, double origin_z_m,
+                     std::vector<model::VesselTrack> tracks, int rate_hz, std::int64_t epoch_ticks)
+    : region_(region),
+      origin_x_m_(origin_x_m),
+      origin_z_m_(origin_z_m),
+      tracks_(std::move(tracks)),
+      rate_hz_(rate_hz),
+      epoch_ticks_(epoch_ticks) {
+  if (rate_hz < 1) throw ParamError(bad_param("wake rate_hz", rate_hz, ">= 1"));
+  if (epoch_ticks < 1) throw ParamError(bad_param("wake epoch_ticks", static_cast<double>(epoch_ticks), ">= 1"));
+}
+
+EpochWake::Part EpochWake::fresh(std::int64_t start) const { return Part{start, start, WakeField(region_)}; }
+
+void EpochWake::step(Part& part) {
+  const std::int64_t t = part.reached;
+  poses_.clear();
+  // Forced only during its own epoch; afterwards its waves ring down freely.
+  if (t < part.start + epoch_ticks_) {
+    const double mid_s = (static_cast<double>(t) + 0.5) / rate_hz_;
+    for (const model::VesselTrack& v : tracks_) {
+      HullPose pose = model::pose_at(v, mid_s);
+      pose.x_m -= origin_x_m_;
+      pose.z_m -= origin_z_m_;
+      poses_.push_back(pose);
+    }
+  }
+  part.field.step(1.0 / rate_hz_, poses_);
+  ++part.reached;
+}
+
+void EpochWake::advance_to(std::int64_t tick) {
+  if (tick < 0) throw ParamError(bad_param("wake tick", static_cast<double>(tick), ">= 0"));
+  const std::int64_t epoch = tick / epoch_ticks_;
+  const std::int64_t first = std::max<std::int64_t>(0, epoch - 1);
+  // Keep the parts of epochs `first` and `epoch` that can still step forward to `tick`.
+  std::vector<Part> kept;
+  for (std::int64_t e = first; e <= epoch; ++e) {
+    const std::int64_t start = e * epoch_ticks_;
+    Part* found = nullptr;
+    for (Part& p : parts_)
+      if (p.start == start && p.reached <= tick) found = &p;
+    kept.push_back(found ? std::move(*found) : fresh(start));
+  }
+  parts_ = std::move(kept);
+  for (Part& p : parts_)
+    while (p.reached < tick) step(p);
+  tick_ = tick;
+}
+
+std::vector<const WakeField*> EpochWake::fields() const {
+  std::vector<const WakeField*> out;
+  for (const Part& p : parts_) out.push_back(&p.field);
+  return out;
+}
+
+}  // namespace ocean::sim

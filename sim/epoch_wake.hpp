@@ -1,0 +1,52 @@
+// EpochWake: the wake at any tick as a function of the vessels' tracks alone, with a bounded
+// history, so that a server started late, a replica and a load test's ground truth all compute the
+// same bits. Time is cut into epochs of `epoch_ticks`; the wake at tick t is the response to the
+// hulls' forcing during the epoch before t's and during t's own, each started at rest at its epoch's
+// first tick. Forcing older than that is dropped: with the default damping its waves have decayed
+// to e^{-decay x epoch} of their size (5 % after 60 s at 0.05/s) when they go. Two fields are
+// stepped, so a wake costs twice one field; catching up from nothing costs at most two epochs.
+#pragma once
+
+#include "vessel_track.hpp"
+#include "wake_field.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace ocean::sim {
+
+class EpochWake {
+ public:
+  // Tracks in world metres; the region's corner is at (origin_x_m, origin_z_m); tick t is at
+  // t / rate_hz seconds, and the step from t holds each hull at its pose at (t + 0.5) / rate_hz.
+  EpochWake(const WakeRegion& region, double origin_x_m, double origin_z_m, std::vector<model::VesselTrack> tracks,
+            int rate_hz, std::int64_t epoch_ticks);
+
+  // The wake at `tick` (any tick >= 0; stepping forward is cheap, going back recomputes).
+  void advance_to(std::int64_t tick);
+  // The fields whose sum is the wake at the tick last advanced to (one or two).
+  std::vector<const WakeField*> fields() const;
+
+  const WakeRegion& region() const { return region_; }
+  std::int64_t tick() const { return tick_; }
+
+ private:
+  struct Part {
+    std::int64_t start = 0;  // its epoch's first tick: at rest there, forced until the next epoch
+    std::int64_t reached = 0;
+    WakeField field;
+  };
+  void step(Part& part);
+  Part fresh(std::int64_t start) const;
+
+  WakeRegion region_;
+  double origin_x_m_, origin_z_m_;
+  std::vector<model::VesselTrack> tracks_;
+  int rate_hz_;
+  std::int64_t epoch_ticks_;
+  std::int64_t tick_ = -1;
+  std::vector<Part> parts_;  // the previous epoch's (if any), then the current one's
+  std::vector<HullPose> poses_;
+};
+
+}  // namespace ocean::sim
