@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 
 namespace ocean {
 
@@ -16,6 +17,9 @@ struct WakeLattice {
   double origin_z_m = 0.0;
   double decay_per_s = 0.02;    // amplitude decay rate of every wave, [0, 10] per second
   double viscosity_m2ps = 1e-6; // adds 2 nu k^2 to the decay, [0, 1] m^2/s
+  // The wake's bounded history: at tick t it is the response to the hulls during the epoch of
+  // t and the one before, epochs of this many ticks from tick 0, each from rest (CODEC.md 7.9).
+  std::uint32_t epoch_ticks = 1800;
   bool operator==(const WakeLattice&) const = default;
 };
 
@@ -27,6 +31,7 @@ inline const char* wake_problem(const WakeLattice& w) {
   if (!in(w.origin_x_m, -1e9, 1e9) || !in(w.origin_z_m, -1e9, 1e9)) return "wake origin: finite, within 1e9 metres";
   if (!in(w.decay_per_s, 0.0, 10.0)) return "wake decay_per_s: in [0, 10] per second";
   if (!in(w.viscosity_m2ps, 0.0, 1.0)) return "wake viscosity_m2ps: in [0, 1] m^2/s";
+  if (w.epoch_ticks < 1 || w.epoch_ticks > (1u << 24)) return "wake epoch_ticks: in [1, 2^24]";
   return nullptr;
 }
 

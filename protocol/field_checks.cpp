@@ -128,7 +128,8 @@ Problem check_stream(const wire::StreamParams& s) {
   }
   if (!same) return fail(Reason::bad_dimensions, "StreamParams.cascades", "the profile's cascades");
   if (const wire::WakeLattice* w = s.wake()) {
-    const WakeLattice wake{w->grid(), w->size_m(), w->origin_x_m(), w->origin_z_m(), w->decay_per_s(), w->viscosity_m2ps()};
+    const WakeLattice wake{w->grid(),        w->size_m(),         w->origin_x_m(), w->origin_z_m(),
+                           w->decay_per_s(), w->viscosity_m2ps(), w->epoch_ticks()};
     if (const char* problem = wake_problem(wake)) return fail(Reason::out_of_range, "StreamParams.wake", problem);
   }
   if (auto p = patch(s.patch_x_m(), "StreamParams.patch_x_m")) return p;

@@ -47,7 +47,7 @@ Offset<wire::StreamParams> stream_of(FlatBufferBuilder& fbb, const StreamParams&
   Offset<wire::WakeLattice> wake = 0;
   if (s.wake.grid != 0)
     wake = wire::CreateWakeLattice(fbb, static_cast<std::uint16_t>(s.wake.grid), s.wake.size_m, s.wake.origin_x_m,
-                                   s.wake.origin_z_m, s.wake.decay_per_s, s.wake.viscosity_m2ps);
+                                   s.wake.origin_z_m, s.wake.decay_per_s, s.wake.viscosity_m2ps, s.wake.epoch_ticks);
   wire::StreamParamsBuilder b(fbb);
   b.add_profile_id(s.profile_id);
   b.add_grid(s.grid);

@@ -35,7 +35,8 @@ StreamParams read(const wire::StreamParams& s) {
     for (const wire::Cascade* c : *s.cascades())
       out.cascades.push_back({c->patch_scale(), c->grid(), {c->band_min(), c->band_max()}});
   if (const wire::WakeLattice* w = s.wake())
-    out.wake = {w->grid(), w->size_m(), w->origin_x_m(), w->origin_z_m(), w->decay_per_s(), w->viscosity_m2ps()};
+    out.wake = {w->grid(),        w->size_m(),         w->origin_x_m(), w->origin_z_m(),
+                w->decay_per_s(), w->viscosity_m2ps(), w->epoch_ticks()};
   return out;
 }
 

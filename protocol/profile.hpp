@@ -23,6 +23,8 @@ struct Profile {
   // The stream's lattices (codec version 5), the first of `grid` samples; empty: one lattice of
   // the scene's patch with every wave.
   std::span<const Cascade> cascades = {};
+  // Samples per side of the wake lattice (CODEC.md 7.9) when the server runs vessels.
+  std::uint16_t wake_grid = 64;
 };
 
 // Desktop: a 256 m tile of the waves under 32 m and a 2048 m cascade of the longer ones, so the
@@ -33,9 +35,9 @@ inline constexpr Cascade kDesktopCascades[] = {{1, 256, {8, 0}}, {8, 128, {0, 64
 inline constexpr Profile kProfiles[] = {
     // id  name              grid rate normals choppy  h-step  slope-step   disp-step
     {1, "mobile",          64,  30,  true,   false,  0.01f,  1.0f / 256,  0.01f},
-    {2, "desktop",         256, 30,  true,   false,  0.01f,  1.0f / 256,  0.01f, kDesktopCascades},
-    {3, "desktop-choppy",  256, 30,  true,   true,   0.01f,  1.0f / 256,  0.01f, kDesktopCascades},
-    {4, "lite",            32,  15,  true,   false,  0.02f,  1.0f / 128,  0.02f},
+    {2, "desktop",         256, 30,  true,   false,  0.01f,  1.0f / 256,  0.01f, kDesktopCascades, 128},
+    {3, "desktop-choppy",  256, 30,  true,   true,   0.01f,  1.0f / 256,  0.01f, kDesktopCascades, 128},
+    {4, "lite",            32,  15,  true,   false,  0.02f,  1.0f / 128,  0.02f, {}, 32},
     // Choppy channels are predicted from the heights like the slopes (codec version 3), so a
     // phone's storm costs what its calm sea costs on the wire; only the decode doubles.
     {5, "mobile-choppy",   64,  30,  true,   true,   0.01f,  1.0f / 256,  0.01f},

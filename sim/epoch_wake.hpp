@@ -3,7 +3,8 @@
 // same bits. Time is cut into epochs of `epoch_ticks`; the wake at tick t is the response to the
 // hulls' forcing during the epoch before t's and during t's own, each started at rest at its epoch's
 // first tick. Forcing older than that is dropped: with the default damping its waves have decayed
-// to e^{-decay x epoch} of their size (5 % after 60 s at 0.05/s) when they go. Two fields are
+// to e^{-decay x epoch} of their size when they go. The codec's decoders drop them at the same
+// ticks (CODEC.md 7.9). Two fields are
 // stepped, so a wake costs twice one field; catching up from nothing costs at most two epochs.
 #pragma once
 
@@ -14,6 +15,11 @@
 #include <vector>
 
 namespace ocean::sim {
+
+// The epoch ocean-server uses (StreamParams.wake.epoch_ticks): a minute. With the default decay
+// (0.05/s) the waves it drops have faded to e^{-3} of their size; a decoder that joins computes
+// the wake of two epochs at most from the tracks (CODEC.md 7.9).
+inline std::int64_t wake_epoch_ticks(int rate_hz) { return 60 * static_cast<std::int64_t>(rate_hz); }
 
 class EpochWake {
  public:

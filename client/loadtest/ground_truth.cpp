@@ -44,6 +44,19 @@ GroundTruth::SceneEntry* GroundTruth::scene_for(Tick tick) {
   return found;
 }
 
+void GroundTruth::set_wake(const WakeLattice& lattice, std::vector<model::VesselTrack> vessels,
+                           const protocol::SceneParams& scene) {
+  if (lattice.grid == 0 || vessels.empty()) return;
+  wake_lattice_ = lattice;
+  // The stream's own lattice size is enough: a wave below its Nyquist has the same bits in the
+  // server's finer field (each mode is stepped alone, from the same wavevector and poses).
+  const sim::WakeRegion region{lattice.size_m, lattice.grid, scene.gravity_mps2, scene.depth_m, lattice.decay_per_s,
+                               lattice.viscosity_m2ps};
+  wake_ = std::make_unique<sim::EpochWake>(region, lattice.origin_x_m, lattice.origin_z_m, std::move(vessels), rate_hz_,
+                                           static_cast<std::int64_t>(lattice.epoch_ticks));
+  cache_.clear();
+}
+
 double GroundTruth::time_of(Tick tick) const {
   const Tick seconds = tick / static_cast<Tick>(rate_hz_);
   return static_cast<double>(seconds) + static_cast<double>(tick - seconds * rate_hz_) / rate_hz_;
@@ -60,6 +73,12 @@ std::shared_ptr<const sim::Frame> GroundTruth::at(Tick tick, int grid) {
     scene->cascades->evaluate(time_of(tick), *frame, sim::FrameRequest{true, choppy_});
   else
     scene->ocean->evaluate_band(time_of(tick), grid, grid, *frame, sim::FrameRequest{true, choppy_});
+  if (wake_) {
+    wake_->advance_to(static_cast<std::int64_t>(tick));
+    wake_sampler_.sample(wake_->fields(), wake_lattice_.grid, sim::FrameRequest{true, choppy_}, scene->wire.choppiness,
+                         wake_part_);
+    sim::append_cascade_frame(*frame, wake_part_);
+  }
   ++evaluations_;
   cache_[key] = frame;
   return frame;

@@ -12,6 +12,8 @@
 
 #include "message_types.hpp"
 #include "cascade_set.hpp"
+#include "epoch_wake.hpp"
+#include "wake_frame.hpp"
 #include "ocean.hpp"
 
 namespace ocean::loadtest {
@@ -25,6 +27,10 @@ class GroundTruth {
   // the other; empty for a band of the scene's grid.
   explicit GroundTruth(int tick_rate_hz, bool choppy = false, std::size_t cache_frames = 256,
                        std::vector<Cascade> cascades = {});
+
+  // The stream's wake lattice and the vessels forcing it (Welcome.stream.wake, Welcome.vessels):
+  // frames then end with the wake as the server computes it (sim::EpochWake).
+  void set_wake(const WakeLattice& lattice, std::vector<model::VesselTrack> vessels, const protocol::SceneParams& scene);
 
   // The scene in force from effective_tick on. Re-announcing a known scene changes nothing, so
   // every client may report the Welcome and SceneUpdates it sees.
@@ -57,6 +63,10 @@ class GroundTruth {
   std::vector<SceneEntry> scenes_;  // sorted by effective_tick
   std::map<std::uint64_t, std::shared_ptr<const sim::Frame>> cache_;  // key: tick << 16 | grid, so begin() is the oldest
   std::uint64_t evaluations_ = 0;
+  WakeLattice wake_lattice_;
+  std::unique_ptr<sim::EpochWake> wake_;
+  sim::WakeSampler wake_sampler_;
+  sim::Frame wake_part_;
 };
 
 }  // namespace ocean::loadtest

@@ -118,6 +118,7 @@ void LoadShard::on_welcome(std::size_t k, const protocol::Welcome& w) {
       shared_.facts = StreamFacts::from(w);
       shared_.truth.emplace(shared_.facts->tick_rate_hz, shared_.facts->choppy, 256, w.stream.cascades);
       shared_.truth->set_scene(0, w.scene);
+      shared_.truth->set_wake(w.stream.wake, w.vessels, w.scene);
     } else {
       shared_.truth->set_scene(w.current_tick, w.scene);
     }

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -200,36 +201,54 @@ void ModalModel::advance(const ModalState& from, ModalState& out, std::uint64_t 
   if (forcing) advance_forced_wake(from, out, steps, *forcing, first);
 }
 
-// Tick by tick, since each tick's forcing is every mode's: X(t+1) = a X(t) - b X(t-1) + F(t),
-// F(t) = alpha P(t-1) + beta P(t) rounded to units, P(t) the hulls' pressure during the step from t.
 void ModalModel::advance_forced_wake(const ModalState& from, ModalState& out, std::uint64_t steps, WakeForcing& forcing,
                                      Tick first) const {
-  const std::size_t begin = wake_at_, count = a_.size() - wake_at_;
+  const std::size_t begin = wake_at_;
   if (&from != &out)
     for (auto [src, dst] : {std::pair{&from.prev.re, &out.prev.re}, std::pair{&from.prev.im, &out.prev.im},
                             std::pair{&from.cur.re, &out.cur.re}, std::pair{&from.cur.im, &out.cur.im}})
       std::copy(src->begin() + static_cast<std::ptrdiff_t>(begin), src->end(), dst->begin() + static_cast<std::ptrdiff_t>(begin));
+  step_wake({out.prev.re.data() + begin, out.prev.im.data() + begin, out.cur.re.data() + begin, out.cur.im.data() + begin},
+            steps, first, &forcing, 0, std::numeric_limits<std::int64_t>::max());
+}
+
+// Tick by tick, since each tick's forcing is every mode's: X(t+1) = a X(t) - b X(t-1) + F(t),
+// F(t) = alpha P(t-1) + beta P(t) rounded to units, P(t) the hulls' pressure during the step from
+// t, taken as 0 outside [force_from, force_until).
+void ModalModel::step_wake(WakeSpan s, std::uint64_t steps, Tick first, WakeForcing* forcing, std::int64_t force_from,
+                           std::int64_t force_until) const {
+  const std::size_t count = a_.size() - wake_at_;
+  const std::int64_t* a = a_.data() + wake_at_;
+  const auto forced = [&](Tick t) {
+    const auto signed_t = static_cast<std::int64_t>(t);
+    return forcing && signed_t >= force_from && signed_t < force_until;
+  };
   std::vector<double> f_re(count), f_im(count);
   for (std::uint64_t step = 0; step < steps; ++step) {
     const Tick t = first + step;
-    {
-      const std::vector<std::complex<double>>& before = forcing.pressure(t - 1);
+    std::fill(f_re.begin(), f_re.end(), 0.0);
+    std::fill(f_im.begin(), f_im.end(), 0.0);
+    if (forced(t - 1)) {
+      const std::vector<std::complex<double>>& before = forcing->pressure(t - 1);
       for (std::size_t i = 0; i < count; ++i) {
         f_re[i] = alpha_[i] * before[i].real();
         f_im[i] = alpha_[i] * before[i].imag();
       }
     }
-    const std::vector<std::complex<double>>& during = forcing.pressure(t);
-    for (std::size_t i = 0; i < count; ++i) {
-      const std::size_t mode = begin + i;
-      for (auto [prev, cur, f] : {std::tuple{&out.prev.re, &out.cur.re, f_re[i] + beta_[i] * during[i].real()},
-                                  std::tuple{&out.prev.im, &out.cur.im, f_im[i] + beta_[i] * during[i].imag()}}) {
-        const std::int64_t p = (*prev)[mode], c = (*cur)[mode];
-        (*prev)[mode] = c;
-        (*cur)[mode] = wadd(wsub(mul_round_sym(a_[mode], c, kRecurrenceBits), mul_round_sym(b_[i], p, kRecurrenceBits)),
-                            forcing_units(f));
+    if (forced(t)) {
+      const std::vector<std::complex<double>>& during = forcing->pressure(t);
+      for (std::size_t i = 0; i < count; ++i) {
+        f_re[i] = f_re[i] + beta_[i] * during[i].real();
+        f_im[i] = f_im[i] + beta_[i] * during[i].imag();
       }
     }
+    for (std::size_t i = 0; i < count; ++i)
+      for (auto [prev, cur, f] : {std::tuple{s.prev_re, s.cur_re, f_re[i]}, std::tuple{s.prev_im, s.cur_im, f_im[i]}}) {
+        const std::int64_t p = prev[i], c = cur[i];
+        prev[i] = c;
+        cur[i] = wadd(wsub(mul_round_sym(a[i], c, kRecurrenceBits), mul_round_sym(b_[i], p, kRecurrenceBits)),
+                      forcing_units(f));
+      }
   }
 }
 

@@ -150,6 +150,18 @@ class ModalModel {
   std::vector<double> alpha_, beta_;  // per wake mode: the forcing's weights of P(t-1) and P(t)
   void advance_forced_wake(const ModalState& from, ModalState& out, std::uint64_t steps, WakeForcing& forcing,
                            Tick first) const;
+
+ public:
+  // The wake lattice's modes alone (count: modes() - wake_modes_at()), as a history of the wake
+  // keeps them (CODEC.md 7.9): `steps` ticks from `first`, forced by the hulls only during ticks
+  // in [force_from, force_until) (signed ticks).
+  struct WakeSpan {
+    std::int64_t *prev_re, *prev_im, *cur_re, *cur_im;
+  };
+  void step_wake(WakeSpan state, std::uint64_t steps, Tick first, WakeForcing* forcing, std::int64_t force_from,
+                 std::int64_t force_until) const;
+
+ private:
   std::vector<std::int32_t> key_modes_;
   // Choppy: kx/k, kz/k, kx^2/k, kz^2/k, kx kz/k per half-spectrum mode (0 at DC and Nyquist), and
   // their float factors for the choppiness they were last built for.

@@ -67,7 +67,10 @@ const SceneModel& SceneTimeline::model_of(const Held& held) const {
   return *held.model;
 }
 
-void SceneTimeline::model_state(Tick tick, ModalState& out) const { model_of(held_at(tick)).state_at(tick, out); }
+void SceneTimeline::model_state(Tick tick, ModalState& out) const {
+  model_of(held_at(tick)).state_at(tick, out);
+  add_wake_history(tick, out);
+}
 
 bool SceneTimeline::prepare(Tick from, Tick to, bool key) const {
   if (!at(to) || (!key && !at(from))) return false;
@@ -82,43 +85,14 @@ bool SceneTimeline::prepare(Tick from, Tick to, bool key) const {
 }
 
 void SceneTimeline::advance(ModalState& state, Tick from, Tick to) const {
+  if (config_.has_wake()) return advance_with_wake(state, from, to);
   Tick now = from;
   const Tick start = start_of(to);
   if (start > from) {
-    if (config_.has_wake()) {
-      replace_sea(state, from, start);
-    } else {
-      model_state(start, state);
-    }
+    model_state(start, state);
     now = start;
   }
-  recurrence_of(held_at(now)).advance(state, state, to - now, {}, forcing_.get(), now);
-}
-
-void SceneTimeline::set_vessels(std::vector<model::VesselTrack> vessels) {
-  if (!config_.has_wake()) throw std::invalid_argument("SceneTimeline::set_vessels: the stream has no wake lattice");
-  forcing_ = vessels.empty() ? nullptr : std::make_unique<WakeForcing>(config_, std::move(vessels));
-}
-
-// The wake is the vessels' doing, not the weather's: it rides through a change of scene, advanced
-// by the recurrence of each scene in force on the way (so advancing in parts gives the same
-// integers), while the sea's lattices take the new scene's model state (CODEC.md 7.9).
-void SceneTimeline::replace_sea(ModalState& state, Tick from, Tick start) const {
-  Tick now = from;
-  for (auto it = entries_.upper_bound(from); it != entries_.end() && it->first <= start; ++it) {
-    recurrence_of(held_at(now)).advance(state, state, it->first - now, {}, forcing_.get(), now);
-    now = it->first;
-  }
-  ModalState sea;
-  model_state(start, sea);
-  const std::size_t wake_at = recurrence_of(held_at(start)).wake_modes_at();
-  for (auto [to, from_wake] : {std::pair{&sea.prev, &state.prev}, std::pair{&sea.cur, &state.cur}}) {
-    std::copy(from_wake->re.begin() + static_cast<std::ptrdiff_t>(wake_at), from_wake->re.end(),
-              to->re.begin() + static_cast<std::ptrdiff_t>(wake_at));
-    std::copy(from_wake->im.begin() + static_cast<std::ptrdiff_t>(wake_at), from_wake->im.end(),
-              to->im.begin() + static_cast<std::ptrdiff_t>(wake_at));
-  }
-  state = std::move(sea);
+  recurrence_of(held_at(now)).advance(state, to - now);
 }
 
 const ModalModel& SceneTimeline::recurrence_of(const Held& held) const {
@@ -129,7 +103,7 @@ const ModalModel& SceneTimeline::recurrence_of(const Held& held) const {
 
 void SceneTimeline::advance(const ModalState& state, Tick from, Tick to, ModalState& out,
                             const ParallelFor& parallel) const {
-  if (start_of(to) > from) {
+  if (start_of(to) > from || crosses_epoch(from, to)) {
     if (config_.has_wake()) out = state;  // the wake rides through the change
     advance(out, from, to);  // else from the scene model's state: `state` plays no part
     return;

@@ -73,7 +73,13 @@ class SceneTimeline {
   const SceneModel& model_of(const Held& held) const;
   const ModalModel& recurrence_of(const Held& held) const;
   StreamConfig with_depth(const Held& held) const;
-  void replace_sea(ModalState& state, Tick from, Tick start) const;
+  // The wake lattice's timeline (scene_timeline_wake.cpp, CODEC.md 7.9).
+  void advance_with_wake(ModalState& state, Tick from, Tick to) const;
+  void walk_wake(ModalState& state, Tick from, Tick to) const;
+  bool crosses_epoch(Tick from, Tick to) const;
+  const ModalModel& recurrence_near(Tick tick) const;
+  void add_wake_history(Tick tick, ModalState& state) const;
+  const WakeForcing::Part& wake_part(std::int64_t epoch, Tick tick) const;
 
   StreamConfig config_;
   std::map<Tick, std::unique_ptr<Held>> entries_;

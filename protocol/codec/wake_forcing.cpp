@@ -10,7 +10,8 @@ constexpr std::size_t kKeptTicks = 256;
 }  // namespace
 
 WakeForcing::WakeForcing(const StreamConfig& config, std::vector<model::VesselTrack> vessels)
-    : lattice_(config.lattices().back()),
+    : epoch_ticks_(config.wake.epoch_ticks),
+      lattice_(config.lattices().back()),
       origin_x_m_(config.wake.origin_x_m),
       origin_z_m_(config.wake.origin_z_m),
       rate_hz_(static_cast<double>(config.effective_tick_rate_hz())),
@@ -21,6 +22,18 @@ WakeForcing::WakeForcing(const StreamConfig& config, std::vector<model::VesselTr
       vessels_(std::move(vessels)),
       hulls_(lattice_.n, lattice_.patch_x_m) {
   if (!lattice_.wake) throw std::invalid_argument("WakeForcing: the stream has no wake lattice");
+}
+
+WakeForcing::Part& WakeForcing::part(std::int64_t epoch) {
+  auto it = parts_.find(epoch);
+  if (it != parts_.end()) return it->second;
+  while (parts_.size() >= 4) parts_.erase(parts_.begin());  // an epoch is needed for two epochs
+  Part& p = parts_[epoch];
+  p.epoch = epoch;
+  p.at = static_cast<Tick>(epoch * epoch_ticks_);
+  const std::size_t modes = static_cast<std::size_t>(lattice_.n) * (lattice_.n / 2 + 1);
+  for (auto* v : {&p.prev_re, &p.prev_im, &p.cur_re, &p.cur_im}) v->assign(modes, 0);
+  return p;
 }
 
 const std::vector<std::complex<double>>& WakeForcing::pressure(Tick t) {

@@ -25,8 +25,21 @@ class WakeForcing {
   const std::vector<std::complex<double>>& pressure(Tick t);
 
   const std::vector<model::VesselTrack>& vessels() const { return vessels_; }
+  std::int64_t epoch_ticks() const { return epoch_ticks_; }
+
+  // The wake one epoch's forcing leaves (CODEC.md 7.9): the wake lattice's modes from rest at the
+  // epoch's first tick, forced during the epoch only, at tick `at` (X(at - 1), X(at)). Kept here
+  // for the SceneTimeline that advances them; the last few epochs.
+  struct Part {
+    std::int64_t epoch = 0;
+    Tick at = 0;
+    std::vector<std::int64_t> prev_re, prev_im, cur_re, cur_im;
+  };
+  Part& part(std::int64_t epoch);
 
  private:
+  std::int64_t epoch_ticks_;
+  std::map<std::int64_t, Part> parts_;
   StreamConfig::Lattice lattice_;
   double origin_x_m_, origin_z_m_, rate_hz_, scale_;
   std::vector<model::VesselTrack> vessels_;

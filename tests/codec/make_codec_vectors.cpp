@@ -196,7 +196,8 @@ class Writer {
     if (!c.cascades.empty()) text_ << " cascades=" << cascades_text(c.cascades);
     if (c.has_wake())
       text_ << " wake=" << c.wake.grid << ":" << text_of(c.wake.size_m) << ":" << text_of(c.wake.origin_x_m) << ":"
-            << text_of(c.wake.origin_z_m) << ":" << text_of(c.wake.decay_per_s) << ":" << text_of(c.wake.viscosity_m2ps);
+            << text_of(c.wake.origin_z_m) << ":" << text_of(c.wake.decay_per_s) << ":" << text_of(c.wake.viscosity_m2ps)
+            << ":" << c.wake.epoch_ticks;
     text_ << "\n";
     text_ << "scene from=0 serial=" << w.scene_serial << " tag=" << (w.scene_serial % 256) << " " << scene_fields(w.scene)
           << "\n";
@@ -605,7 +606,7 @@ void mobile_wake(Writer& w) {
   protocol::SceneParams scene = base_scene();
   scene.size_x = scene.size_z = 64;
   protocol::Welcome welcome = welcome_of(scene, 1, {1, 4});
-  welcome.stream.wake = WakeLattice{32, 256.0, -128.0, -128.0, 0.5, 1e-3};
+  welcome.stream.wake = WakeLattice{32, 256.0, -128.0, -128.0, 0.5, 1e-3, 3};
   // One vessel, 20 x 5 m with 1.2 m draft, waiting at (-80, 10) until 10 s before K, then sailing
   // east at 6 m/s through the lattice's middle; one moored (a single waypoint), heading +x.
   const double k_s = static_cast<double>(kKeyTick) / kTickRateHz;
@@ -620,7 +621,9 @@ void mobile_wake(Writer& w) {
   welcome.vessels = {sailing, moored};
   w.comment("The mobile profile (profile 1: grid 64, slopes, 30 Hz) under 30 Hz server ticks, with a wake");
   w.comment("lattice (codec version 6, CODEC.md 7.9): 32 x 32 samples over 256 m, decay 0.5/s, viscosity");
-  w.comment("1e-3 m^2/s (strong, so the damped recurrence shows within a few ticks). Samples 0..4095 are the");
+  w.comment("1e-3 m^2/s (strong, so the damped recurrence shows within a few ticks), epochs of 3 ticks (K is");
+  w.comment("one's first tick: the key holds the wake of epochs K/3 - 1 and K/3; K+4 from K+1 crosses K+3, where");
+  w.comment("epoch K/3 - 1's wake is dropped, and K+6 from K+4 crosses K+6). Samples 0..4095 are the");
   w.comment("sea's, 4096..5119 the wake's. K = " + std::to_string(kKeyTick) + ". Scene 0 as lite_modeled's, at");
   w.comment("grid 64; scene 1 from K+5 by a SceneUpdate: 20 m of water (the wake rides through the change).");
   w.comment("The wake's truth: a hollow 0.25 m deep, 12 m wide, moving 3 m a tick along the lattice. No .f32 file.");

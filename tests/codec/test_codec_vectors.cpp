@@ -123,7 +123,7 @@ Counts run_sequence(const std::string& name) {
       if (c.has_wake())
         CHECK(line.at("wake") == std::to_string(c.wake.grid) + ":" + text_of(c.wake.size_m) + ":" + text_of(c.wake.origin_x_m) +
                                      ":" + text_of(c.wake.origin_z_m) + ":" + text_of(c.wake.decay_per_s) + ":" +
-                                     text_of(c.wake.viscosity_m2ps));
+                                     text_of(c.wake.viscosity_m2ps) + ":" + std::to_string(c.wake.epoch_ticks));
       REQUIRE(validate(c).empty());
       DecoderOptions options;
       options.max_payload = line.u64("max_payload");

@@ -34,7 +34,7 @@ StreamConfig wake_stream(bool choppy) {
   c.rate_hz = 30;
   c.normals = true;
   c.choppy = choppy;
-  c.wake = {64, kRegion, -256.0, -256.0, 0.05, 1e-6};
+  c.wake = {64, kRegion, -256.0, -256.0, 0.05, 1e-6, 300};  // epochs of 10 s: the test crosses two
   return c;
 }
 
@@ -66,7 +66,7 @@ struct Truth {
   Truth(const model::SceneParams& scene, const StreamConfig& c, std::vector<model::VesselTrack> vessels)
       : ocean(scene),
         wake(sim::WakeRegion{kRegion, 128, 9.81, scene.depth_m, c.wake.decay_per_s, c.wake.viscosity_m2ps}, c.wake.origin_x_m,
-             c.wake.origin_z_m, std::move(vessels), c.rate_hz, 300),
+             c.wake.origin_z_m, std::move(vessels), c.rate_hz, c.wake.epoch_ticks),
         choppiness(scene.choppiness) {}
 
   sim::Frame at(std::uint64_t tick, const StreamConfig& c) {
@@ -103,6 +103,8 @@ struct StreamFigures {
   double err_h = 0, err_s = 0, err_d = 0, err_dd = 0;
   bool bitwise = true;
   double wake_peak = 0;
+  std::size_t late_key_bytes = 0;  // a key for a decoder that joins at 15 s
+  double late_key_err = 0;
 };
 
 // 20 s of 8 vessels' wakes beside the sea, every delta at a lag of 3 ticks; `told`: the encoder
@@ -145,14 +147,23 @@ StreamFigures stream_wakes(bool choppy, bool told) {
       bytes += encoded->stats.payload_bytes;
       ++frames;
     }
+    if (tick == 450) {  // a viewer that joins now: its key's wake comes from the tracks when told
+      Decoder late(config);
+      late.add_scene(0, 1, scene);
+      if (told) late.set_vessels(fleet(8));
+      const auto key = encoder.encode_key(tick);
+      for (const Chunk& chunk : key->chunks) REQUIRE(late.accept(view(chunk)) == ChunkError::ok);
+      out.late_key_bytes = key->stats.payload_bytes;
+      out.late_key_err = wake_worst(late.latest()->height, f.height);
+    }
     for (std::size_t i = 64 * 64; i < f.height.size(); ++i)
       out.wake_peak = std::max(out.wake_peak, std::fabs(static_cast<double>(f.height[i])));
   }
   out.bytes_per_frame = static_cast<double>(bytes) / frames;
   std::printf("wake stream (%s, 8 vessels, 64 x 64 wake over %g m, tracks %s): %.1f payload bytes per frame "
-              "(10-20 s); wake peak %.3f m; errors h %.2g s %.2g d %.2g dd %.2g\n",
-              choppy ? "choppy" : "plain", kRegion, told ? "told" : "not told", out.bytes_per_frame, out.wake_peak,
-              out.err_h, out.err_s, out.err_d, out.err_dd);
+              "(10-20 s), a key at 15 s %zu bytes; wake peak %.3f m; errors h %.2g s %.2g d %.2g dd %.2g\n",
+              choppy ? "choppy" : "plain", kRegion, told ? "told" : "not told", out.bytes_per_frame, out.late_key_bytes,
+              out.wake_peak, out.err_h, out.err_s, out.err_d, out.err_dd);
   return out;
 }
 
@@ -172,7 +183,10 @@ TEST_CASE("eight vessels' wakes stream within half a step, bit for bit, at a lag
       CHECK(f.err_dd <= 0.5 * config.slope_step);
     }
     // The decoder that knows the tracks predicts the hulls' forcing: the wake costs next to
-    // nothing beside the sea's own bytes.
+    // nothing beside the sea's own bytes, and a viewer joining mid-run computes the wake of the
+    // last two epochs itself, so its key carries no wake either.
     CHECK(told.bytes_per_frame < 0.1 * untold.bytes_per_frame);
+    CHECK(told.late_key_bytes < 0.05 * untold.late_key_bytes);
+    CHECK(told.late_key_err <= 0.5 * config.height_step_m);
   }
 }

@@ -3,6 +3,7 @@
 #include "ascii_text.hpp"
 #include "config_options.hpp"
 #include "options_json.hpp"
+#include "wire_limits.hpp"
 
 #include <algorithm>
 #include <CLI/CLI.hpp>
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <map>
 #include <sstream>
 
@@ -28,6 +30,9 @@ constexpr std::string_view kFileHelp =
     "Scheduled scene changes: [[schedule]] tables, each with tick = T (absolute tick index from --epoch)\n"
     "and any of spectrum, spreading, wind-speed, wind-dir, fetch, amplitude, depth, choppiness, small-wave;\n"
     "each entry changes those values from tick T on, on top of the previous entry.\n"
+    "Vessels: [[vessel]] tables, each with id = N, length, beam, draft (metres), repeat = true|false and\n"
+    "waypoints = [[t, x, z], ...] (seconds from tick 0, world metres inside the --wake-size square from\n"
+    "--wake-origin-x/z; a repeating track ends where it starts); up to 32 vessels, 64 waypoints each.\n"
     "SIGINT or SIGTERM stops the server cleanly (exit status 0).";
 
 std::string describe_toml_type(const toml::node& node) {
@@ -102,6 +107,60 @@ std::string schedulable_names() {
   for (const ConfigOption& option : config_options())
     if (option.schedulable) names += (names.empty() ? "" : ", ") + std::string(option.name);
   return names;
+}
+
+// A number of a [[vessel]] table, integers too.
+std::optional<double> toml_number(const toml::node* node) {
+  if (!node) return std::nullopt;
+  if (node->is_floating_point()) return node->as_floating_point()->get();
+  if (node->is_integer()) return static_cast<double>(node->as_integer()->get());
+  return std::nullopt;
+}
+
+// [[vessel]] tables: id, length, beam, draft, repeat, waypoints = [[t, x, z], ...]. Values are
+// checked here for their form only; validate_server_config checks the tracks.
+std::string apply_vessels(ServerConfig& config, const toml::node& node, std::string_view source) {
+  const toml::array* entries = node.as_array();
+  if (!entries || !entries->is_array_of_tables())
+    return at_line(source, node) + ": 'vessel' must be an array of tables ([[vessel]])";
+  config.vessels.clear();
+  std::size_t index = 0;
+  for (const toml::node& entry_node : *entries) {
+    const toml::table& t = *entry_node.as_table();
+    const std::string where = at_line(source, entry_node) + ": vessel " + std::to_string(++index);
+    for (auto&& [key, value] : t)
+      if (key.str() != "id" && key.str() != "length" && key.str() != "beam" && key.str() != "draft" &&
+          key.str() != "repeat" && key.str() != "waypoints")
+        return where + ": unknown key '" + std::string(key.str()) + "' (id, length, beam, draft, repeat, waypoints)";
+    model::VesselTrack v;
+    const toml::node* id = t.get("id");
+    if (!id || !id->is_integer() || id->as_integer()->get() < 0 || id->as_integer()->get() > 0xffffffffLL)
+      return where + ": needs id = N (an integer in 0..4294967295)";
+    v.id = static_cast<std::uint32_t>(id->as_integer()->get());
+    const auto length = toml_number(t.get("length")), beam = toml_number(t.get("beam")), draft = toml_number(t.get("draft"));
+    if (!length || !beam || !draft) return where + ": needs length, beam and draft (numbers, metres)";
+    v.hull = {*length, *beam, *draft};
+    if (const toml::node* repeat = t.get("repeat")) {
+      if (!repeat->is_boolean()) return where + ": repeat must be true or false";
+      v.repeat = repeat->as_boolean()->get();
+    }
+    const toml::array* points = t.get("waypoints") ? t.get("waypoints")->as_array() : nullptr;
+    if (!points || points->empty()) return where + ": needs waypoints = [[t, x, z], ...] (at least one)";
+    if (points->size() > protocol::kMaxWaypoints)
+      return where + ": " + std::to_string(points->size()) + " waypoints; at most " + std::to_string(protocol::kMaxWaypoints);
+    for (const toml::node& p : *points) {
+      const toml::array* xyz = p.as_array();
+      const auto time = xyz && xyz->size() == 3 ? toml_number(xyz->get(0)) : std::nullopt;
+      const auto x = xyz && xyz->size() == 3 ? toml_number(xyz->get(1)) : std::nullopt;
+      const auto z = xyz && xyz->size() == 3 ? toml_number(xyz->get(2)) : std::nullopt;
+      if (!time || !x || !z) return where + ": each waypoint is [t, x, z] (three numbers: seconds, metres, metres)";
+      v.points.push_back({*time, *x, *z});
+    }
+    if (config.vessels.size() == protocol::kMaxVessels)
+      return where + ": more than " + std::to_string(protocol::kMaxVessels) + " vessels";
+    config.vessels.push_back(std::move(v));
+  }
+  return {};
 }
 
 std::string apply_schedule(ServerConfig& config, const toml::node& node, std::string_view source) {
@@ -216,6 +275,10 @@ std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, 
   for (auto&& [key, node] : table) {
     if (key.str() == "schedule") {
       schedule = &node;  // checked last, against the scene the whole file sets
+      continue;
+    }
+    if (key.str() == "vessel") {
+      if (std::string error = apply_vessels(config, node, source); !error.empty()) return error;
       continue;
     }
     const ConfigOption* option = find_config_option(key.str());

@@ -5,10 +5,13 @@
 #include "config_options.hpp"
 #include "profile.hpp"
 #include "servable_scene.hpp"
+#include "param_message.hpp"
+#include "wire_limits.hpp"
 
 #include <spdlog/common.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ocean::server {
 namespace {
@@ -58,12 +61,49 @@ std::string validate_profiles(const ServerConfig& config) {
 
 }  // namespace
 
+namespace {
+
+// The wake's square and every vessel inside it, sailing as model::validate allows.
+std::string validate_vessels(const ServerConfig& config) {
+  if (!(config.wake_size_m >= 64.0 && config.wake_size_m <= 8192.0))
+    return "--wake-size " + model::format_value(config.wake_size_m) + ": must be in [64, 8192] metres";
+  if (!(std::fabs(config.wake_origin_x_m) <= 1e6) || !(std::fabs(config.wake_origin_z_m) <= 1e6))
+    return "--wake-origin-x/--wake-origin-z: must be within 1e6 metres";
+  if (!(config.wake_decay_per_s >= 0.01 && config.wake_decay_per_s <= 10.0))
+    return "--wake-decay " + model::format_value(config.wake_decay_per_s) + ": must be in [0.01, 10] per second";
+  if (config.vessels.size() > protocol::kMaxVessels)
+    return "[[vessel]]: " + std::to_string(config.vessels.size()) + " vessels; at most " + std::to_string(protocol::kMaxVessels);
+  model::TrackLimits limits;
+  limits.world_min_m = 0.0;
+  limits.world_max_m = config.wake_size_m;
+  for (const model::VesselTrack& v : config.vessels) {
+    if (v.points.size() > protocol::kMaxWaypoints)
+      return "[[vessel]] " + std::to_string(v.id) + ": " + std::to_string(v.points.size()) + " waypoints; at most " +
+             std::to_string(protocol::kMaxWaypoints);
+    // Inside the wake's square: checked in its own coordinates.
+    model::VesselTrack local = v;
+    for (model::Waypoint& p : local.points) {
+      p.x_m -= config.wake_origin_x_m;
+      p.z_m -= config.wake_origin_z_m;
+    }
+    if (std::string error = model::validate(local, limits); !error.empty())
+      return "[[vessel]] " + error + " (in the wake's square, corner (" + model::format_value(config.wake_origin_x_m) +
+             ", " + model::format_value(config.wake_origin_z_m) + "), side " + model::format_value(config.wake_size_m) + " m)";
+    for (const model::VesselTrack& other : config.vessels)
+      if (&other != &v && other.id == v.id) return "[[vessel]] " + std::to_string(v.id) + ": two vessels share this id";
+  }
+  return {};
+}
+
+}  // namespace
+
 std::string validate_server_config(const ServerConfig& config) {
   if (std::string error = model::validate(config.scene); !error.empty()) return name_scene_flag(error);
   std::string schedule_error;
   const SceneSchedule schedule = make_schedule(config, schedule_error);
   if (schedule_error.empty()) schedule_error = schedule.validate();
   if (!schedule_error.empty()) return "schedule: " + schedule_error;
+  if (std::string error = validate_vessels(config); !error.empty()) return error;
   if (config.tick_rate_hz < kMinTickRateHz || config.tick_rate_hz > kMaxTickRateHz)
     return "--tick-rate " + std::to_string(config.tick_rate_hz) + ": must be an integer in " +
            std::to_string(kMinTickRateHz) + ".." + std::to_string(kMaxTickRateHz) + " Hz";

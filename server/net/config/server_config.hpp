@@ -5,6 +5,7 @@
 #include "listen_address.hpp"
 #include "scene_params.hpp"
 #include "scene_schedule.hpp"
+#include "vessel_track.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -45,6 +46,13 @@ struct ServerConfig {
 
   model::SceneParams scene;                         // the scene at the epoch (tick 0 onward)
   std::vector<ScheduleEntry> schedule;            // later scene changes, by tick
+
+  // Vessels ([[vessel]] tables of the config file, world metres) and the square of the world their
+  // wakes are simulated on and streamed over (CODEC.md 7.9): none, no wake lattice in any stream.
+  std::vector<model::VesselTrack> vessels;
+  double wake_size_m = 512.0;
+  double wake_origin_x_m = -256.0, wake_origin_z_m = -256.0;
+  double wake_decay_per_s = 0.05;
 
   int tick_rate_hz = 30;
   // Wall-clock time of tick 0: 2026-01-01T00:00:00Z. Not the Unix epoch: the simulation accepts

@@ -1,5 +1,7 @@
 #include "session_core.hpp"
 
+#include "epoch_wake.hpp"
+
 #include "core_helpers.hpp"
 #include "message_builders.hpp"
 #include "message_readers.hpp"
@@ -39,6 +41,7 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
       continue;
     }
     streams_.push_back(std::make_unique<ProfileStream>(*profile, config));
+    if (config.has_wake()) streams_.back()->set_vessels(host_.config.vessels);
   }
   if (streams_.empty()) throw std::invalid_argument("--profiles: no offered profile can be streamed by the codec");
   // The scenes in force now and within the lead, before the first tick: a Hello may come first.
@@ -57,6 +60,10 @@ codec::StreamConfig SessionCore::stream_config(const Profile& profile, const mod
       codec::StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2,
                                         model::wire_depth(scene.depth_m));
   config.tick_rate_hz = static_cast<std::uint16_t>(host_.config.tick_rate_hz);
+  if (!host_.config.vessels.empty())
+    config.wake = WakeLattice{profile.wake_grid, host_.config.wake_size_m, host_.config.wake_origin_x_m,
+                              host_.config.wake_origin_z_m, host_.config.wake_decay_per_s, 1e-6,
+                              static_cast<std::uint32_t>(sim::wake_epoch_ticks(host_.config.tick_rate_hz))};
   return config;
 }
 
@@ -315,6 +322,7 @@ protocol::Welcome SessionCore::welcome(const Session& session) const {
     welcome.udp_cookie.assign(session.cookie.begin(), session.cookie.end());
   }
   welcome.max_message_bytes = protocol::kDefaultMaxMessageBytes;
+  if (session.stream->config().has_wake()) welcome.vessels = host_.config.vessels;
   return welcome;
 }
 

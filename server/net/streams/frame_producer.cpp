@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <mutex>
 
 namespace ocean::server {
@@ -52,11 +53,19 @@ struct FrameProducer::BufferPool {
   std::vector<std::unique_ptr<TickFrames>> free;
 };
 
-FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*> profiles)
+FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*> profiles, const WakeSetup& wake)
     : schedule_(std::move(schedule)),
       profiles_(std::move(profiles)),
       scheduled_scene_(&schedule_.base()),
       pool_(std::make_shared<BufferPool>()) {
+  if (!wake.vessels.empty()) {
+    // One field fine enough for every profile's lattice; each samples the waves below its Nyquist.
+    int n = 16;
+    for (const Profile* p : profiles_) n = std::max<int>(n, p->wake_grid);
+    const sim::WakeRegion region{wake.size_m, n, schedule_.base().gravity_mps2, schedule_.base().depth_m, wake.decay_per_s, 1e-6};
+    wake_ = std::make_unique<sim::EpochWake>(region, wake.origin_x_m, wake.origin_z_m, wake.vessels, wake.tick_rate_hz,
+                                             sim::wake_epoch_ticks(wake.tick_rate_hz));
+  }
   // Profiles with the same cascades (desktop and desktop-choppy) share one evaluation, with every
   // channel either streams: the sim's channels are transforms of their own, so each profile's
   // are the bits it would get alone.
@@ -137,6 +146,14 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
   // A shared evaluation may hold channels its own profile does not stream.
   for (std::size_t i = 0; i < profiles_.size(); ++i)
     if (cascades_[i]) keep_requested(result->frames[i].frame, request_of(*profiles_[i]));
+  if (wake_) {
+    wake_->advance_to(tick);
+    const std::vector<const sim::WakeField*> fields = wake_->fields();
+    for (std::size_t i = 0; i < profiles_.size(); ++i) {
+      wake_sampler_.sample(fields, profiles_[i]->wake_grid, request_of(*profiles_[i]), ocean_->params().choppiness, wake_part_);
+      sim::append_cascade_frame(result->frames[i].frame, wake_part_);
+    }
+  }
   return result;
 }
 

@@ -4,6 +4,8 @@
 #pragma once
 
 #include "cascade_set.hpp"
+#include "epoch_wake.hpp"
+#include "wake_frame.hpp"
 #include "ocean.hpp"
 #include "scene_schedule.hpp"
 #include "tick_frames.hpp"
@@ -15,10 +17,19 @@
 
 namespace ocean::server {
 
+// The vessels and the square of the world where their wake is simulated (CODEC.md 7.9).
+struct WakeSetup {
+  double size_m = 512.0, origin_x_m = -256.0, origin_z_m = -256.0;
+  double decay_per_s = 0.05;
+  std::vector<model::VesselTrack> vessels;
+  int tick_rate_hz = 30;
+};
+
 class FrameProducer {
  public:
   // Profiles must fit the scene (validate_server_config checks it). Throws model::ParamError.
-  FrameProducer(SceneSchedule schedule, std::vector<const Profile*> profiles);
+  // With vessels, every profile's frame ends with the wake lattice of its wake_grid.
+  FrameProducer(SceneSchedule schedule, std::vector<const Profile*> profiles, const WakeSetup& wake = {});
   FrameProducer(const FrameProducer&) = delete;  // active_scene_ points into schedule_
   FrameProducer& operator=(const FrameProducer&) = delete;
 
@@ -54,6 +65,9 @@ class FrameProducer {
   std::vector<sim::FrameRequest> cascade_request_;
   std::shared_ptr<BufferPool> pool_;
   bool scene_changed_ = false;
+  std::unique_ptr<sim::EpochWake> wake_;  // none without vessels
+  sim::WakeSampler wake_sampler_;
+  sim::Frame wake_part_;
 };
 
 }  // namespace ocean::server

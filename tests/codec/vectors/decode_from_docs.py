@@ -808,7 +808,7 @@ class Waked:
     """7.9: the sea's lattices (a Stream or Cascaded) and then the wake lattice, whose modes start at
     rest, ring down by the damped recurrence and take a delta's corrections as motion."""
     def __init__(self, sea, wake, gravity, R, hstep, sstep, normals, dstep, choppy):
-        grid, size, self.ox, self.oz, self.decay, self.visc = wake
+        grid, size, self.ox, self.oz, self.decay, self.visc, self.epoch = wake
         self.vessels = []; self.pressures = {}
         self.sea = sea
         self.wake = Stream(grid, size, size, gravity, R, hstep, sstep, normals, dstep, choppy)
@@ -852,22 +852,26 @@ class Waked:
                 hull_pressure(w, v, x - self.ox, z - self.oz, dx, dz, scale, out)
             self.pressures[t] = out
         return self.pressures[t]
-    def advance(self, st, rec, steps, first=None):
-        sea_a, a, b, alpha, beta = rec
-        sea, wake = self.parts(st)
-        self.sea.advance(sea, sea_a, steps)
+    def step_wake(self, wake, rec, steps, first, lo, hi):  # forced only for ticks in [lo, hi)
+        _, a, b, alpha, beta = rec
+        m = len(a)
         for step in range(steps):
-            if self.vessels:
-                t = first + step
-                p0, p1 = self.pressure(t - 1), self.pressure(t)
-                F = [(forcing_units(alpha[i] * p0[i][0] + beta[i] * p1[i][0]), forcing_units(alpha[i] * p0[i][1] + beta[i] * p1[i][1]))
-                     for i in range(len(a))]
-            else:
-                F = [(0, 0)] * len(a)
-            for key_c, key_p, part in (('cr', 'pr', 0), ('ci', 'pi', 1)):
+            t = first + step
+            fr, fi = [0.0] * m, [0.0] * m
+            if self.vessels and lo <= t - 1 < hi:
+                p0 = self.pressure(t - 1)
+                fr = [alpha[i] * p0[i][0] for i in range(m)]; fi = [alpha[i] * p0[i][1] for i in range(m)]
+            if self.vessels and lo <= t < hi:
+                p1 = self.pressure(t)
+                fr = [fr[i] + beta[i] * p1[i][0] for i in range(m)]; fi = [fi[i] + beta[i] * p1[i][1] for i in range(m)]
+            for key_c, key_p, f in (('cr', 'pr', fr), ('ci', 'pi', fi)):
                 cur = wake[key_c]; prev = wake[key_p]
-                nxt = [wrap64(wrap64(mul_sym(a[i], cur[i], 48) - mul_sym(b[i], prev[i], 48)) + F[i][part]) for i in range(len(a))]
+                nxt = [wrap64(wrap64(mul_sym(a[i], cur[i], 48) - mul_sym(b[i], prev[i], 48)) + forcing_units(f[i])) for i in range(m)]
                 wake[key_p] = cur; wake[key_c] = nxt
+    def advance(self, st, rec, steps, first=None):
+        sea, wake = self.parts(st)
+        self.sea.advance(sea, rec[0], steps)
+        self.step_wake(wake, rec, steps, first, 0, 1 << 63)
         st.update(self.joined(sea, wake))
     def model(self, sc):
         sea_model = self.sea.model(sc)
@@ -929,19 +933,54 @@ class Decoder:
             e[2] = self.s.model(e[1])
         return e[2]
     def model_state(self, t):
-        return self.model(self.start_of(t)).state(self.s, t)
+        st = self.model(self.start_of(t)).state(self.s, t)
+        if isinstance(self.s, Waked) and self.s.vessels:  # 7.9: the last two epochs' wake
+            k = t // self.s.epoch
+            sea, wake = self.s.parts(st)
+            for e in range(max(0, k - 1), k + 1):
+                p = self.wake_part(e, t)
+                wake = {key: [wrap64(x + y) for x, y in zip(wake[key], p[key])] for key in wake}
+            st = self.s.joined(sea, wake)
+        return st
+    def rec_near(self, t):  # the recurrence of the scene in force at t (the oldest held before it)
+        return self.s.recurrence(self.scenes[self.start_of(max(t, min(self.scenes)))][1]['depth_m'])
+    def wake_part(self, e, t):  # 7.9: epoch e's wake at tick t, from rest at e E, forced during e
+        ep = self.s.epoch
+        if not hasattr(self, 'parts'): self.parts = {}
+        p = self.parts.get(e)
+        if p is None or p['at'] > t:
+            p = {'at': e * ep, 'st': self.s.wake.zero()}; self.parts[e] = p
+        while p['at'] < t:
+            nxt = min([t] + [f for f in self.scenes if p['at'] < f < t])
+            self.s.step_wake(p['st'], self.rec_near(p['at']), nxt - p['at'], p['at'], e * ep, (e + 1) * ep)
+            p['at'] = nxt
+        return p['st']
+    def walk(self, st, frm, to):  # 7.9: scene by scene, dropping epoch B/E - 2 at each boundary B
+        now = frm
+        while now < to:
+            nxt = min([to] + [f for f in self.scenes if now < f < to])
+            if self.s.vessels: nxt = min(nxt, (now // self.s.epoch + 1) * self.s.epoch)
+            self.s.advance(st, self.rec_near(now), nxt - now, now)
+            now = nxt
+            if self.s.vessels and now % self.s.epoch == 0 and now // self.s.epoch >= 2:
+                gone = self.wake_part(now // self.s.epoch - 2, now)
+                sea, wake = self.s.parts(st)
+                wake = {key: [wrap64(x - y) for x, y in zip(wake[key], gone[key])] for key in wake}
+                st.update(self.s.joined(sea, wake))
+        return st
     def choppiness(self, t):  # lambda of the scene in force at t (7.2)
         return self.scenes[self.start_of(t)][1]['choppiness']
     def advance(self, st, frm, to):
         now = frm
         E = self.start_of(to)
-        if E > frm and isinstance(self.s, Waked):
-            # 7.9: the wake rides through: advanced change by change, each with its scene's recurrence
-            for e in sorted(f for f in self.scenes if frm < f <= E):
-                self.s.advance(st, self.s.recurrence(self.scenes[self.start_of(now)][1]['depth_m']), e - now, now); now = e
-            wake = self.s.parts(st)[1]
-            st = self.s.joined(self.s.parts(self.model_state(E))[0], wake)
-        elif E > frm:
+        if isinstance(self.s, Waked):
+            # 7.9: the wake rides through a change; the sea takes the new scene's model state
+            if E > frm:
+                st = self.walk(st, frm, E)
+                fresh = self.model(E).state(self.s, E)
+                st = self.s.joined(self.s.parts(fresh)[0], self.s.parts(st)[1]); now = E
+            return self.walk(st, now, to)
+        if E > frm:
             st = self.model_state(E); now = E
         self.s.advance(st, self.s.recurrence(self.scenes[self.start_of(now)][1]['depth_m']), to - now, now)
         return st
@@ -1084,7 +1123,7 @@ STREAM = [('profile_id', '<B', 0), ('grid', '<H', 0), ('patch_x_m', '<d', 0.0), 
           ('depth_m', '<d', 0.0), ('rate_hz', '<H', 0), ('height_step_m', '<f', 0.0), ('slope_step', '<f', 0.0),
           ('disp_step_m', '<f', 0.0), ('normals', '<B', 0), ('choppy', '<B', 0)]
 WAKE = [('grid', '<H', 0), ('size_m', '<d', 0.0), ('origin_x_m', '<d', 0.0), ('origin_z_m', '<d', 0.0), ('decay_per_s', '<d', 0.0),
-        ('viscosity_m2ps', '<d', 0.0)]
+        ('viscosity_m2ps', '<d', 0.0), ('epoch_ticks', '<I', 0)]
 def read_wake(buf, stream_table):
     # StreamParams slot 13: table WakeLattice (PROTOCOL.md 8); absent: no wake.
     t = table_ref(buf, stream_table, 13)
