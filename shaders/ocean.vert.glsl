@@ -3,7 +3,9 @@
 // Positions are camera-relative so tiles far from the origin keep float precision.
 // Built with COARSE_CASCADE defined, it adds a coarse cascade (a larger lattice of the same sea,
 // common/cascade.hpp) sampled from textures at the vertex's place in that lattice, so that the
-// sum repeats only every coarse patch.
+// sum repeats only every coarse patch. Built with WAKE_LATTICE defined, it adds the vessels' wake
+// (CODEC.md 7.9): a lattice over one square of the world, sampled where the vertex lies inside it
+// and nothing outside, so a wake is cast once.
 
 attribute vec2 a_grid;       // metres inside the patch (static VBO)
 attribute float a_height;    // metres (streamed)
@@ -20,22 +22,29 @@ uniform float u_far_roughness;
 uniform vec2 u_foam;          // threshold, 1 / softness
 uniform vec2 u_fog;           // density per metre, 1 / (1 - exp(-density * view distance))
 uniform vec3 u_horizon[16];   // sky colour 0.01 rad above the horizon, azimuth 2 pi (i / 16 - 0.5)
+#if defined(COARSE_CASCADE) || defined(WAKE_LATTICE)
+// Bilinear between the four nearest of n x n samples: float textures need not filter (GLES 2).
+vec4 lattice_sample(sampler2D field, vec2 uv, float n) {
+  vec2 t = uv * n - 0.5;
+  vec2 f = fract(t);
+  vec2 a = (floor(t) + 0.5) / n;
+  vec2 b = a + 1.0 / n;
+  vec4 lo = mix(texture2D(field, a), texture2D(field, vec2(b.x, a.y)), f.x);
+  vec4 hi = mix(texture2D(field, vec2(a.x, b.y)), texture2D(field, b), f.x);
+  return mix(lo, hi, f.y);
+}
+#endif
 #ifdef COARSE_CASCADE
 uniform sampler2D u_coarse_shape;  // height, dh/dx, dh/dz, 0 per coarse sample (nearest, repeat)
 uniform sampler2D u_coarse_chop;   // displacement x, z, J - 1, 0 per coarse sample
 uniform vec3 u_coarse_scale;       // 1 / coarse patch x, 1 / coarse patch z, samples per side
 uniform vec2 u_coarse_origin;      // the tile origin's place in the coarse patch, in [0, 1)
-
-// Bilinear between the four nearest samples: float textures need not filter (GLES 2).
-vec4 coarse_sample(sampler2D field, vec2 uv) {
-  vec2 t = uv * u_coarse_scale.z - 0.5;
-  vec2 f = fract(t);
-  vec2 a = (floor(t) + 0.5) / u_coarse_scale.z;
-  vec2 b = a + 1.0 / u_coarse_scale.z;
-  vec4 lo = mix(texture2D(field, a), texture2D(field, vec2(b.x, a.y)), f.x);
-  vec4 hi = mix(texture2D(field, vec2(a.x, b.y)), texture2D(field, b), f.x);
-  return mix(lo, hi, f.y);
-}
+#endif
+#ifdef WAKE_LATTICE
+uniform sampler2D u_wake_shape;    // as the coarse cascade's, of the wake lattice
+uniform sampler2D u_wake_chop;
+uniform vec3 u_wake_scale;         // 1 / wake size (twice), samples per side
+uniform vec2 u_wake_origin;        // the tile origin minus the wake square's corner, metres
 #endif
 
 varying vec3 v_rel;      // surface point minus eye
@@ -51,13 +60,23 @@ void main() {
   float jacobian = a_jacobian;
 #ifdef COARSE_CASCADE
   vec2 uv = u_coarse_origin + a_grid * u_coarse_scale.xy;
-  vec4 shape = coarse_sample(u_coarse_shape, uv);
-  vec4 chop = coarse_sample(u_coarse_chop, uv);
+  vec4 shape = lattice_sample(u_coarse_shape, uv, u_coarse_scale.z);
+  vec4 chop = lattice_sample(u_coarse_chop, uv, u_coarse_scale.z);
   height += shape.x;
   coarse_slope = shape.yz;
   disp += chop.xy;
   // First order in the coarse derivatives (a few hundredths for long waves): J0 + (J1 - 1).
   jacobian += chop.z;
+#endif
+#ifdef WAKE_LATTICE
+  vec2 wuv = (u_wake_origin + a_grid) * u_wake_scale.xy;
+  float inside = step(0.0, wuv.x) * step(0.0, wuv.y) * step(wuv.x, 1.0) * step(wuv.y, 1.0);
+  vec4 wshape = lattice_sample(u_wake_shape, wuv, u_wake_scale.z) * inside;
+  vec4 wchop = lattice_sample(u_wake_chop, wuv, u_wake_scale.z) * inside;
+  height += wshape.x;
+  coarse_slope += wshape.yz;
+  disp += wchop.xy;
+  jacobian += wchop.z;
 #endif
   vec2 xz = u_tile_offset + a_grid + u_choppiness * disp;
   vec3 rel = vec3(xz.x, height - u_eye_height, xz.y);

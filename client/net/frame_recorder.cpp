@@ -77,9 +77,10 @@ struct FrameRecorder::Channel {
 };
 
 std::vector<int> stream_lattices(const protocol::StreamParams& stream) {
-  if (stream.cascades.empty()) return {stream.grid};
   std::vector<int> sizes;
+  if (stream.cascades.empty()) sizes.push_back(stream.grid);
   for (const Cascade& c : stream.cascades) sizes.push_back(c.grid);
+  if (stream.wake.grid != 0) sizes.push_back(stream.wake.grid);  // CODEC.md 10: the wake lattice last
   return sizes;
 }
 

@@ -7,6 +7,7 @@
 #include "client/render/foam_memory.hpp"
 #include "client/render/renderer.hpp"
 #include "common/cascade.hpp"
+#include "common/wake_lattice.hpp"
 
 #include <cstddef>
 #include <span>
@@ -22,16 +23,20 @@ struct StreamLayout {
     bool operator==(const Lattice&) const = default;
   };
   Lattice tile, coarse;
+  // The vessels' wake (CODEC.md 7.9; n 0: none), its square's corner in the world.
+  Lattice wake;
+  float wake_origin_x_m = 0.0f, wake_origin_z_m = 0.0f;
   std::size_t samples() const {
-    return static_cast<std::size_t>(tile.n) * tile.n + static_cast<std::size_t>(coarse.n) * coarse.n;
+    return static_cast<std::size_t>(tile.n) * tile.n + static_cast<std::size_t>(coarse.n) * coarse.n +
+           static_cast<std::size_t>(wake.n) * wake.n;
   }
   bool operator==(const StreamLayout&) const = default;
 };
 
 // From the Welcome's StreamParams: grid over the patch, or its cascades (at most two: the tile
-// and one coarse cascade; false with `error` otherwise).
-bool stream_layout(int grid, double patch_x_m, double patch_z_m, std::span<const Cascade> cascades, StreamLayout& out,
-                   std::string& error);
+// and one coarse cascade; false with `error` otherwise), then its wake lattice if it has one.
+bool stream_layout(int grid, double patch_x_m, double patch_z_m, std::span<const Cascade> cascades,
+                   const WakeLattice& wake, StreamLayout& out, std::string& error);
 
 // set_grid and set_coarse_grid for the layout. A GL that cannot draw the coarse cascade draws the
 // tile alone, and `warning` says what is missing from the picture (the client shows it once).

@@ -32,12 +32,14 @@ T or_default(T value, T fallback) {
 
 }  // namespace
 
-bool Renderer::build_ocean_program(OceanProgram& program, bool coarse) {
+bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake) {
   namespace src = shader_source;
   std::string vertex = src::ocean_vert;
-  // The define goes right after the "#version 100" line, which must stay first.
+  // The defines go right after the "#version 100" line, which must stay first.
+  if (wake) vertex.insert(vertex.find('\n') + 1, "#define WAKE_LATTICE\n");
   if (coarse) vertex.insert(vertex.find('\n') + 1, "#define COARSE_CASCADE\n");
-  program.id = build_program(coarse ? "ocean (coarse cascade)" : "ocean", vertex.c_str(), src::ocean_frag,
+  const std::string name = std::string("ocean") + (coarse ? " (coarse cascade)" : "") + (wake ? " (wake)" : "");
+  program.id = build_program(name.c_str(), vertex.c_str(), src::ocean_frag,
                              {{kGrid, "a_grid"}, {kHeight, "a_height"}, {kSlope, "a_slope"},
                               {kDisp, "a_disp"}, {kJacobian, "a_jacobian"}},
                              error_);
@@ -47,7 +49,8 @@ bool Renderer::build_ocean_program(OceanProgram& program, bool coarse) {
                loc("u_detail_fade"), loc("u_far_roughness"), loc("u_foam"), loc("u_sky"),
                loc("u_sun_dir"), loc("u_sun_colour"), loc("u_deep_colour"), loc("u_scatter_colour"),
                loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast"),
-               loc("u_coarse_shape"), loc("u_coarse_chop"), loc("u_coarse_scale"), loc("u_coarse_origin")};
+               loc("u_coarse_shape"), loc("u_coarse_chop"), loc("u_coarse_scale"), loc("u_coarse_origin"),
+               loc("u_wake_shape"), loc("u_wake_chop"), loc("u_wake_scale"), loc("u_wake_origin")};
   return true;
 }
 
@@ -79,14 +82,18 @@ bool Renderer::init(const RendererDesc& in) {
   if (desc_.chunks_per_side < 1 || desc_.chunks_per_side > 8)
     return fail("RendererDesc: chunks_per_side must be 1..8, got " + std::to_string(desc_.chunks_per_side));
 
-  if (!build_ocean_program(plain_program_, false)) return false;
-  // The coarse variant is optional: a GL that cannot build it still draws the tile alone.
+  if (!build_ocean_program(programs_[0], false, false)) return false;
+  // The coarse and wake variants are optional: a GL that cannot build them still draws the tile.
   coarse_unsupported_ = in.without_coarse_cascade
                             ? "RendererDesc::without_coarse_cascade"
                             : "this GL has no vertex texture fetch (2 units) or no GL_OES_texture_float";
   if (!in.without_coarse_cascade && CoarseCascade::supported()) {
-    if (build_ocean_program(coarse_program_, true)) coarse_unsupported_.clear();
+    GLint units = 0;
+    glGetIntegerv(GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS, &units);
+    if (build_ocean_program(programs_[1], true, false)) coarse_unsupported_.clear();
     else coarse_unsupported_ = error_;
+    (void)build_ocean_program(programs_[2], false, true);
+    if (units >= 4) (void)build_ocean_program(programs_[3], true, true);
     error_.clear();
   }
   namespace src = shader_source;
@@ -169,6 +176,23 @@ bool Renderer::set_coarse_grid(int n, float patch_x_m, float patch_z_m) {
 
 bool Renderer::upload_coarse_frame(const FrameStreams& frame) { return coarse_.upload(frame, error_); }
 
+bool Renderer::set_wake_grid(int n, float size_m, float origin_x_m, float origin_z_m) {
+  if (!ready_) return fail("Renderer::set_wake_grid called before a successful init");
+  wake_.destroy();
+  if (n == 0) return true;
+  if (!wake_supported()) return fail("set_wake_grid: " + coarse_unsupported_);
+  wake_origin_x_ = origin_x_m;
+  wake_origin_z_ = origin_z_m;
+  return wake_.create(n, size_m, size_m, error_);
+}
+
+bool Renderer::upload_wake_frame(const FrameStreams& frame) { return wake_.upload(frame, error_); }
+
+glm::vec2 Renderer::wake_origin(int ix, int iz) const {
+  return {static_cast<float>(static_cast<double>(ix) * patch_x_ - wake_origin_x_),
+          static_cast<float>(static_cast<double>(iz) * patch_z_ - wake_origin_z_)};
+}
+
 glm::vec2 Renderer::coarse_origin(int ix, int iz) const {
   // In double: tile indices times the patch reach millions of metres far from the origin.
   const auto place = [](int index, float patch, float coarse) {
@@ -215,8 +239,8 @@ TileSelection Renderer::visible_tiles(const Camera& camera, const glm::mat4& cli
   sel.patch_x_m = patch_x_;
   sel.patch_z_m = patch_z_;
   sel.view_distance_m = desc_.view_distance_m;
-  sel.max_height_m = max_height_ + coarse_.max_height();
-  sel.max_displacement_m = max_disp_ + coarse_.max_displacement() * desc_.choppiness;
+  sel.max_height_m = max_height_ + coarse_.max_height() + wake_.max_height();
+  sel.max_displacement_m = max_disp_ + (coarse_.max_displacement() + wake_.max_displacement()) * desc_.choppiness;
   sel.lod.lod0_distance_m = desc_.lod0_distance_m > 0.0f ? desc_.lod0_distance_m : 0.5f * std::max(patch_x_, patch_z_);
   sel.lod.max_level = lod_levels_;
   sel.chunks_per_side = chunks_per_side_;
@@ -254,18 +278,25 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
     glUniform1i(u.coarse_chop, 2);
     glUniform3f(u.coarse_scale, 1.0f / coarse_.patch_x(), 1.0f / coarse_.patch_z(), static_cast<float>(coarse_.n()));
   }
+  if (wake_.active()) {
+    wake_.bind(GL_TEXTURE3);
+    glUniform1i(u.wake_shape, 3);
+    glUniform1i(u.wake_chop, 4);
+    glUniform3f(u.wake_scale, 1.0f / wake_.patch_x(), 1.0f / wake_.patch_z(), static_cast<float>(wake_.n()));
+  }
 }
 
 void Renderer::draw_tiles(const TileSelection& tiles) {
   // Tiles and chunks first (nearest first), then the far blocks with their own buffers.
   const OceanUniforms& u = ocean_program().u;
-  const bool coarse = coarse_.active();
+  const bool coarse = coarse_.active(), wake = wake_.active();
   tile_.bind(has_disp_, has_jacobian_);
   for (const TileDraw& t : tiles.draws) {
     if (t.span > 1) continue;
     const IndexRange& range = index_ranges_[((t.chunk + 1) * (lod_levels_ + 1) + t.level) * kEdgeMaskCount + t.coarser_edges];
     glUniform2f(u.tile_offset, t.offset_relative.x, t.offset_relative.y);
     if (coarse) glUniform2fv(u.coarse_origin, 1, glm::value_ptr(coarse_origin(t.ix, t.iz)));
+    if (wake) glUniform2fv(u.wake_origin, 1, glm::value_ptr(wake_origin(t.ix, t.iz)));
     glDrawElements(GL_TRIANGLES, range.count, index_type_, reinterpret_cast<const void*>(range.byte_offset));
     stats_.triangles += range.count / 3;
     ++stats_.tiles_per_level[std::min(t.level, 5)];
@@ -279,6 +310,7 @@ void Renderer::draw_tiles(const TileSelection& tiles) {
     far_bound = true;
     glUniform2f(u.tile_offset, t.offset_relative.x, t.offset_relative.y);
     if (coarse) glUniform2fv(u.coarse_origin, 1, glm::value_ptr(coarse_origin(t.ix, t.iz)));
+    if (wake) glUniform2fv(u.wake_origin, 1, glm::value_ptr(wake_origin(t.ix, t.iz)));
     glDrawElements(GL_TRIANGLES, far_index_count_, far_index_type_, nullptr);
     stats_.triangles += far_index_count_ / 3;
     stats_.tiles_per_level[std::min(t.level, 5)] += t.span * t.span;
@@ -308,12 +340,13 @@ void Renderer::draw_sky(const Camera& camera, const glm::mat4& clip_from_rel) {
 }
 
 void Renderer::shutdown() {
-  if (!ready_ && !plain_program_.id && !sky_program_) return;
+  if (!ready_ && !programs_[0].id && !sky_program_) return;
   release_grid();
   coarse_.destroy();
-  for (OceanProgram* p : {&plain_program_, &coarse_program_}) {
-    if (p->id) glDeleteProgram(p->id);
-    *p = {};
+  wake_.destroy();
+  for (OceanProgram& p : programs_) {
+    if (p.id) glDeleteProgram(p.id);
+    p = {};
   }
   if (sky_program_) glDeleteProgram(sky_program_);
   if (sky_texture_) glDeleteTextures(1, &sky_texture_);

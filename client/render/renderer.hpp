@@ -76,11 +76,19 @@ class Renderer {
   // patch_x_m x patch_z_m, added at every vertex to the tile, which then carries only the short
   // waves; the sum repeats every coarse patch instead of every tile. Needs vertex texture fetch
   // and float textures (coarse_cascade_supported(), after init); n = 0 removes it.
-  bool coarse_cascade_supported() const { return coarse_program_.id != 0; }
+  bool coarse_cascade_supported() const { return programs_[1].id != 0; }
   const std::string& coarse_cascade_unsupported() const { return coarse_unsupported_; }  // why not
   bool set_coarse_grid(int n, float patch_x_m, float patch_z_m);
   bool has_coarse_grid() const { return coarse_.active(); }
   bool upload_coarse_frame(const FrameStreams& frame);
+
+  // The vessels' wake lattice (CODEC.md 7.9): n x n samples over a size_m square whose corner is
+  // at (origin_x_m, origin_z_m), added where it lies and nowhere else. Needs the GL the coarse
+  // cascade needs (and two more vertex texture units beside one); n = 0 removes it.
+  bool wake_supported() const { return programs_[2].id != 0; }
+  bool set_wake_grid(int n, float size_m, float origin_x_m, float origin_z_m);
+  bool has_wake_grid() const { return wake_.active(); }
+  bool upload_wake_frame(const FrameStreams& frame);
   // The weather's light (weather_light.hpp): 0 a clear sky .. 1 all cloud deck, which hides the
   // sun and greys the sky, its reflection and the water.
   void set_overcast(float overcast);
@@ -116,19 +124,25 @@ class Renderer {
     GLint clip_from_rel, tile_offset, eye_height, choppiness, detail_fade, far_roughness, foam;
     GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon, overcast;
     GLint coarse_shape, coarse_chop, coarse_scale, coarse_origin;  // -1 in the plain program
+    GLint wake_shape, wake_chop, wake_scale, wake_origin;          // -1 without the wake
   };
   struct OceanProgram {
     GLuint id = 0;
     OceanUniforms u{};
   };
-  bool build_ocean_program(OceanProgram& program, bool coarse);
-  const OceanProgram& ocean_program() const { return coarse_.active() ? coarse_program_ : plain_program_; }
+  bool build_ocean_program(OceanProgram& program, bool coarse, bool wake);
+  // plain, coarse, wake, coarse + wake (id 0 where this GL cannot build it)
+  const OceanProgram& ocean_program() const { return programs_[(coarse_.active() ? 1 : 0) + (wake_.active() ? 2 : 0)]; }
   // Where a tile starting at tile index (ix, iz) lies in the coarse patch, in [0, 1).
   glm::vec2 coarse_origin(int ix, int iz) const;
+  // Where a tile starting at tile index (ix, iz) lies from the wake square's corner, metres.
+  glm::vec2 wake_origin(int ix, int iz) const;
 
-  OceanProgram plain_program_, coarse_program_;  // the latter only where the GL supports it
+  OceanProgram programs_[4];  // by ocean_program()'s index; all but the plain one optional
   std::string coarse_unsupported_;                // why not, where it does not
   CoarseCascade coarse_;
+  CoarseCascade wake_;  // the vessels' wake lattice, the same two textures
+  float wake_origin_x_ = 0.0f, wake_origin_z_ = 0.0f;
   GLuint sky_program_ = 0;
   GLuint sky_texture_ = 0, sky_triangle_ = 0;
   PatchBuffers tile_;  // one patch: every LOD level and stitch variant

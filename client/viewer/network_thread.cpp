@@ -148,7 +148,7 @@ void NetworkThread::on_welcome(const protocol::Welcome& welcome) {
   stream_.patch_z_m = static_cast<float>(welcome.stream.patch_z_m);
   stream_.layout_error.clear();
   render::stream_layout(welcome.stream.grid, welcome.stream.patch_x_m, welcome.stream.patch_z_m, welcome.stream.cascades,
-                        stream_.layout, stream_.layout_error);
+                        welcome.stream.wake, stream_.layout, stream_.layout_error);
   stream_.profile = profile ? std::string(profile->name) : "profile-" + std::to_string(welcome.stream.profile_id);
   stream_.lattices = client::stream_lattices(welcome.stream);
   stream_.tick_period_s = welcome.tick_period_s;

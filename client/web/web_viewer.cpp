@@ -116,7 +116,7 @@ void WebViewer::on_welcome(const protocol::Welcome& welcome) {
   render::StreamLayout layout;
   std::string layout_error;
   if (!render::stream_layout(welcome.stream.grid, welcome.stream.patch_x_m, welcome.stream.patch_z_m,
-                             welcome.stream.cascades, layout, layout_error)) {
+                             welcome.stream.cascades, welcome.stream.wake, layout, layout_error)) {
     pending_end_ = layout_error;
     return;
   }
