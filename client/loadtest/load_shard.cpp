@@ -142,7 +142,8 @@ void LoadShard::on_scene_update(const protocol::SceneUpdate& u) {
 void LoadShard::warn_if_server_differs(const protocol::Welcome& w) const {
   const Scenario* scenario = o_.scenario.empty() ? nullptr : find_scenario(o_.scenario);
   if (!scenario) return;
-  if (const std::string why = server_mismatch(scenario->server, facts_->tick_rate_hz, w.epoch_unix_ms, unix_now_s()); !why.empty())
+  if (const std::string why = server_mismatch(scenario->server, facts_->tick_rate_hz, w.epoch_unix_ms, unix_now_s(), w.vessels.size());
+      !why.empty())
     std::fprintf(stderr, "ocean-loadtest: warning: the server does not run as scenario %s needs (%s): %s; "
                  "start it with client/loadtest/local_server.py\n", o_.scenario.c_str(), describe(scenario->server).c_str(), why.c_str());
 }

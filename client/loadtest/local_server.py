@@ -204,6 +204,8 @@ def scenario_server_args(entry, workdir, first_change_s=2.5, horizon_s=600.0, no
     args = []
     if needs["profiles"]:
         args += ["--profiles", needs["profiles"]]
+    if needs.get("fleet"):  # a scenario's vessels: a config file of [[vessel]] tables (fleets/)
+        args += ["--config", os.path.join(os.path.dirname(os.path.abspath(__file__)), "fleets", needs["fleet"] + ".toml")]
     if not (needs["tick_rate_hz"] or needs["epoch_days_ago"] or needs["schedule"]):
         return args
     now_ms = int(time.time() * 1000) if now_ms is None else now_ms

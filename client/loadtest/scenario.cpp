@@ -21,13 +21,17 @@ constexpr Scenario kScenarios[] = {
     {"edge-2g", "mobile", "udp", "rate=32kbit,delay=300ms,jitter=50ms,loss=3%",
      "a phone on a 2G EDGE cell: a 32 kbit/s pipe, long delay; the first frame must come within 2 s"},
     {"gprs", "lite", "udp", "rate=16kbit,delay=300ms,jitter=50ms,loss=2%",
-     "the thinnest link we stream to: GPRS, 16 kbit/s, the lite profile", {}, {0, 0, {}, "mobile,desktop,lite"}},
+     "the thinnest link we stream to: GPRS, 16 kbit/s, the lite profile", {}, {0, 0, {}, "mobile,desktop,lite", {}, 0}},
     {"weather-front", "mobile", "udp", "rate=256kbit,delay=80ms,jitter=20ms,loss=2%",
      "a 3G phone while the weather changes every 2.5 s: every scene key, depth and spectrum included",
-     {}, {0, 0, "weather-front", {}}},
+     {}, {0, 0, "weather-front", {}, {}, 0}},
     {"old-epoch", "mobile", "udp", "delay=20ms",
      "a fleet whose epoch is 11 years back, ticking at 240 Hz: ticks beyond 32 bits",
-     {}, {240, 4018, {}, {}}},
+     {}, {240, 4018, {}, {}, {}, 0}},
+    {"harbour", "mobile", "udp", "rate=32kbit,delay=300ms,jitter=50ms,loss=3%",
+     "8 vessels and their wakes (the server's sea), phones on a 2G EDGE cell", {}, {0, 0, {}, {}, "harbour", 8}},
+    {"regatta", "desktop-choppy", "udp", "",
+     "16 yachts racing, desktops on a LAN with the choppy profile", {}, {0, 0, {}, "mobile,desktop-choppy", "regatta", 16}},
 };
 
 }  // namespace
@@ -52,6 +56,7 @@ std::string describe(const ServerNeeds& n) {
   if (n.epoch_days_ago) add("epoch=now-" + std::to_string(n.epoch_days_ago) + "d");
   if (!n.schedule.empty()) add("schedule=" + std::string(n.schedule));
   if (!n.profiles.empty()) add("profiles=" + std::string(n.profiles));
+  if (!n.fleet.empty()) add("fleet=" + std::string(n.fleet) + " (" + std::to_string(n.vessels) + " vessels)");
   return out;
 }
 
@@ -59,7 +64,8 @@ std::string describe(const ServerNeeds& n) {
 
 namespace ocean::loadtest {
 
-std::string server_mismatch(const ServerNeeds& n, int tick_rate_hz, std::int64_t epoch_unix_ms, double now_unix_s) {
+std::string server_mismatch(const ServerNeeds& n, int tick_rate_hz, std::int64_t epoch_unix_ms, double now_unix_s,
+                            std::size_t vessels) {
   std::string out;
   if (n.tick_rate_hz && n.tick_rate_hz != tick_rate_hz)
     out += "it ticks at " + std::to_string(tick_rate_hz) + " Hz, not " + std::to_string(n.tick_rate_hz);
@@ -67,6 +73,9 @@ std::string server_mismatch(const ServerNeeds& n, int tick_rate_hz, std::int64_t
   if (n.epoch_days_ago && std::fabs(days_ago - n.epoch_days_ago) > 2.0)
     out += (out.empty() ? "" : "; ") + std::string("its epoch is ") + std::to_string(std::lround(days_ago)) +
            " days ago, not " + std::to_string(n.epoch_days_ago);
+  if (n.vessels && static_cast<std::size_t>(n.vessels) != vessels)
+    out += (out.empty() ? "" : "; ") + std::string("it runs ") + std::to_string(vessels) + " vessels, not " +
+           std::to_string(n.vessels);
   return out;
 }
 

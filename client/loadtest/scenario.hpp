@@ -19,7 +19,11 @@ struct ServerNeeds {
   int epoch_days_ago = 0;       // --epoch this many days before now; 0 = the server's default
   std::string_view schedule;    // a [[schedule]] generator in local_server.py (SCHEDULES); "" = none
   std::string_view profiles;    // --profiles; "" = the server's default
-  bool any() const { return tick_rate_hz || epoch_days_ago || !schedule.empty() || !profiles.empty(); }
+  // A fleet of vessels, client/loadtest/fleets/<fleet>.toml given as --config; "" = none. `vessels`
+  // is how many it has (the Welcome must name as many).
+  std::string_view fleet;
+  int vessels = 0;
+  bool any() const { return tick_rate_hz || epoch_days_ago || !schedule.empty() || !profiles.empty() || !fleet.empty(); }
 };
 
 struct Scenario {
@@ -41,6 +45,7 @@ std::uint64_t announced_bandwidth_bps(const Scenario& s);
 std::string describe(const ServerNeeds& needs);
 // "" when a server's Welcome (tick rate, epoch) fits the needs; otherwise what differs. An epoch
 // fits within two days of the one asked for. A schedule cannot be seen in a Welcome.
-std::string server_mismatch(const ServerNeeds& needs, int tick_rate_hz, std::int64_t epoch_unix_ms, double now_unix_s);
+std::string server_mismatch(const ServerNeeds& needs, int tick_rate_hz, std::int64_t epoch_unix_ms, double now_unix_s,
+                            std::size_t vessels = 0);
 
 }  // namespace ocean::loadtest

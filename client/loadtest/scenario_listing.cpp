@@ -46,7 +46,8 @@ std::string scenarios_json() {
          ",\"link\":" + quoted(s.link) + ",\"bandwidth_bps\":" + std::to_string(announced_bandwidth_bps(s)) +
          ",\"server\":{\"tick_rate_hz\":" + std::to_string(s.server.tick_rate_hz) +
          ",\"epoch_days_ago\":" + std::to_string(s.server.epoch_days_ago) + ",\"schedule\":" + quoted(s.server.schedule) +
-         ",\"profiles\":" + quoted(s.server.profiles) + "},\"why\":" + quoted(s.why) + "}";
+         ",\"profiles\":" + quoted(s.server.profiles) + ",\"fleet\":" + quoted(s.server.fleet) +
+         ",\"vessels\":" + std::to_string(s.server.vessels) + "},\"why\":" + quoted(s.why) + "}";
   }
   return j + "]";
 }

@@ -29,4 +29,11 @@ std::shared_ptr<const ModalModel> ModelCache::recurrence(const StreamConfig& str
       [&] { return RecurrenceEntry{stream, std::make_shared<const ModalModel>(stream)}; });
 }
 
+std::shared_ptr<WakeForcing> ModelCache::wake_forcing(const StreamConfig& stream,
+                                                     const std::vector<model::VesselTrack>& vessels) {
+  return find_or_build(
+      forcings_, kKeep, [&](const ForcingEntry& e) { return e.stream == stream && e.vessels == vessels; },
+      [&] { return ForcingEntry{stream, vessels, std::make_shared<WakeForcing>(stream, vessels)}; });
+}
+
 }  // namespace ocean::codec

@@ -7,6 +7,7 @@
 #include "modal_model.hpp"
 #include "scene_model.hpp"
 #include "stream_config.hpp"
+#include "wake_forcing.hpp"
 
 #include <memory>
 #include <vector>
@@ -18,6 +19,10 @@ class ModelCache {
   // `stream` already carries the scene's depth (as SceneTimeline builds them).
   std::shared_ptr<const SceneModel> scene_model(const StreamConfig& stream, const model::SceneParams& scene);
   std::shared_ptr<const ModalModel> recurrence(const StreamConfig& stream);
+  // The hulls' forcing and the wake's history of one stream's vessels (CODEC.md 7.9), shared by its
+  // decoders: they must all follow the same server's timeline (a DecodeMemo's decoders do), since a
+  // history is advanced by the recurrences of the scenes in force.
+  std::shared_ptr<WakeForcing> wake_forcing(const StreamConfig& stream, const std::vector<model::VesselTrack>& vessels);
 
  private:
   // Scenes change a few times an hour: a short list, the least recently built dropped first
@@ -34,6 +39,12 @@ class ModelCache {
   };
   std::vector<SceneEntry> scenes_;
   std::vector<RecurrenceEntry> recurrences_;
+  struct ForcingEntry {
+    StreamConfig stream;
+    std::vector<model::VesselTrack> vessels;
+    std::shared_ptr<WakeForcing> model;
+  };
+  std::vector<ForcingEntry> forcings_;
 };
 
 }  // namespace ocean::codec

@@ -85,7 +85,7 @@ class SceneTimeline {
   std::map<Tick, std::unique_ptr<Held>> entries_;
   ModelCache* cache_ = nullptr;
   // Mutable: it keeps each tick's pressure for the next advance across it.
-  mutable std::unique_ptr<WakeForcing> forcing_;
+  std::shared_ptr<WakeForcing> forcing_;  // the ModelCache's when shared
 };
 
 }  // namespace ocean::codec

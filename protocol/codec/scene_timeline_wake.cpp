@@ -33,7 +33,10 @@ void fold_part(ModalState& state, std::size_t at, const WakeForcing::Part& p, bo
 
 void SceneTimeline::set_vessels(std::vector<model::VesselTrack> vessels) {
   if (!config_.has_wake()) throw std::invalid_argument("SceneTimeline::set_vessels: the stream has no wake lattice");
-  forcing_ = vessels.empty() ? nullptr : std::make_unique<WakeForcing>(config_, std::move(vessels));
+  if (vessels.empty())
+    forcing_ = nullptr;
+  else
+    forcing_ = cache_ ? cache_->wake_forcing(config_, vessels) : std::make_shared<WakeForcing>(config_, std::move(vessels));
 }
 
 const ModalModel& SceneTimeline::recurrence_near(Tick tick) const {
