@@ -25,8 +25,9 @@ web=()
 if [[ -f "$build_dir/web/ocean-web.wasm" ]]; then
   web=(--ws-listen "$host:$((port + 2))" --web-listen "$host:$((port + 3))")
 fi
+# Two vessels on circuits (deploy/demo-vessels.toml): their wakes are the server's, in every viewer.
 "$build_dir"/server/ocean-server --listen "$host:$port" --metrics-listen "127.0.0.1:$((port + 1))" \
-  --profiles mobile,desktop,lite "${web[@]}" >"$out/server.log" 2>&1 &
+  --profiles mobile,desktop,lite --config deploy/demo-vessels.toml "${web[@]}" >"$out/server.log" 2>&1 &
 server_pid=$!
 trap 'kill -TERM "$server_pid" 2>/dev/null || true; wait "$server_pid" 2>/dev/null || true' EXIT
 if ((${#web[@]})); then

@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -126,13 +127,17 @@ StreamFigures stream_wakes(bool choppy, bool told) {
   std::map<std::uint64_t, StateId> ids;
   StreamFigures out;
   std::size_t bytes = 0, frames = 0;
+  std::vector<double> decode_ms;  // informative: a decoder's time per frame (CODEC.md 11 quotes it)
   for (std::uint64_t tick = 0; tick <= last; ++tick) {
     const sim::Frame f = truth.at(tick, config);
     encoder.add_truth(tick, wake_view(f));
     const auto encoded = tick == 0 ? encoder.encode_key(tick) : encoder.encode_delta(tick, ids.at(tick < 3 ? 0 : tick - 3));
     ids[tick] = encoded->id;
+    const auto t0 = std::chrono::steady_clock::now();
     for (const Chunk& chunk : encoded->chunks) REQUIRE(decoder.accept(view(chunk)) == ChunkError::ok);
     const ReconstructedFrame* shown = decoder.latest();
+    if (tick > last - 300)
+      decode_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     REQUIRE(shown);
     REQUIRE(shown->tick == tick);
     out.bitwise = out.bitwise && shown->height == encoded->reconstruction.height &&
@@ -160,6 +165,8 @@ StreamFigures stream_wakes(bool choppy, bool told) {
       out.wake_peak = std::max(out.wake_peak, std::fabs(static_cast<double>(f.height[i])));
   }
   out.bytes_per_frame = static_cast<double>(bytes) / frames;
+  std::nth_element(decode_ms.begin(), decode_ms.begin() + decode_ms.size() / 2, decode_ms.end());
+  std::printf("  decode per frame, median of the last 300: %.3f ms\n", decode_ms[decode_ms.size() / 2]);
   std::printf("wake stream (%s, 8 vessels, 64 x 64 wake over %g m, tracks %s): %.1f payload bytes per frame "
               "(10-20 s), a key at 15 s %zu bytes; wake peak %.3f m; errors h %.2g s %.2g d %.2g dd %.2g\n",
               choppy ? "choppy" : "plain", kRegion, told ? "told" : "not told", out.bytes_per_frame, out.late_key_bytes,

@@ -372,3 +372,52 @@ TEST_CASE("any 64-bit seed can be given, in TOML as a string, a bad one says wha
   CHECK(bad.outcome == Outcome::error);
   CHECK(bad.message.find("unsigned 64-bit") != std::string::npos);
 }
+
+// Vessels ([[vessel]] tables) and the wake's square (CODEC.md 7.9): a fleet loads, and every bad
+// vessel is refused with a message that names the vessel and what is wrong.
+TEST_CASE("a config file's vessels load, and bad ones are refused by name", "[config]") {
+  TempFile fleet(R"(
+wake-size = 400
+wake-origin-x = -200
+wake-origin-z = -200
+[[vessel]]
+id = 3
+length = 24
+beam = 6
+draft = 1.5
+repeat = true
+waypoints = [[0, -100, -100], [20, 100, -100], [40, -100, -100]]
+[[vessel]]
+id = 4
+length = 12.5
+beam = 4
+draft = 1
+waypoints = [[0, 50, 50]]
+)");
+  const ConfigLoadResult ok = load({"--config", fleet.path()});
+  REQUIRE(ok.message == "");
+  REQUIRE(ok.config.vessels.size() == 2);
+  CHECK(ok.config.vessels[0].id == 3);
+  CHECK(ok.config.vessels[0].repeat);
+  CHECK(ok.config.vessels[0].points.size() == 3);
+  CHECK(ok.config.vessels[0].points[1].x_m == 100.0);
+  CHECK(ok.config.vessels[1].hull.length_m == 12.5);
+  CHECK(ok.config.wake_size_m == 400.0);
+
+  const auto refused = [&](const std::string& vessel, const std::vector<std::string>& mentions) {
+    TempFile file("wake-size = 400\nwake-origin-x = -200\nwake-origin-z = -200\n[[vessel]]\n" + vessel);
+    const ConfigLoadResult r = load({"--config", file.path()});
+    INFO(vessel << " -> " << r.message);
+    CHECK(r.outcome == Outcome::error);
+    for (const std::string& m : mentions) CHECK_THAT(r.message, Catch::Contains(m));
+  };
+  refused("id = 1\nlength = 24\nbeam = 6\ndraft = 1.5\nwaypoints = [[0, 0, 0], [1, 100, 0]]\n", {"vessel 1", "m/s"});
+  refused("id = 1\nlength = 24\nbeam = 6\ndraft = 1.5\nwaypoints = [[0, 500, 0]]\n", {"vessel 1", "outside"});
+  refused("id = 1\nlength = 24\nbeam = 60\ndraft = 1.5\nwaypoints = [[0, 0, 0]]\n", {"beam_m"});
+  refused("id = 1\nlength = 24\nbeam = 6\ndraft = 1.5\nwaypoints = [[0, 0]]\n", {"[t, x, z]"});
+  refused("id = 1\nlength = 24\nbeam = 6\nwaypoints = [[0, 0, 0]]\n", {"length, beam and draft"});
+  refused("id = 1\nlength = 24\nbeam = 6\ndraft = 1\nspeed = 3\nwaypoints = [[0, 0, 0]]\n", {"unknown key 'speed'"});
+  refused("id = 1\nlength = 24\nbeam = 6\ndraft = 1\nrepeat = true\nwaypoints = [[0, 0, 0], [10, 10, 0]]\n", {"circuit"});
+  CHECK_THAT(load({"--wake-size", "10"}).message, Catch::Contains("--wake-size"));
+  CHECK_THAT(load({"--wake-decay", "0"}).message, Catch::Contains("--wake-decay"));
+}

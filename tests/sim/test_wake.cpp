@@ -1,5 +1,6 @@
 // The wake's physics from its own heights: the Kelvin wedge, the transverse wavelength along the
 // track, and the decay once a vessel is gone - none of it tuned into the model.
+#include "dominant_wavenumber.hpp"
 #include "epoch_wake.hpp"
 #include "wake_field.hpp"
 
@@ -12,6 +13,7 @@
 #include <vector>
 
 using namespace ocean::sim;
+using ocean::test_support::dominant_wavenumber;
 
 namespace {
 
@@ -46,20 +48,6 @@ Run run_straight(double speed, double seconds, double x0 = 100.0, double depth_m
   return run;
 }
 
-// The dominant wavenumber of samples spaced dx (Hann window, scanned finely).
-double dominant_wavenumber(const std::vector<double>& samples, double dx, double k_lo, double k_hi) {
-  const std::size_t n = samples.size();
-  double best_k = 0.0, best = -1.0;
-  for (double k = k_lo; k <= k_hi; k += 1e-4 * (k_hi - k_lo)) {
-    std::complex<double> sum{};
-    for (std::size_t i = 0; i < n; ++i) {
-      const double w = 0.5 - 0.5 * std::cos(2.0 * pi * static_cast<double>(i) / static_cast<double>(n - 1));
-      sum += w * samples[i] * std::complex<double>(std::cos(k * dx * i), -std::sin(k * dx * i));
-    }
-    if (std::abs(sum) > best) best = std::abs(sum), best_k = k;
-  }
-  return best_k;
-}
 
 }  // namespace
 
