@@ -1,6 +1,6 @@
 // ReplicaPair: two ocean-server processes started from one TOML config file (the production
 // path: --config), each on its own free loopback port, in a temporary directory removed at the
-// end. The config fixes the epoch, seed, scene and profiles, so the two are replicas.
+// end. The config fixes the epoch, seed, scene, profiles and vessels, so the two are replicas.
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -43,6 +43,23 @@ epoch = 2026-01-01T00:00:00Z
 profiles = ["mobile", "lite"]
 idle-timeout = 60
 log-level = "info"
+
+# Vessels: the wake is the server's own sea (CODEC.md 7.9); replicas must author it alike.
+[[vessel]]
+id = 1
+length = 24
+beam = 6
+draft = 1.5
+repeat = true
+waypoints = [[0, -100, -100], [30, 100, -100], [60, 100, 100], [90, -100, 100], [120, -100, -100]]
+
+[[vessel]]
+id = 2
+length = 10
+beam = 3
+draft = 0.6
+repeat = true
+waypoints = [[0, -200, 40], [50, 200, 40], [100, -200, 40]]
 )";
 }
 

@@ -72,6 +72,7 @@ TEST_CASE("a viewer whose replica dies continues on another after one keyframe",
     if (!truth) {
       truth.emplace(static_cast<int>(std::lround(1.0 / w.tick_period_s)));
       truth->set_scene(0, w.scene);
+      truth->set_wake(w.stream.wake, w.vessels, w.scene);  // the replicas run vessels
       bounds = {w.stream.height_step_m / 2.0, w.stream.normals ? w.stream.slope_step / 2.0 : 0.0};
     }
   });
