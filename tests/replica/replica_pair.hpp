@@ -28,7 +28,9 @@ using test_support::ServerProcess;
 inline constexpr std::int64_t kEpochUnixMs = 1767225600000;
 inline constexpr int kTickRateHz = 30;
 
-inline std::string replica_config_toml() {
+// With `vessels`, two vessels sail: the wake is the server's own sea (CODEC.md 7.9), and replicas
+// must author it alike.
+inline std::string replica_config_toml(bool vessels) {
   return R"(# Written by tests/replica: every replica of this test reads this one file.
 listen = "127.0.0.1:0"
 metrics-listen = "off"
@@ -43,8 +45,7 @@ epoch = 2026-01-01T00:00:00Z
 profiles = ["mobile", "lite"]
 idle-timeout = 60
 log-level = "info"
-
-# Vessels: the wake is the server's own sea (CODEC.md 7.9); replicas must author it alike.
+)" + std::string(vessels ? R"(
 [[vessel]]
 id = 1
 length = 24
@@ -60,7 +61,7 @@ beam = 3
 draft = 0.6
 repeat = true
 waypoints = [[0, -200, 40], [50, 200, 40], [100, -200, 40]]
-)";
+)" : "");
 }
 
 class TempDir {
@@ -86,9 +87,10 @@ class TempDir {
 class ReplicaPair {
  public:
   // stagger_s: the second replica starts this long after the first is listening, so the two
-  // begin at different ticks (frames must not depend on when a server started).
-  explicit ReplicaPair(double stagger_s = 0.0) {
-    std::ofstream(dir_.file("ocean.toml")) << replica_config_toml();
+  // begin at different ticks (frames must not depend on when a server started). vessels: the
+  // config runs two (replica_config_toml).
+  explicit ReplicaPair(double stagger_s = 0.0, bool vessels = false) {
+    std::ofstream(dir_.file("ocean.toml")) << replica_config_toml(vessels);
     for (int i = 0; i < 2; ++i) {
       if (i == 1 && stagger_s > 0.0) {
         REQUIRE(servers_[0]->wait_listening(30.0));

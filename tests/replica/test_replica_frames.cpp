@@ -234,7 +234,7 @@ std::vector<asio::ip::tcp::endpoint> parse_endpoints(const std::string& text) {
 }  // namespace
 
 TEST_CASE("replicas send byte-identical frames", "[replica]") {
-  ReplicaPair pair(1.0);
+  ReplicaPair pair(1.0, true);  // with vessels: the wake lattice must be byte-identical too
   const Replicas replicas{pair.endpoints(), [&] { return pair.logs(); }, kEpochUnixMs};
   for (const char* name : {"mobile", "lite"}) {
     const Profile* profile = find_profile(name);
