@@ -1,8 +1,9 @@
-// The wake lattice (codec version 6): the sim's wake of vessels on circuits, streamed beside a
-// band of the sea at a lag of 3 ticks, decodes bit for bit as the encoder reconstructs it and
-// within half a step of the truth in every channel; once the hulls are lifted their free waves
-// cost next to nothing (the damped recurrence predicts them), so the bytes go to the corrections
-// near the hulls. (Lag 1, keys and a change of scene: the mobile_wake vector.)
+// The wake lattice (codec version 6): the server's wake of 8 vessels on circuits (EpochWake, 10 s
+// epochs), streamed beside a band of the sea at a lag of 3 ticks, decodes bit for bit as the
+// encoder reconstructs it and within half a step of the truth in every channel. A decoder told the
+// tracks predicts the hulls' forcing and the epochs' drops, so the wake costs next to nothing and a
+// key for a viewer joining mid-run carries no wake; one not told gets the forcing as corrections.
+// (Lag 1, keys and a change of scene: the mobile_wake vector.)
 #include "cascade_frame.hpp"
 #include "decoder.hpp"
 #include "encoder.hpp"
