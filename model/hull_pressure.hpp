@@ -14,6 +14,8 @@
 #include "vessel_track.hpp"
 
 #include <complex>
+#include <cstddef>
+#include <span>
 #include <vector>
 
 namespace ocean::model {
@@ -23,24 +25,33 @@ class HullPressure {
  public:
   HullPressure(int n, double size_m);
 
-  // Adds the hull at `pose` (x, z measured from the lattice's corner) times `scale` to `out`
-  // (n (n/2 + 1) coefficients).
-  void add(const HullPose& pose, double scale, std::complex<double>* out);
+  // Adds the hulls at `poses` (x, z measured from the lattice's corner) times `scale` to `out`
+  // (n (n/2 + 1) coefficients), each mode summing them in their order. At most kMaxHulls.
+  void add(std::span<const HullPose> poses, double scale, std::complex<double>* out);
+
+  static constexpr std::size_t kMaxHulls = 32;
 
   int n() const { return n_; }
 
  private:
   struct Envelope {
+    bool fits(const HullPose& pose) const;
     Hull hull;
     double dir_x, dir_z;
     std::vector<double> value;  // per mode
   };
-  const std::vector<double>& envelope(const HullPose& pose);
+  // The sim's phases of a row or column (hull_pressure.cpp); `rows` null for the columns.
+  void power_phases(double step, double scale, double* column_re, double* column_im, std::complex<double>* rows) const;
+  // The envelope of this pose's hull and heading, made if new; it never drops one `in_use` needs.
+  const double* envelope(const HullPose& pose, std::span<const HullPose> in_use);
 
   int n_, columns_;
   double size_m_;
   std::vector<Envelope> envelopes_;  // the last few hulls and headings
-  std::vector<std::complex<double>> row_phase_, column_phase_;
+  // Per hull of the current call: its row phases, column phases and envelope.
+  std::vector<std::complex<double>> row_phase_;
+  std::vector<double> column_re_, column_im_;
+  std::vector<const double*> envelope_of_;
 };
 
 extern template class HullPressure<Libm>;

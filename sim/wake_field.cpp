@@ -51,10 +51,11 @@ void WakeField::prepare_step(double dt_s) {
   if (dt_s == step_dt_) return;
   step_dt_ = dt_s;
   const std::size_t modes = omega_.size();
-  c_ee_.assign(modes, 0.0);
+  // The identity for modes that never move (skipped below): they start at 0 and (0 + p) - p is 0.
+  c_ee_.assign(modes, 1.0);
   c_ev_.assign(modes, 0.0);
   c_ve_.assign(modes, 0.0);
-  c_vv_.assign(modes, 0.0);
+  c_vv_.assign(modes, 1.0);
   const int n = region_.n;
   for (std::size_t m = 0; m < modes; ++m) {
     const double w = omega_[m], g = gamma_[m];
@@ -85,14 +86,29 @@ void WakeField::prepare_step(double dt_s) {
 void WakeField::step(double dt_s, std::span<const HullPose> mid) {
   if (!(dt_s > 0.0 && dt_s <= 1.0)) throw ParamError(bad_param("wake dt", dt_s, "(0, 1] s"));
   prepare_step(dt_s);
-  std::fill(forcing_.begin(), forcing_.end(), std::complex<double>{});
-  for (const HullPose& pose : mid) pressure_.add(pose, 1.0, forcing_.data());
-  for (std::size_t m = 0; m < eta_.size(); ++m) {
-    if (c_ev_[m] == 0.0 && c_vv_[m] == 0.0) continue;  // a mode that never moves (prepare_step)
-    const std::complex<double> p = forcing_[m];
-    const std::complex<double> xi = eta_[m] + p, v = velocity_[m];
-    eta_[m] = c_ee_[m] * xi + c_ev_[m] * v - p;
-    velocity_[m] = c_ve_[m] * xi + c_vv_[m] * v;
+  // Flat over real and imaginary parts (std::complex is laid out as two doubles), so the loops
+  // vectorise; a mode that never moves has the identity propagator and stays exactly 0.
+  double* eta = reinterpret_cast<double*>(eta_.data());
+  double* velocity = reinterpret_cast<double*>(velocity_.data());
+  const std::size_t modes = eta_.size();
+  if (mid.empty()) {
+    // Free ringing (an epoch's part after its epoch): no forcing to build or add.
+    for (std::size_t m = 0; m < modes; ++m)
+      for (std::size_t part = 2 * m; part < 2 * m + 2; ++part) {
+        const double xi = eta[part], v = velocity[part];
+        eta[part] = c_ee_[m] * xi + c_ev_[m] * v;
+        velocity[part] = c_ve_[m] * xi + c_vv_[m] * v;
+      }
+  } else {
+    std::fill(forcing_.begin(), forcing_.end(), std::complex<double>{});
+    pressure_.add(mid, 1.0, forcing_.data());
+    const double* p = reinterpret_cast<const double*>(forcing_.data());
+    for (std::size_t m = 0; m < modes; ++m)
+      for (std::size_t part = 2 * m; part < 2 * m + 2; ++part) {
+        const double xi = eta[part] + p[part], v = velocity[part];
+        eta[part] = c_ee_[m] * xi + c_ev_[m] * v - p[part];
+        velocity[part] = c_ve_[m] * xi + c_vv_[m] * v;
+      }
   }
   time_s_ += dt_s;
 }

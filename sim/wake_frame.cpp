@@ -9,10 +9,29 @@
 namespace ocean::sim {
 
 struct WakeSampler::Plan {
-  explicit Plan(int grid) : fft(grid, grid), spectrum(fft.make_spectrum()) {}
+  explicit Plan(int grid) : grid(grid), fft(grid, grid), spectrum(fft.make_spectrum()) {}
+  // The wavenumbers of this grid's half spectrum over a region of side size_m (kept until it changes).
+  void prepare(double region_m) {
+    if (region_m == size_m) return;
+    size_m = region_m;
+    const int columns = grid / 2 + 1;
+    kx.resize(columns);
+    for (int i = 0; i < columns; ++i) kx[i] = wavenumber(i, size_m);
+    kz.resize(grid);
+    for (int j = 0; j < grid; ++j) kz[j] = wavenumber(j < grid / 2 ? j : j - grid, size_m);
+    inverse_k.resize(static_cast<std::size_t>(grid) * columns);
+    for (int j = 0; j < grid; ++j)
+      for (int i = 0; i < columns; ++i) {
+        const double k = std::hypot(kx[i], kz[j]);
+        inverse_k[static_cast<std::size_t>(j) * columns + i] = k > 0.0 ? 1.0 / k : 0.0;
+      }
+  }
+  int grid;
   C2rTransform fft;
   FftwArray<fftwf_complex> spectrum;
   std::vector<std::complex<double>> band;  // the wake's modes on this grid's half spectrum
+  double size_m = 0.0;
+  std::vector<double> kx, kz, inverse_k;
 };
 
 WakeSampler::WakeSampler() = default;
@@ -28,23 +47,21 @@ WakeSampler::Plan& WakeSampler::plan(int grid) {
 
 namespace {
 
-// One channel: `factor(kx, kz)` times each mode (as a complex multiplier), synthesized into `out`.
-template <typename Factor>
-void synthesize(C2rTransform& fft, fftwf_complex* spectrum,
-                const std::vector<std::complex<double>>& band, int grid, double size_m, Factor factor,
-                std::vector<float>& out) {
-  const int columns = grid / 2 + 1;
-  for (int j = 0; j < grid; ++j) {
-    const double kz = wavenumber(j < grid / 2 ? j : j - grid, size_m);
+// One channel: each mode times `factor(kx, kz, 1/k)`, a real number, or i times it where
+// `Imaginary` (a derivative), synthesized into `out`.
+template <bool Imaginary, typename Factor>
+void synthesize(WakeSampler::Plan& p, Factor factor, std::vector<float>& out) {
+  const int grid = p.grid, columns = grid / 2 + 1;
+  for (int j = 0; j < grid; ++j)
     for (int i = 0; i < columns; ++i) {
       const std::size_t m = static_cast<std::size_t>(j) * columns + i;
-      const std::complex<double> v = band[m] * factor(wavenumber(i, size_m), kz);
-      spectrum[m][0] = static_cast<float>(v.real());
-      spectrum[m][1] = static_cast<float>(v.imag());
+      const double f = factor(p.kx[i], p.kz[j], p.inverse_k[m]);
+      const std::complex<double> v = p.band[m];
+      p.spectrum[m][0] = static_cast<float>(Imaginary ? -(v.imag() * f) : v.real() * f);
+      p.spectrum[m][1] = static_cast<float>(Imaginary ? v.real() * f : v.imag() * f);
     }
-  }
   out.resize(static_cast<std::size_t>(grid) * grid);
-  fft.execute(spectrum, out.data());
+  p.fft.execute(p.spectrum.get(), out.data());
 }
 
 }  // namespace
@@ -73,32 +90,25 @@ void WakeSampler::sample(std::span<const WakeField* const> wakes, int grid, Fram
         p.band[static_cast<std::size_t>(j) * columns + i] += w->modes()[static_cast<std::size_t>(wake_row) * wake_columns + i];
   }
   const double size = wake.region().size_m;
+  p.prepare(size);
   out.n_x = out.n_z = grid;
   out.patch_x_m = out.patch_z_m = size;
   out.time_s = wake.time_s();
-  using C = std::complex<double>;
-  const auto channel = [&](auto factor, std::vector<float>& into) {
-    synthesize(p.fft, p.spectrum.get(), p.band, grid, size, factor, into);
-  };
-  channel([](double, double) { return C(1.0); }, out.height);
+  synthesize<false>(p, [](double, double, double) { return 1.0; }, out.height);
   out.slope_x.clear();
   out.slope_z.clear();
   if (request.slopes) {
-    channel([](double kx, double) { return C(0.0, kx); }, out.slope_x);
-    channel([](double, double kz) { return C(0.0, kz); }, out.slope_z);
+    synthesize<true>(p, [](double kx, double, double) { return kx; }, out.slope_x);
+    synthesize<true>(p, [](double, double kz, double) { return kz; }, out.slope_z);
   }
   for (auto* v : {&out.disp_x, &out.disp_z, &out.disp_xx, &out.disp_zz, &out.disp_xz, &out.jacobian}) v->clear();
   if (!request.choppy) return;
   const double lambda = choppiness;
-  const auto over_k = [](double kx, double kz) {
-    const double k = std::hypot(kx, kz);
-    return k > 0.0 ? 1.0 / k : 0.0;
-  };
-  channel([&](double kx, double kz) { return C(0.0, -lambda * kx * over_k(kx, kz)); }, out.disp_x);
-  channel([&](double kx, double kz) { return C(0.0, -lambda * kz * over_k(kx, kz)); }, out.disp_z);
-  channel([&](double kx, double kz) { return C(lambda * kx * kx * over_k(kx, kz)); }, out.disp_xx);
-  channel([&](double kx, double kz) { return C(lambda * kz * kz * over_k(kx, kz)); }, out.disp_zz);
-  channel([&](double kx, double kz) { return C(lambda * kx * kz * over_k(kx, kz)); }, out.disp_xz);
+  synthesize<true>(p, [&](double kx, double, double inv_k) { return -lambda * kx * inv_k; }, out.disp_x);
+  synthesize<true>(p, [&](double, double kz, double inv_k) { return -lambda * kz * inv_k; }, out.disp_z);
+  synthesize<false>(p, [&](double kx, double, double inv_k) { return lambda * kx * kx * inv_k; }, out.disp_xx);
+  synthesize<false>(p, [&](double, double kz, double inv_k) { return lambda * kz * kz * inv_k; }, out.disp_zz);
+  synthesize<false>(p, [&](double kx, double kz, double inv_k) { return lambda * kx * kz * inv_k; }, out.disp_xz);
   out.jacobian.resize(out.height.size());
   for (std::size_t i = 0; i < out.jacobian.size(); ++i)
     out.jacobian[i] = (1.0f + out.disp_xx[i]) * (1.0f + out.disp_zz[i]) - out.disp_xz[i] * out.disp_xz[i];

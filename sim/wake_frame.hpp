@@ -27,8 +27,9 @@ class WakeSampler {
   // The same of the sum of several fields over one region.
   void sample(std::span<const WakeField* const> wakes, int grid, FrameRequest request, double choppiness, Frame& out);
 
+  struct Plan;  // one grid's transform and wavenumbers (wake_frame.cpp)
+
  private:
-  struct Plan;
   Plan& plan(int grid);
   std::map<int, std::unique_ptr<Plan>> plans_;
 };

@@ -43,12 +43,14 @@ const std::vector<std::complex<double>>& WakeForcing::pressure(Tick t) {
   p.assign(static_cast<std::size_t>(lattice_.n) * (lattice_.n / 2 + 1), {});
   // Ticks as signed: the step before tick 0 is at -0.5 ticks, before every track's start.
   const double time_s = (static_cast<double>(static_cast<std::int64_t>(t)) + 0.5) / rate_hz_;
+  poses_.clear();
   for (const model::VesselTrack& v : vessels_) {
     model::HullPose pose = model::pose_at(v, time_s);
     pose.x_m -= origin_x_m_;
     pose.z_m -= origin_z_m_;
-    hulls_.add(pose, scale_, p.data());
+    poses_.push_back(pose);
   }
+  hulls_.add(poses_, scale_, p.data());
   return p;
 }
 

@@ -44,6 +44,7 @@ class WakeForcing {
   double origin_x_m_, origin_z_m_, rate_hz_, scale_;
   std::vector<model::VesselTrack> vessels_;
   model::HullPressure<model::Det> hulls_;
+  std::vector<model::HullPose> poses_;  // this tick's, reused
   std::map<Tick, std::vector<std::complex<double>>> ticks_;  // the newest ones asked for
 };
 
