@@ -11,6 +11,9 @@
 #include "cascade_set.hpp"
 #include "ocean.hpp"
 #include "profile.hpp"
+#include "config_loader.hpp"
+#include "epoch_wake.hpp"
+#include "frame_producer.hpp"
 
 #include <CLI/CLI.hpp>
 #include <zstd.h>
@@ -208,6 +211,10 @@ int run_codec(int argc, char** argv) {
                  "threads each decoder spreads a frame's transforms over (the caller's and helpers, as ocean-viewer "
                  "does with cores to spare); the same bits")
       ->capture_default_str()->check(CLI::Range(1, 8));
+  std::string fleet_file;
+  app.add_option("--fleet", fleet_file,
+                 "an ocean-server config with [[vessel]]s (client/loadtest/fleets/*.toml): frames carry their wake, "
+                 "from the server's FrameProducer, and the encoder and decoder know their tracks");
   app.add_flag("--json", json, "JSON lines (the only output format)");
   try {
     app.parse(argc, argv);
@@ -217,6 +224,16 @@ int run_codec(int argc, char** argv) {
   if (lag < 1 || lag > 60) {
     std::fprintf(stderr, "ocean-bench codec: --baseline-lag must be in [1, 60]\n");
     return 2;
+  }
+  std::optional<server::ServerConfig> fleet;
+  if (!fleet_file.empty()) {
+    server::ConfigLoadResult loaded = server::load_config({"ocean-bench codec", "--config", fleet_file});
+    if (loaded.outcome != server::ConfigLoadResult::Outcome::run || loaded.config.vessels.empty()) {
+      std::fprintf(stderr, "ocean-bench codec: --fleet %s: %s\n", fleet_file.c_str(),
+                   loaded.message.empty() ? "no [[vessel]] in it" : loaded.message.c_str());
+      return 2;
+    }
+    fleet = std::move(loaded.config);
   }
   WorkerPool pool(decode_threads - 1);
   std::vector<int> lags{lag};
@@ -238,16 +255,28 @@ int run_codec(int argc, char** argv) {
     // A cascaded profile's truth is its cascades' frames one after the other (its stream's fields).
     std::optional<sim::CascadeSet> cascades;
     if (!p->cascades.empty()) cascades.emplace(scene, p->cascades);
+    // With a fleet, the server's own frames: the sea's, then the wake lattice of the profile's grid.
+    std::unique_ptr<server::FrameProducer> producer;
+    if (fleet)
+      producer = std::make_unique<server::FrameProducer>(
+          server::SceneSchedule(scene, {}), std::vector<const Profile*>{p},
+          server::WakeSetup{fleet->wake_size_m, fleet->wake_origin_x_m, fleet->wake_origin_z_m, fleet->wake_decay_per_s,
+                            fleet->vessels, p->rate_hz});
     const auto truth_at = [&](double t, sim::Frame& out) {
-      if (cascades)
+      if (producer)
+        out = producer->produce(std::llround(t * p->rate_hz), t)->frames.front().frame;
+      else if (cascades)
         cascades->evaluate(t, out, sim::FrameRequest{true, p->choppy});
       else
         ocean.evaluate_band(t, p->grid, p->grid, out, sim::FrameRequest{true, p->choppy});
     };
     const model::SceneParams model = scene;
     const int n = p->grid;
-    const StreamConfig config =
+    StreamConfig config =
         StreamConfig::from_profile(*p, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2, model::wire_depth(scene.depth_m));
+    if (fleet)
+      config.wake = WakeLattice{p->wake_grid, fleet->wake_size_m, fleet->wake_origin_x_m, fleet->wake_origin_z_m,
+                                fleet->wake_decay_per_s, 1e-6, static_cast<std::uint32_t>(sim::wake_epoch_ticks(p->rate_hz))};
     const int frames = std::max(8, static_cast<int>(seconds * p->rate_hz));
     const std::size_t m = config.samples();
 
@@ -270,6 +299,10 @@ int run_codec(int argc, char** argv) {
       ours[i].dec = std::make_unique<codec::Decoder>(config, options);
       ours[i].enc->set_scene(0, 0, model);
       ours[i].dec->add_scene(0, 0, model);
+      if (fleet) {
+        ours[i].enc->set_vessels(fleet->vessels);
+        ours[i].dec->set_vessels(fleet->vessels);
+      }
       ours[i].tally.method = "ours";
       ours[i].tally.lag = lags[i];
       ours[i].tally.decode_threads = decode_threads;
@@ -289,6 +322,7 @@ int run_codec(int argc, char** argv) {
         eo.modeled_key_max_correction_share = -1.0;
         codec::Encoder explicit_keys(config, eo);
         explicit_keys.set_scene(0, 0, model);
+        if (fleet) explicit_keys.set_vessels(fleet->vessels);
         sim::Frame before;
         truth_at(codec::tick_time_s(static_cast<std::int64_t>(kTick0), p->rate_hz), before);
         explicit_keys.add_truth(kTick0, truth_of(before));
