@@ -17,6 +17,7 @@ namespace ocean::web {
 
 namespace {
 constexpr std::size_t kHashesKept = 600;                   // 20 s of a 30 Hz stream
+constexpr std::size_t kRecentDecodes = 600;                // the median of the last 20 s
 constexpr std::size_t kRecordLimitBytes = 8u << 20;        // a test records seconds, not hours
 constexpr double kEyeHeightM = 10.0, kPitchDeg = -6.0;      // the native viewers' default pose
 constexpr double kKbpsSampleS = 0.2;                        // KbpsMeter's five samples a second
@@ -99,7 +100,11 @@ void WebViewer::on_message(std::span<const std::uint8_t> bytes) {
   const double spent_ms = emscripten_get_now() - t0 - frame_callback_ms_;
   if (!session_) return;
   const std::uint64_t completed = session_->stats().frames_complete - before;
-  if (completed > 0) decode_ms_ += spent_ms;  // handling of messages that carry no frame is not decode
+  if (completed > 0) {  // handling of messages that carry no frame is not decode
+    decode_ms_ += spent_ms;
+    recent_decode_ms_.push_back(spent_ms);
+    if (recent_decode_ms_.size() > kRecentDecodes) recent_decode_ms_.pop_front();
+  }
   if (!pending_end_.empty()) end_session(pending_end_);
   else if (session_->state() == client::ClientSession::State::closed) end_session(session_->close_reason());
 }
@@ -211,6 +216,9 @@ std::string WebViewer::report() const {
   json.integer("connects", connects_).integer("messages", messages_in_).integer("bytes", bytes_in_);
   json.integer("frames", frames_).integer("uploads", uploads_).integer("rendered", rendered_);
   json.fixed("decode_ms_per_frame", frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, 4);
+  std::vector<double> recent(recent_decode_ms_.begin(), recent_decode_ms_.end());
+  std::sort(recent.begin(), recent.end());
+  json.fixed("decode_ms_median", recent.empty() ? 0.0 : recent[recent.size() / 2], 4);
   json.boolean("recording_full", recording_full_);
   const render::DrawStats& draw = renderer_.last_stats();
   json.integer("triangles", draw.triangles).integer("draw_calls", draw.draw_calls).integer("tiles", draw.tiles_drawn);

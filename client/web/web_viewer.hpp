@@ -91,6 +91,9 @@ class WebViewer {
   // Figures for the HUD and report().
   std::uint64_t bytes_in_ = 0, messages_in_ = 0, frames_ = 0, uploads_ = 0, rendered_ = 0;
   double decode_ms_ = 0.0;  // message handling (verify + decode) for the frames counted in frames_
+  // The last messages' handling that completed a frame, each on its own: their median is the figure
+  // a decode budget is held to (a joining key, which may compute a wake's history, is one of them).
+  std::deque<double> recent_decode_ms_;
   double frame_callback_ms_ = 0.0;  // on_frame's own time within the message being handled
   double last_frame_s_ = 0.0, fps_ = 0.0, kbps_sampled_s_ = 0.0;
   viewer::FpsMeter fps_meter_;    // the native viewers' meters, so the HUDs read alike

@@ -44,12 +44,14 @@ def http(method, url, body=None, timeout=60):
         raise OSError(f"{method} {url}: HTTP {e.code}: {e.read().decode(errors='replace')[:500]}") from None
 
 
-def start_server(build, log_path, profile):
+def start_server(build, log_path, profile, fleet):
     # mobile-choppy (with a choppy sea) only when asked for: its sim and encoder would cost the
     # others' frame rate.
     choppy = ["--profiles", "mobile,lite,mobile-choppy", "--choppiness", "1.2"] if profile == 5 else []
     args = [os.path.join(build, "server", "ocean-server"), "--listen", "127.0.0.1:0", "--ws-listen", "127.0.0.1:0",
             "--web-listen", "127.0.0.1:0", "--metrics-listen", "127.0.0.1:0"] + (choppy or ["--profiles", "mobile,lite"])
+    if fleet:
+        args += ["--config", fleet]
     log = open(log_path, "w")
     server = subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT)
     deadline = time.time() + 30
@@ -155,6 +157,7 @@ def main():
     parser.add_argument("--seconds", type=float, default=6.0, help="how long the frame rate is measured")
     parser.add_argument("--size", default="1280x720", help="the page's viewport, WxH")
     parser.add_argument("--scale", type=float, default=1.0, help="the page's render scale (its scale= parameter)")
+    parser.add_argument("--fleet", default="", help="an ocean-server config with [[vessel]]s: the stream carries their wake")
     parser.add_argument("--screenshot", default="", help="where to keep the screenshot (PNG)")
     args = parser.parse_args()
     for tool in (args.chromium, args.chromedriver):
@@ -165,7 +168,7 @@ def main():
 
     work = tempfile.mkdtemp(prefix="ocean-web-test-")
     failures = []
-    server, ws_port, web_port = start_server(args.build, os.path.join(work, "server.log"), args.profile)
+    server, ws_port, web_port = start_server(args.build, os.path.join(work, "server.log"), args.profile, args.fleet)
     browser = None
     try:
         browser = Browser(chromium, chromedriver, os.path.join(work, "chromium"))
@@ -233,10 +236,11 @@ def main():
         print(json.dumps({"size": args.size, "scale": args.scale, "profile": report["profile"], "grid": report["grid"],
                           "frames": report["frames"], "keyframes": report.get("keyframes"), "fps": round(fps, 2),
                           "triangles": report.get("triangles"), "draw_calls": report.get("draw_calls"),
-                          "decode_ms_per_frame": report["decode_ms_per_frame"], "kbps": report["kbps"],
+                          "decode_ms_per_frame": report["decode_ms_per_frame"],
+                          "decode_ms_median": report["decode_ms_median"], "kbps": report["kbps"],
                           "frames_compared_with_native": len(compared), "mismatched": len(mismatched),
                           "sky_rgb": [round(v, 3) for v in sky], "water_rgb": [round(v, 3) for v in water],
-                          "screenshot": args.screenshot}))
+                          "fleet": args.fleet, "screenshot": args.screenshot}))
     except RuntimeError:
         pass  # the failure is in failures already
     except Exception as e:  # WebDriver refused something, the page threw: say what, with the server's log
