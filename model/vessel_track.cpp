@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ocean::model {
 namespace {
 
 std::string vessel(const VesselTrack& track) { return "vessel " + std::to_string(track.id) + ": "; }
+
+// Presence times and lengths: within ~31,700 years, so t - from_s keeps sub-millisecond precision.
+constexpr double kMaxPresenceS = 1e12;
 
 bool inside(double v, const TrackLimits& limits) { return v >= limits.world_min_m && v <= limits.world_max_m; }
 
@@ -53,7 +57,31 @@ std::string validate(const VesselTrack& track, const TrackLimits& limits) {
   const Waypoint &first = track.points.front(), &last = track.points.back();
   if (track.repeat && (track.points.size() < 2 || last.x_m != first.x_m || last.z_m != first.z_m))
     return vessel(track) + "a repeating track is a circuit: its last waypoint must be its first again";
+  const Presence& p = track.presence;
+  const bool from_ok = p.from_s == -std::numeric_limits<double>::infinity() ||
+                       (std::isfinite(p.from_s) && std::fabs(p.from_s) <= kMaxPresenceS);
+  if (!from_ok)
+    return vessel(track) + bad_param("present_from_s", p.from_s, "-inf or a time within 1e12 s");
+  if (!(p.for_s > 0.0) || (std::isfinite(p.for_s) && p.for_s > kMaxPresenceS))
+    return vessel(track) + bad_param("present_for_s", p.for_s, "(0, 1e12] s or inf");
+  if (!(p.every_s >= 0.0 && p.every_s <= kMaxPresenceS))
+    return vessel(track) + bad_param("present_every_s", p.every_s, "0 (once) or (0, 1e12] s");
+  if (std::isfinite(p.for_s) && !std::isfinite(p.from_s))
+    return vessel(track) + "a presence of " + format_value(p.for_s) + " s needs a start (present_from_s)";
+  if (p.every_s > 0.0 && !(std::isfinite(p.from_s) && p.for_s <= p.every_s))
+    return vessel(track) + "a presence that repeats every " + format_value(p.every_s) +
+           " s needs a finite start and lasts at most that long (present_for_s " + format_value(p.for_s) + " s)";
   return {};
+}
+
+bool present_at(const Presence& presence, double t_s) {
+  if (presence.every_s > 0.0) {
+    double u = std::fmod(t_s - presence.from_s, presence.every_s);
+    if (u < 0.0) u += presence.every_s;
+    return u < presence.for_s;
+  }
+  if (!(t_s >= presence.from_s)) return false;
+  return presence.for_s == std::numeric_limits<double>::infinity() || t_s - presence.from_s < presence.for_s;
 }
 
 HullPose pose_at(const VesselTrack& track, double t_s) {

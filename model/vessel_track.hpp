@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,22 @@ struct Waypoint {
   bool operator==(const Waypoint&) const = default;
 };
 
+// When a hull presses on the water. A vessel: always (the default). A dropped object: for a moment,
+// its splash - from `from_s` for `for_s` seconds, and with `every_s` > 0 again every `every_s`
+// seconds (a buoy's mooring line jerking, a scenario's repeated drop). A live command (add,
+// remove, a new course) is a track present from its effective tick, or until it.
+struct Presence {
+  double from_s = -std::numeric_limits<double>::infinity();
+  double for_s = std::numeric_limits<double>::infinity();  // > 0
+  double every_s = 0.0;  // 0: once; > 0: from_s finite and for_s <= every_s
+  bool operator==(const Presence&) const = default;
+};
+
+// Whether a hull with this presence presses at t seconds: with u = t - from_s (taken modulo
+// every_s into [0, every_s) when it repeats), present when 0 <= u < for_s. Only - and fmod: exact
+// in every arithmetic.
+bool present_at(const Presence& presence, double t_s);
+
 struct VesselTrack {
   std::uint32_t id = 0;
   Hull hull;
@@ -44,6 +61,7 @@ struct VesselTrack {
   // waypoint is its first again, and it sails round with the period of the last time.
   std::vector<Waypoint> points;
   bool repeat = false;
+  Presence presence;
   bool operator==(const VesselTrack&) const = default;
 };
 

@@ -1,5 +1,6 @@
 // One check function per message body; the rules and their order are those of PROTOCOL.md.
 #include "field_checks.hpp"
+#include "message_readers.hpp"
 
 #include <bit>
 #include <cmath>
@@ -191,14 +192,11 @@ Problem check_vessels(const wire::Welcome& m) {
   for (const wire::Vessel* v : *m.vessels()) {
     if (!v->waypoints() || v->waypoints()->size() == 0 || v->waypoints()->size() > kMaxWaypoints)
       return fail(Reason::bad_dimensions, "Vessel.waypoints", "1..64 waypoints");
-    model::VesselTrack track;
-    track.hull = {v->length_m(), v->beam_m(), v->draft_m()};
-    track.repeat = v->repeat();
-    for (const wire::Waypoint* p : *v->waypoints()) track.points.push_back({p->t_s(), p->x_m(), p->z_m()});
-    if (!model::validate(track, limits).empty())
+    if (!model::validate(protocol::read(*v), limits).empty())
       return fail(Reason::out_of_range, "Welcome.vessels",
                   "hulls (0, 400] m long, beam (0, length], draft (0, 25] m; waypoints within 1e7 m, times from 0 "
-                  "increasing, legs at most 20 m/s, a repeating track closed");
+                  "increasing, legs at most 20 m/s, a repeating track closed; presence from -inf (then for good) or "
+                  "within 1e12 s, for (0, 1e12] s or inf, every 0 or (0, 1e12] s and no shorter than it lasts");
   }
   return kOk;
 }

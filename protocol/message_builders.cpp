@@ -113,7 +113,8 @@ Bytes encode(const Welcome& m) {
       std::vector<wire::Waypoint> points;
       for (const model::Waypoint& p : v.points) points.emplace_back(p.t_s, p.x_m, p.z_m);
       out.push_back(wire::CreateVessel(fbb, v.id, v.hull.length_m, v.hull.beam_m, v.hull.draft_m, v.repeat,
-                                       fbb.CreateVectorOfStructs(points)));
+                                       fbb.CreateVectorOfStructs(points), v.presence.from_s, v.presence.for_s,
+                                       v.presence.every_s));
     }
     vessels = fbb.CreateVector(out);
   }

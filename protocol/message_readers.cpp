@@ -78,16 +78,19 @@ Welcome read(const wire::Welcome& m) {
   out.max_message_bytes = m.max_message_bytes();
   out.scene_serial = m.scene_serial();
   if (m.vessels())
-    for (const wire::Vessel* v : *m.vessels()) {
-      model::VesselTrack track;
-      track.id = v->id();
-      track.hull = {v->length_m(), v->beam_m(), v->draft_m()};
-      track.repeat = v->repeat();
-      if (v->waypoints())
-        for (const wire::Waypoint* p : *v->waypoints()) track.points.push_back({p->t_s(), p->x_m(), p->z_m()});
-      out.vessels.push_back(std::move(track));
-    }
+    for (const wire::Vessel* v : *m.vessels()) out.vessels.push_back(read(*v));
   return out;
+}
+
+model::VesselTrack read(const wire::Vessel& v) {
+  model::VesselTrack track;
+  track.id = v.id();
+  track.hull = {v.length_m(), v.beam_m(), v.draft_m()};
+  track.repeat = v.repeat();
+  if (v.waypoints())
+    for (const wire::Waypoint* p : *v.waypoints()) track.points.push_back({p->t_s(), p->x_m(), p->z_m()});
+  track.presence = {v.present_from_s(), v.present_for_s(), v.present_every_s()};
+  return track;
 }
 
 UdpHello read(const wire::UdpHello& m) { return UdpHello{m.session_id(), bytes_of(m.cookie())}; }

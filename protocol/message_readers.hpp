@@ -13,6 +13,8 @@ StreamParams read(const wire::StreamParams& stream);
 SceneParams read(const wire::SceneParams& scene);
 Hello read(const wire::Hello& message);
 Welcome read(const wire::Welcome& message);
+// A Welcome's vessel as a track (field_checks validates it as model::validate does).
+model::VesselTrack read(const wire::Vessel& vessel);
 UdpHello read(const wire::UdpHello& message);
 UdpReady read(const wire::UdpReady& message);
 Ack read(const wire::Ack& message);

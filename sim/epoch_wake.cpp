@@ -25,6 +25,7 @@ void EpochWake::step(Part& part) {
   if (t < part.start + epoch_ticks_) {
     const double mid_s = (static_cast<double>(t) + 0.5) / rate_hz_;
     for (const model::VesselTrack& v : tracks_) {
+      if (!model::present_at(v.presence, mid_s)) continue;  // a dropped object between splashes
       HullPose pose = model::pose_at(v, mid_s);
       pose.x_m -= origin_x_m_;
       pose.z_m -= origin_z_m_;

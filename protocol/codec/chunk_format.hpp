@@ -12,7 +12,7 @@
 
 namespace ocean::codec {
 
-inline constexpr std::uint8_t kCodecVersion = 6;
+inline constexpr std::uint8_t kCodecVersion = 7;
 inline constexpr std::size_t kDefaultMaxPayload = 1100;
 // Bytes a frame record adds around the payload in a lean UDP datagram (PROTOCOL.md 7): lag,
 // count, length and its share of the datagram's kind byte and tick; the bench charges this per

@@ -45,6 +45,7 @@ const std::vector<std::complex<double>>& WakeForcing::pressure(Tick t) {
   const double time_s = (static_cast<double>(static_cast<std::int64_t>(t)) + 0.5) / rate_hz_;
   poses_.clear();
   for (const model::VesselTrack& v : vessels_) {
+    if (!model::present_at(v.presence, time_s)) continue;  // a dropped object between splashes
     model::HullPose pose = model::pose_at(v, time_s);
     pose.x_m -= origin_x_m_;
     pose.z_m -= origin_z_m_;

@@ -454,3 +454,38 @@ TEST_CASE("range edges: the sim's own limits are accepted, one step beyond is no
   expect_rejected(scene_with([](SceneParams& s) { s.size_z = 4096; }), from_server(), Reason::bad_dimensions);
   expect_rejected(scene_with([](SceneParams& s) { s.depth_m = -1; }), from_server(), Reason::out_of_range);
 }
+
+TEST_CASE("Welcome vessels: counts, tracks and presences at their limits are accepted, beyond them refused") {
+  const double inf = std::numeric_limits<double>::infinity();
+  // The most a Welcome may carry: 32 vessels of 64 waypoints at 20 m/s, the largest hulls, at the
+  // world's edge, each with a presence.
+  auto fleet = [] {
+    Welcome w = sample_welcome();
+    w.stream.wake = ocean::WakeLattice{64, 8192.0, -4096.0, -4096.0, 10.0, 1.0, 1800};
+    for (std::uint32_t id = 1; id <= 32; ++id) {
+      ocean::model::VesselTrack v;
+      v.id = id;
+      v.hull = {400.0, 400.0, 25.0};
+      for (int i = 0; i < 64; ++i) v.points.push_back({20.0 * i, -1e7 + 400.0 * i, 1e7});
+      v.presence = {-1e12, 1e12, 1e12};
+      w.vessels.push_back(v);
+    }
+    return w;
+  };
+  CHECK(verify_message(encode(fleet()), from_server()).ok);
+  const auto refused = [&](auto edit, Reason reason) {
+    Welcome w = fleet();
+    edit(w);
+    expect_rejected(encode(w), from_server(), reason);
+  };
+  refused([](Welcome& w) { w.vessels.push_back(w.vessels.back()); }, Reason::bad_dimensions);
+  refused([](Welcome& w) { w.vessels[3].points.push_back({2000.0, 0.0, 0.0}); }, Reason::bad_dimensions);
+  refused([](Welcome& w) { w.vessels[3].points.clear(); }, Reason::bad_dimensions);
+  refused([](Welcome& w) { w.stream.wake = ocean::WakeLattice{}; }, Reason::bad_dimensions);  // grid 0: no wake
+  refused([](Welcome& w) { w.vessels[5].points[7].t_s -= 0.01; }, Reason::out_of_range);  // 400 m in 19.99 s
+  refused([](Welcome& w) { w.vessels[5].hull.draft_m = std::nextafter(25.0, 30.0); }, Reason::out_of_range);
+  refused([](Welcome& w) { w.vessels[0].presence.from_s = std::nan(""); }, Reason::out_of_range);
+  refused([](Welcome& w) { w.vessels[0].presence.for_s = 0.0; }, Reason::out_of_range);
+  refused([=](Welcome& w) { w.vessels[0].presence = {-inf, 5.0, 0.0}; }, Reason::out_of_range);
+  refused([](Welcome& w) { w.vessels[31].presence.every_s = std::nextafter(1e12, 0.0); }, Reason::out_of_range);
+}

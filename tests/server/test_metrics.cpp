@@ -208,8 +208,8 @@ TEST_CASE("server metrics register the documented families", "[metrics]") {
     if (sample.name == "ocean_build_info") build = &sample;
   REQUIRE(build);
   CHECK(build->value == 1.0);
-  CHECK(build->labels.at("protocol") == "2");
-  CHECK(build->labels.at("codec") == "6");
+  CHECK(build->labels.at("protocol") == "3");
+  CHECK(build->labels.at("codec") == "7");
   CHECK(!build->labels.at("version").empty());
 }
 

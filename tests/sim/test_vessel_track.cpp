@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <span>
 
@@ -145,4 +146,55 @@ TEST_CASE("a vessel waiting at its first waypoint already faces its first leg; a
   circuit.points = {{0, 100, 100}, {5, 100, 100}, {15, 200, 100}, {25, 200, 200}, {35, 100, 200}, {45, 100, 100}};
   REQUIRE(validate(circuit, TrackLimits{}).empty());
   CHECK(heading(pose_at(circuit, 45.0 + 2.0)) == Approx(heading(pose_at(circuit, 44.9))));
+}
+
+TEST_CASE("a hull presses only while present: always, for a while, or again and again") {
+  const double inf = std::numeric_limits<double>::infinity();
+  CHECK(present_at(Presence{}, -1e9));
+  CHECK(present_at(Presence{}, 1e9));
+  // Added at 10 s, removed at 25 s.
+  const Presence once{10.0, 15.0, 0.0};
+  CHECK_FALSE(present_at(once, 9.999));
+  CHECK(present_at(once, 10.0));
+  CHECK(present_at(once, 24.999));
+  CHECK_FALSE(present_at(once, 25.0));
+  CHECK(present_at(Presence{10.0, inf, 0.0}, 1e9));
+  CHECK_FALSE(present_at(Presence{10.0, inf, 0.0}, 9.0));
+  // A splash of 1 s every 20 s from 5 s, also before its start (a server runs years from its epoch).
+  const Presence splashes{5.0, 1.0, 20.0};
+  CHECK(present_at(splashes, 5.5));
+  CHECK_FALSE(present_at(splashes, 6.5));
+  CHECK(present_at(splashes, 25.2));
+  CHECK(present_at(splashes, -14.5));  // u = -19.5, taken modulo 20: 0.5
+  CHECK_FALSE(present_at(splashes, -15.5));
+  CHECK(present_at(splashes, 5.0 + 20.0 * 1e7 + 0.25));
+}
+
+TEST_CASE("presences no command could mean are refused, naming the field") {
+  const TrackLimits limits;
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::nan("");
+  auto refused = [&](Presence p, const std::string& words) {
+    VesselTrack t = l_shaped();
+    t.presence = p;
+    const std::string error = validate(t, limits);
+    CAPTURE(error);
+    CHECK(error.find(words) != std::string::npos);
+    CHECK(error.find("vessel 7") == 0);
+  };
+  refused({nan, inf, 0.0}, "present_from_s");
+  refused({inf, inf, 0.0}, "present_from_s");
+  refused({2e12, 1.0, 0.0}, "present_from_s");
+  refused({0.0, 0.0, 0.0}, "present_for_s");
+  refused({0.0, -1.0, 0.0}, "present_for_s");
+  refused({0.0, nan, 0.0}, "present_for_s");
+  refused({0.0, 1.0, -1.0}, "present_every_s");
+  refused({0.0, 1.0, inf}, "present_every_s");
+  refused({-inf, 5.0, 0.0}, "needs a start");
+  refused({-inf, 5.0, 10.0}, "needs a start");
+  refused({0.0, 2.0, 1.0}, "lasts at most that long");
+  for (const Presence& ok : {Presence{}, Presence{3.0, 1.0, 0.0}, Presence{-1e12, 1e12, 1e12}, Presence{0.0, inf, 0.0}}) {
+    VesselTrack t = l_shaped();
+    t.presence = ok;
+    CHECK(validate(t, limits).empty());
+  }
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# A transcription of protocol/codec/CODEC.md (codec version 6, the wake lattice of section 7.9 included) and of PROTOCOL.md 7.1 (frame
+# A transcription of protocol/codec/CODEC.md (codec version 7, the wake lattice of section 7.9 and its hulls' presence included) and of PROTOCOL.md 7.1 (frame
 # records) into plain Python, written from the text alone (no FlatBuffers package: a few lines
 # read the Welcome and SceneUpdate tables). It checks that the two documents suffice to decode:
 # the function values of CODEC.md 12.1, the scene-model hashes of 12.2 and every chunk, refusal,
@@ -755,6 +755,15 @@ def damped(w, g, dt):  # a, b and stay (7.9)
     sd = det_exp_neg(g * dt) * dt if r * dt < 1e-8 else 0.5 * (slow - fast) / r
     return slow + fast, det_exp_neg(2.0 * g * dt), 0.5 * (slow + fast) + g * sd
 
+def present_at(presence, t):  # 7.9 presence (version 7): whether a hull presses at t seconds
+    start, length, every = presence
+    u = t - start
+    if every > 0.0:
+        u = math.fmod(u, every)
+        if u < 0.0: u += every
+        return u < length
+    return t >= start and (length == math.inf or u < length)
+
 def pose_at(v, t):  # model/vessel_track.cpp: (x, z, dir_x, dir_z) at t seconds
     p = v['points']
     def heading_of(a, b, prev):
@@ -848,6 +857,7 @@ class Waked:
             out = [(0.0, 0.0)] * w.modes
             scale = float(w.n) * float(w.n) / (self.hstep / 65536.0)
             for v in self.vessels:
+                if not present_at(v['presence'], (float(t) + 0.5) / float(w.R)): continue
                 x, z, dx, dz = pose_at(v, (float(t) + 0.5) / float(w.R))
                 hull_pressure(w, v, x - self.ox, z - self.oz, dx, dz, scale, out)
             self.pressures[t] = out
@@ -1132,7 +1142,8 @@ def read_wake(buf, stream_table):
     return tuple(w[name] for name, _, _ in WAKE)
 def read_vessels(buf, welcome_table):
     # Welcome slot 12: a vector of tables Vessel {id:uint32, length_m, beam_m, draft_m:double,
-    # repeat:bool, waypoints:[struct Waypoint {t_s, x_m, z_m:double}]} (PROTOCOL.md 8).
+    # repeat:bool, waypoints:[struct Waypoint {t_s, x_m, z_m:double}], present_from_s = -inf,
+    # present_for_s = inf, present_every_s = 0:double} (PROTOCOL.md 8).
     v = table_ref(buf, welcome_table, 12)
     if v is None: return []
     out = []
@@ -1143,7 +1154,9 @@ def read_vessels(buf, welcome_table):
         points = [struct.unpack_from('<ddd', buf, w + 4 + 24 * j) for j in range(u32(buf, w))] if w is not None else []
         out.append({'id': table_field(buf, t, 0, '<I', 0), 'length_m': table_field(buf, t, 1, '<d', 0.0),
                     'beam_m': table_field(buf, t, 2, '<d', 0.0), 'draft_m': table_field(buf, t, 3, '<d', 0.0),
-                    'repeat': bool(table_field(buf, t, 4, '<B', 0)), 'points': points})
+                    'repeat': bool(table_field(buf, t, 4, '<B', 0)), 'points': points,
+                    'presence': (table_field(buf, t, 6, '<d', -math.inf), table_field(buf, t, 7, '<d', math.inf),
+                                 table_field(buf, t, 8, '<d', 0.0))})
     return out
 def read_table(buf, t, spec):
     return {name: table_field(buf, t, i, fmt, d) for i, (name, fmt, d) in enumerate(spec)}
@@ -1180,7 +1193,7 @@ def run(name):
     for kind, f in lines:
         if kind == 'welcome':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
-            assert version == 2 and bt == 2, (version, bt)
+            assert version == 3 and bt == 2, (version, bt)
             w = {'stream': read_table(buf, table_ref(buf, body, 1), STREAM), 'cascades': read_cascades(buf, table_ref(buf, body, 1)),
                  'wake': read_wake(buf, table_ref(buf, body, 1)), 'vessels': read_vessels(buf, body), 'scene': read_table(buf, table_ref(buf, body, 2), SCENE),
                  'tick_period_s': table_field(buf, body, 6, '<d', 0.0), 'max_message_bytes': table_field(buf, body, 9, '<I', 0),
@@ -1212,7 +1225,7 @@ def run(name):
             dec = Decoder(stream, int(f['max_payload']), int(f['history_ticks']), int(f['max_lag']))
         elif kind == 'scene_update':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
-            assert version == 2 and bt == 10
+            assert version == 3 and bt == 10
             u = {'scene': read_table(buf, table_ref(buf, body, 2), SCENE), 'effective_tick64': table_field(buf, body, 3, '<Q', 0),
                  'serial': table_field(buf, body, 4, '<I', 0)}
             last = ('update', u)
