@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <type_traits>
 
 namespace ocean::model {
 namespace {
@@ -88,7 +87,10 @@ void HullPressure<Math>::power_phases(double step, double scale, double* column_
     const std::complex<double> unit(Math::cos(step), -(sign * Math::sin(step)));
     std::complex<double> current;
     for (int i = 0; i < count; ++i) {
-      current = i % kDirectEvery == 0 ? direct(sign * i) : current * unit;
+      // Written out, so every language multiplies in the same order.
+      current = i % kDirectEvery == 0 ? direct(sign * i)
+                                      : std::complex<double>(current.real() * unit.real() - current.imag() * unit.imag(),
+                                                             current.real() * unit.imag() + current.imag() * unit.real());
       store(i, current);
     }
   };
@@ -113,29 +115,16 @@ void HullPressure<Math>::add(std::span<const HullPose> poses, double scale, std:
   if (poses.size() > kMaxHulls) throw std::invalid_argument("HullPressure: more than kMaxHulls hulls in one call");
   const std::size_t hulls = poses.size();
   const std::size_t columns = static_cast<std::size_t>(columns_);
-  // e^{-i k.x} = e^{-i kx x} e^{-i kz z}: one sine and cosine per row and column of each hull.
+  // e^{-i k.x} = e^{-i kx x} e^{-i kz z}: each hull's column and row phases, walked as powers of
+  // the first bin's with a direct sine every 16 bins (a sixteenth of the sines, within 1e-14 of
+  // the direct ones; CODEC.md 7.9 writes the walk out).
   column_re_.resize(hulls * columns);
   column_im_.resize(hulls * columns);
   row_phase_.resize(hulls * n_);
   for (std::size_t h = 0; h < hulls; ++h) {
-    if constexpr (std::is_same_v<Math, Libm>) {
-      // The sim's truth: the phases of bin b as powers of bin 1's, restarted from a direct sine every
-      // kDirectEvery bins (within 1e-14 of the direct ones, a sixteenth of the sines); the codec's
-      // arithmetic computes each as CODEC.md 7.9 writes it.
-      power_phases(kTwoPi / size_m_ * poses[h].x_m, 1.0, column_re_.data() + h * columns, column_im_.data() + h * columns,
-                   nullptr);
-      power_phases(kTwoPi / size_m_ * poses[h].z_m, scale, nullptr, nullptr, row_phase_.data() + h * n_);
-    } else {
-      for (int c = 0; c < columns_; ++c) {
-        const double phase = kTwoPi * signed_bin(c, n_) / size_m_ * poses[h].x_m;
-        column_re_[h * columns + c] = Math::cos(phase);
-        column_im_[h * columns + c] = -Math::sin(phase);
-      }
-      for (int r = 0; r < n_; ++r) {
-        const double phase = kTwoPi * signed_bin(r, n_) / size_m_ * poses[h].z_m;
-        row_phase_[h * n_ + r] = {scale * Math::cos(phase), -(scale * Math::sin(phase))};
-      }
-    }
+    power_phases(kTwoPi / size_m_ * poses[h].x_m, 1.0, column_re_.data() + h * columns, column_im_.data() + h * columns,
+                 nullptr);
+    power_phases(kTwoPi / size_m_ * poses[h].z_m, scale, nullptr, nullptr, row_phase_.data() + h * n_);
   }
   // Every envelope first (making one may drop an old one), then their addresses, which stay put.
   for (const HullPose& pose : poses) (void)envelope(pose, poses);

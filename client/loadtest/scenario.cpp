@@ -32,6 +32,9 @@ constexpr Scenario kScenarios[] = {
      "8 vessels and their wakes (the server's sea), phones on a 2G EDGE cell", {}, {0, 0, {}, {}, "harbour", 8}},
     {"regatta", "desktop-choppy", "udp", "",
      "16 yachts racing, desktops on a LAN with the choppy profile", {}, {0, 0, {}, "mobile,desktop-choppy", "regatta", 16}},
+    {"man-overboard", "mobile", "udp", "rate=256kbit,delay=80ms,jitter=20ms,loss=2%",
+     "things going over the side (8 objects' splashes, every 6 s) beside a ship and a rescue launch, 3G phones",
+     {}, {0, 0, {}, {}, "man-overboard", 10}},
 };
 
 }  // namespace

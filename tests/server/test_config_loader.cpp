@@ -421,3 +421,61 @@ waypoints = [[0, 50, 50]]
   CHECK_THAT(load({"--wake-size", "10"}).message, Catch::Contains("--wake-size"));
   CHECK_THAT(load({"--wake-decay", "0"}).message, Catch::Contains("--wake-decay"));
 }
+
+// Dropped objects ([[drop]] tables): round hulls pressing for a splash, once or again and again,
+// after the vessels in the list the Welcome carries; every bad one refused by name.
+TEST_CASE("a config file's dropped objects load as hulls present for a splash, and bad ones are refused", "[config]") {
+  TempFile scenario(R"(
+wake-size = 400
+wake-origin-x = -200
+wake-origin-z = -200
+[[drop]]
+id = 10
+x = 20
+z = -30
+size = 1.5
+at = 5
+splash = 0.5
+every = 20
+[[drop]]
+id = 11
+x = -50
+z = 60
+[[vessel]]
+id = 1
+length = 12
+beam = 4
+draft = 1
+waypoints = [[0, 0, 0]]
+)");
+  const ConfigLoadResult ok = load({"--config", scenario.path()});
+  REQUIRE(ok.message == "");
+  REQUIRE(ok.config.vessels.size() == 3);
+  CHECK(ok.config.vessels[0].id == 1);  // the vessels, then the objects
+  const auto& d = ok.config.vessels[1];
+  CHECK(d.id == 10);
+  CHECK(d.hull == ocean::model::Hull{1.5, 1.5, 0.75});
+  CHECK(d.points == std::vector<ocean::model::Waypoint>{{0.0, 20.0, -30.0}});
+  CHECK(d.presence == ocean::model::Presence{5.0, 0.5, 20.0});
+  CHECK(ok.config.vessels[2].hull == ocean::model::Hull{2.0, 2.0, 1.0});  // the defaults: 2 m, once at 0 for 1 s
+  CHECK(ok.config.vessels[2].presence == ocean::model::Presence{0.0, 1.0, 0.0});
+
+  const auto refused = [&](const std::string& drop, const std::vector<std::string>& mentions) {
+    TempFile file("wake-size = 400\nwake-origin-x = -200\nwake-origin-z = -200\n[[vessel]]\nid = 1\nlength = 12\n"
+                  "beam = 4\ndraft = 1\nwaypoints = [[0, 0, 0]]\n[[drop]]\n" + drop);
+    const ConfigLoadResult r = load({"--config", file.path()});
+    INFO(drop << " -> " << r.message);
+    CHECK(r.outcome == Outcome::error);
+    for (const std::string& m : mentions) CHECK_THAT(r.message, Catch::Contains(m));
+  };
+  refused("id = 2\nx = 500\nz = 0\n", {"[[drop]]", "vessel 2", "outside"});
+  refused("id = 1\nx = 0\nz = 0\n", {"share this id"});
+  refused("id = 2\nz = 0\n", {"needs x and z"});
+  refused("id = 2\nx = 0\nz = 0\nsize = 80\n", {"size 80", "(0, 50]"});
+  refused("id = 2\nx = 0\nz = 0\nsize = 0\n", {"size 0"});
+  refused("id = 2\nx = 0\nz = 0\nsplash = 0\n", {"present_for_s"});
+  refused("id = 2\nx = 0\nz = 0\nsplash = 3\nevery = 2\n", {"lasts at most that long"});
+  refused("id = 2\nx = 0\nz = 0\nevery = -1\n", {"present_every_s"});
+  refused("id = 2\nx = 0\nz = 0\nat = \"soon\"\n", {"numbers"});
+  refused("id = 2\nx = 0\nz = 0\nmass = 80\n", {"unknown key 'mass'"});
+}

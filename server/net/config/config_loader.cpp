@@ -3,6 +3,7 @@
 #include "ascii_text.hpp"
 #include "config_options.hpp"
 #include "options_json.hpp"
+#include "param_message.hpp"
 #include "wire_limits.hpp"
 
 #include <algorithm>
@@ -33,6 +34,10 @@ constexpr std::string_view kFileHelp =
     "Vessels: [[vessel]] tables, each with id = N, length, beam, draft (metres), repeat = true|false and\n"
     "waypoints = [[t, x, z], ...] (seconds from tick 0, world metres inside the --wake-size square from\n"
     "--wake-origin-x/z; a repeating track ends where it starts); up to 32 vessels, 64 waypoints each.\n"
+    "Dropped objects: [[drop]] tables, each with id = N (not a vessel's), x, z (world metres), size\n"
+    "(metres across, default 2), at (seconds from tick 0, default 0), splash (seconds it presses the\n"
+    "water, default 1) and every (seconds: drops again every this long; default 0, once); they count\n"
+    "as vessels towards the 32.\n"
     "SIGINT or SIGTERM stops the server cleanly (exit status 0).";
 
 std::string describe_toml_type(const toml::node& node) {
@@ -119,6 +124,9 @@ std::optional<double> toml_number(const toml::node* node) {
 
 // [[vessel]] tables: id, length, beam, draft, repeat, waypoints = [[t, x, z], ...]. Values are
 // checked here for their form only; validate_server_config checks the tracks.
+// An object larger than this is a vessel (its hull presses half its size deep: at most 25 m).
+constexpr double kMaxDropSizeM = 50.0;
+
 std::string apply_vessels(ServerConfig& config, const toml::node& node, std::string_view source) {
   const toml::array* entries = node.as_array();
   if (!entries || !entries->is_array_of_tables())
@@ -159,6 +167,46 @@ std::string apply_vessels(ServerConfig& config, const toml::node& node, std::str
     if (config.vessels.size() == protocol::kMaxVessels)
       return where + ": more than " + std::to_string(protocol::kMaxVessels) + " vessels";
     config.vessels.push_back(std::move(v));
+  }
+  return {};
+}
+
+// [[drop]]: a round hull of the object's size, pressing half its size deep for `splash` seconds
+// from `at`, again every `every` seconds when that is > 0 (model::Presence), where it fell.
+std::string apply_drops(const toml::node& node, std::string_view source, std::vector<model::VesselTrack>& drops) {
+  const toml::array* entries = node.as_array();
+  if (!entries || !entries->is_array_of_tables())
+    return at_line(source, node) + ": 'drop' must be an array of tables ([[drop]])";
+  drops.clear();
+  std::size_t index = 0;
+  for (const toml::node& entry_node : *entries) {
+    const toml::table& t = *entry_node.as_table();
+    const std::string where = at_line(source, entry_node) + ": drop " + std::to_string(++index);
+    for (auto&& [key, value] : t)
+      if (key.str() != "id" && key.str() != "x" && key.str() != "z" && key.str() != "size" && key.str() != "at" &&
+          key.str() != "splash" && key.str() != "every")
+        return where + ": unknown key '" + std::string(key.str()) + "' (id, x, z, size, at, splash, every)";
+    const toml::node* id = t.get("id");
+    if (!id || !id->is_integer() || id->as_integer()->get() < 0 || id->as_integer()->get() > 0xffffffffLL)
+      return where + ": needs id = N (an integer in 0..4294967295)";
+    const auto x = toml_number(t.get("x")), z = toml_number(t.get("z"));
+    if (!x || !z) return where + ": needs x and z (numbers, world metres)";
+    const auto number_or = [&](const char* key, double fallback) -> std::optional<double> {
+      return t.get(key) ? toml_number(t.get(key)) : std::optional<double>(fallback);
+    };
+    const auto size = number_or("size", 2.0), at = number_or("at", 0.0), splash = number_or("splash", 1.0),
+               every = number_or("every", 0.0);
+    if (!size || !at || !splash || !every) return where + ": size, at, splash and every are numbers (metres, seconds)";
+    if (!(*size > 0.0 && *size <= kMaxDropSizeM))
+      return where + ": size " + model::format_value(*size) + ": must be in (0, " + model::format_value(kMaxDropSizeM) + "] metres";
+    model::VesselTrack drop;
+    drop.id = static_cast<std::uint32_t>(id->as_integer()->get());
+    drop.hull = {*size, *size, 0.5 * *size};
+    drop.points = {{0.0, *x, *z}};
+    drop.presence = {*at, *splash, *every};
+    if (drops.size() == protocol::kMaxVessels)
+      return where + ": more than " + std::to_string(protocol::kMaxVessels) + " objects";
+    drops.push_back(std::move(drop));
   }
   return {};
 }
@@ -272,6 +320,7 @@ std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, 
   const toml::table& table = parsed.table();
   config.schedule.clear();
   const toml::node* schedule = nullptr;
+  std::vector<model::VesselTrack> drops;
   for (auto&& [key, node] : table) {
     if (key.str() == "schedule") {
       schedule = &node;  // checked last, against the scene the whole file sets
@@ -279,6 +328,10 @@ std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, 
     }
     if (key.str() == "vessel") {
       if (std::string error = apply_vessels(config, node, source); !error.empty()) return error;
+      continue;
+    }
+    if (key.str() == "drop") {
+      if (std::string error = apply_drops(node, source, drops); !error.empty()) return error;
       continue;
     }
     const ConfigOption* option = find_config_option(key.str());
@@ -291,6 +344,8 @@ std::string apply_config_toml(ServerConfig& config, std::string_view toml_text, 
     if (!error.empty()) return at_line(source, node) + ": " + std::string(key.str()) + " " + error;
     if (origins) (*origins)[std::string(key.str())] = at_line(source, node);
   }
+  // Objects press on the water as vessels do, after them (validate_server_config checks both).
+  config.vessels.insert(config.vessels.end(), drops.begin(), drops.end());
   return schedule ? apply_schedule(config, *schedule, source) : std::string();
 }
 

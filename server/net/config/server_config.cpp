@@ -86,11 +86,12 @@ std::string validate_vessels(const ServerConfig& config) {
       p.x_m -= config.wake_origin_x_m;
       p.z_m -= config.wake_origin_z_m;
     }
+    const std::string table = v.presence == model::Presence{} ? "[[vessel]] " : "[[drop]] ";
     if (std::string error = model::validate(local, limits); !error.empty())
-      return "[[vessel]] " + error + " (in the wake's square, corner (" + model::format_value(config.wake_origin_x_m) +
+      return table + error + " (in the wake's square, corner (" + model::format_value(config.wake_origin_x_m) +
              ", " + model::format_value(config.wake_origin_z_m) + "), side " + model::format_value(config.wake_size_m) + " m)";
     for (const model::VesselTrack& other : config.vessels)
-      if (&other != &v && other.id == v.id) return "[[vessel]] " + std::to_string(v.id) + ": two vessels share this id";
+      if (&other != &v && other.id == v.id) return table + std::to_string(v.id) + ": two vessels or objects share this id";
   }
   return {};
 }

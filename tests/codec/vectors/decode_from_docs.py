@@ -786,17 +786,28 @@ def pose_at(v, t):  # model/vessel_track.cpp: (x, z, dir_x, dir_z) at t seconds
             return p[i - 1][1] + f * (p[i][1] - p[i - 1][1]), p[i - 1][2] + f * (p[i][2] - p[i - 1][2]), heading[0], heading[1]
     return x, z, heading[0], heading[1]
 
+def walk(n, q, m):  # 7.9: m e^{-i s q} per signed bin s
+    def direct(b): return (m * det_cos(float(b) * q), -(m * det_sin(float(b) * q)))
+    out = [None] * n
+    for sign, count in ((1, n // 2), (-1, n // 2 + 1)):
+        u = (det_cos(q), -det_sin(q)) if sign > 0 else (det_cos(q), det_sin(q))
+        v = None
+        for i in range(count):
+            if i % 16 == 0: v = direct(sign * i)
+            else: v = (v[0] * u[0] - v[1] * u[1], v[0] * u[1] + v[1] * u[0])
+            if sign > 0: out[i] = v
+            elif i > 0: out[n - i] = v
+    return out, direct(-(n // 2))  # the rows in FFT order; the last column (bin -n/2), taken directly
+
 def hull_pressure(lat, v, x, z, dx, dz, scale, out):  # model/hull_pressure.cpp in the Det arithmetic
     n, hc, size = lat.n, lat.hc, lat.patch_x
     sa = 0.25 * v['length_m']; sc = 0.25 * v['beam_m']
     peak = v['draft_m'] * (kTwoPi * sa * sc) / (size * size)
-    col = []
-    for c in range(hc):
-        ph = kTwoPi * s_(c, n) / size * x
-        col.append((det_cos(ph), -det_sin(ph)))
+    cols, last = walk(n, kTwoPi / size * x, 1.0)
+    col = cols[:n // 2] + [last]
+    rows, _ = walk(n, kTwoPi / size * z, scale)
     for r in range(n):
-        ph = kTwoPi * s_(r, n) / size * z
-        rr, ri = scale * det_cos(ph), -(scale * det_sin(ph))
+        rr, ri = rows[r]
         kz = kTwoPi * s_(r, n) / size
         for c in range(hc):
             kx = kTwoPi * s_(c, n) / size
