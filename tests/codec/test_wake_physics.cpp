@@ -61,19 +61,19 @@ model::VesselTrack straight(double speed, double sail_s) {
 struct Streamed {
   std::vector<std::vector<float>> frames;  // one per second
 };
-Streamed stream_wake(const model::VesselTrack& vessel, int seconds) {
+Streamed stream_wake(const std::vector<model::VesselTrack>& vessels, int seconds) {
   const StreamConfig c = stream();
   const model::SceneParams scene = near_calm();
   sim::Ocean sea(scene);
   sim::EpochWake truth(sim::WakeRegion{1024.0, kN, kG, scene.depth_m, c.wake.decay_per_s, c.wake.viscosity_m2ps}, 0.0, 0.0,
-                       {vessel}, kRate, c.wake.epoch_ticks);
+                       vessels, kRate, c.wake.epoch_ticks);
   sim::WakeSampler sampler;
   Encoder encoder(c);
   Decoder decoder(c);
   encoder.set_scene(0, 1, scene);
   decoder.add_scene(0, 1, scene);
-  encoder.set_vessels({vessel});
-  decoder.set_vessels({vessel});
+  encoder.set_vessels(vessels);
+  decoder.set_vessels(vessels);
   Streamed out;
   StateId previous{};
   for (int s = 0; s <= seconds; ++s) {
@@ -94,7 +94,57 @@ Streamed stream_wake(const model::VesselTrack& vessel, int seconds) {
   }
   return out;
 }
+Streamed stream_wake(const model::VesselTrack& vessel, int seconds) {
+  return stream_wake(std::vector<model::VesselTrack>{vessel}, seconds);
+}
 
+// Energy in rings round (cx, cz): the sum of h^2 over the cells whose distance lies in each 2 m
+// bin, then a running mean over `width_m` (a wavelength: h^2 oscillates within one).
+std::vector<double> ring_energy(const std::vector<float>& h, double cx, double cz, double width_m) {
+  std::vector<double> bins(256, 0.0);
+  for (int j = 0; j < kN; ++j)
+    for (int i = 0; i < kN; ++i) {
+      const double r = std::hypot(4.0 * i - cx, 4.0 * j - cz);
+      const auto b = static_cast<std::size_t>(r / 2.0);
+      if (b < bins.size()) bins[b] += static_cast<double>(h[static_cast<std::size_t>(j) * kN + i]) * h[static_cast<std::size_t>(j) * kN + i];
+    }
+  const int half = std::max(1, static_cast<int>(width_m / 4.0));
+  std::vector<double> smooth(bins.size(), 0.0);
+  for (int b = 0; b < static_cast<int>(bins.size()); ++b)
+    for (int d = -half; d <= half; ++d)
+      if (b + d >= 0 && b + d < static_cast<int>(bins.size())) smooth[static_cast<std::size_t>(b)] += bins[static_cast<std::size_t>(b + d)];
+  return smooth;
+}
+
+// The ring's radius (the most energetic, beyond the near field) and the wavenumber of its waves
+// (the heights along the four axes out of the centre, averaged, read around that radius).
+struct Ring {
+  double radius_m, k;
+};
+Ring ring_of(const std::vector<float>& h, double cx, double cz, double k_guess) {
+  double k = k_guess;
+  double radius = 0.0;
+  for (int pass = 0; pass < 3; ++pass) {  // the wavelength sets the smoothing, the radius the window
+    const std::vector<double> e = ring_energy(h, cx, cz, 2.0 * pi / k);
+    std::size_t best = 20;  // from 40 m out
+    for (std::size_t b = 20; b < e.size(); ++b)
+      if (e[b] > e[best]) best = b;
+    // Between bins: the vertex of the parabola through the peak and its neighbours.
+    const double left = e[best - 1], mid = e[best], right = best + 1 < e.size() ? e[best + 1] : mid;
+    const double curve = left - 2.0 * mid + right;
+    const double offset = curve < 0.0 ? 0.5 * (left - right) / curve : 0.0;
+    radius = 2.0 * (static_cast<double>(best) + offset) + 1.0;
+    const double lambda = 2.0 * pi / k;
+    std::vector<double> profile;
+    for (double r = std::max(8.0, radius - 1.5 * lambda); r <= radius + 1.5 * lambda; r += 4.0) {
+      const int d = static_cast<int>(std::lround(r / 4.0)), ci = static_cast<int>(cx / 4.0), cj = static_cast<int>(cz / 4.0);
+      const auto at = [&](int i, int j) { return static_cast<double>(h[static_cast<std::size_t>(j) * kN + i]); };
+      profile.push_back(0.25 * (at(ci + d, cj) + at(ci - d, cj) + at(ci, cj + d) + at(ci, cj - d)));
+    }
+    k = ocean::test_support::dominant_wavenumber(profile, 4.0, 0.5 * k_guess, 2.0 * k_guess);
+  }
+  return {radius, k};
+}
 
 }  // namespace wake_physics
 using namespace wake_physics;
@@ -149,4 +199,53 @@ TEST_CASE("from decoded frames: once the vessel stops, its wake fades as the dam
   const double expected = std::exp(-2.0 * 0.02 * 10.0);
   std::printf("decoded wake energy 60 s / 50 s after the start: %.3f (the damping says %.3f)\n", e60 / e50, expected);
   CHECK(e60 / e50 == Approx(expected).epsilon(0.1));
+}
+
+TEST_CASE("from decoded frames: a dropped object's ring advances at the group velocity of its waves", "[wake]") {
+  // An object 8 m across pressing 1 m deep for 2 s from t = 5 s, in the middle of the region
+  // (a [[drop]]: a round hull present for its splash). Its rings, read every 6 s from 30 to 54 s
+  // after the splash: the speed of the most energetic ring (a least-squares slope of its radius)
+  // against the deep-water group velocity 0.5 sqrt(g / k) of the waves found there.
+  model::VesselTrack drop;
+  drop.id = 9;
+  drop.hull = {8.0, 8.0, 1.0};
+  drop.points = {{0.0, 512.0, 512.0}};
+  drop.presence = {5.0, 2.0, 0.0};
+  const Streamed s = stream_wake(drop, 60);
+  const auto peak = [](const std::vector<float>& h) {
+    double m = 0.0;
+    for (float v : h) m = std::max(m, static_cast<double>(std::fabs(v)));
+    return m;
+  };
+  CHECK(peak(s.frames[4]) < 1e-5);  // nothing before the splash
+  REQUIRE(peak(s.frames[40]) > 1e-3);
+  // The splash lasts about a half period of the waves it excites most: w = pi / 2 s, k = w^2 / g.
+  const double k_guess = (pi / 2.0) * (pi / 2.0) / kG;
+  std::vector<Ring> rings;
+  std::vector<double> times;
+  for (int t = 36; t <= 60; t += 6) {
+    rings.push_back(ring_of(s.frames[static_cast<std::size_t>(t)], 512.0, 512.0, k_guess));
+    times.push_back(t);
+  }
+  double mean_t = 0.0, mean_r = 0.0, mean_k = 0.0;
+  for (std::size_t i = 0; i < rings.size(); ++i) mean_t += times[i], mean_r += rings[i].radius_m, mean_k += rings[i].k;
+  mean_t /= rings.size(), mean_r /= rings.size(), mean_k /= rings.size();
+  double num = 0.0, den = 0.0;
+  for (std::size_t i = 0; i < rings.size(); ++i) {
+    num += (times[i] - mean_t) * (rings[i].radius_m - mean_r);
+    den += (times[i] - mean_t) * (times[i] - mean_t);
+  }
+  const double speed = num / den, group = 0.5 * std::sqrt(kG / mean_k);
+  std::string described;
+  for (std::size_t i = 0; i < rings.size(); ++i) {
+    char item[64];
+    std::snprintf(item, sizeof item, " %.0f s: %.0f m (%.1f m waves);", times[i] - 6.0, rings[i].radius_m, 2.0 * pi / rings[i].k);
+    described += item;
+  }
+  std::printf("decoded rings after the splash:%s advancing at %.2f m/s, group velocity %.2f m/s\n", described.c_str(), speed,
+              group);
+  CHECK(speed == Approx(group).epsilon(0.1));
+  const Ring& early = rings.front();
+  const Ring& late = rings.back();
+  CHECK(early.k == Approx(late.k).epsilon(0.15));  // the ring carries the same waves as it spreads
 }
