@@ -180,24 +180,38 @@ Problem check(const wire::Welcome& m, const wire::Message&, std::size_t, wire::T
   return check_vessels(m);
 }
 
-// Each vessel a track model::validate accepts in a world of +-1e7 m (PROTOCOL.md 8), and only
-// beside a wake lattice they can force.
-Problem check_vessels(const wire::Welcome& m) {
-  if (!m.vessels() || m.vessels()->size() == 0) return kOk;
-  if (!m.stream()->wake()) return fail(Reason::bad_dimensions, "Welcome.vessels", "absent without StreamParams.wake");
-  if (m.vessels()->size() > kMaxVessels) return fail(Reason::bad_dimensions, "Welcome.vessels", "at most 32 vessels");
+// Each vessel a track model::validate accepts in a world of +-1e7 m (PROTOCOL.md 8), at most 32.
+Problem check_fleet(const flatbuffers::Vector<flatbuffers::Offset<wire::Vessel>>& vessels, const char* field) {
+  if (vessels.size() > kMaxVessels) return fail(Reason::bad_dimensions, field, "at most 32 vessels");
   model::TrackLimits limits;
   limits.world_min_m = -1e7;
   limits.world_max_m = 1e7;
-  for (const wire::Vessel* v : *m.vessels()) {
+  for (const wire::Vessel* v : vessels) {
     if (!v->waypoints() || v->waypoints()->size() == 0 || v->waypoints()->size() > kMaxWaypoints)
       return fail(Reason::bad_dimensions, "Vessel.waypoints", "1..64 waypoints");
     if (!model::validate(protocol::read(*v), limits).empty())
-      return fail(Reason::out_of_range, "Welcome.vessels",
+      return fail(Reason::out_of_range, field,
                   "hulls (0, 400] m long, beam (0, length], draft (0, 25] m; waypoints within 1e7 m, times from 0 "
                   "increasing, legs at most 20 m/s, a repeating track closed; presence from -inf (then for good) or "
                   "within 1e12 s, for (0, 1e12] s or inf, every 0 or (0, 1e12] s and no shorter than it lasts");
   }
+  return kOk;
+}
+
+// The Welcome's vessels only beside a wake lattice they can force.
+Problem check_vessels(const wire::Welcome& m) {
+  if (!m.vessels() || m.vessels()->size() == 0) return kOk;
+  if (!m.stream()->wake()) return fail(Reason::bad_dimensions, "Welcome.vessels", "absent without StreamParams.wake");
+  return check_fleet(*m.vessels(), "Welcome.vessels");
+}
+
+// Numbers a vessel command may carry: finite (their ranges are the server's to check, with a
+// reason naming the limit).
+Problem check_vessel_command(const wire::VesselCommand& v) {
+  if (v.action() == wire::VesselAction::none) return fail(Reason::missing_field, "VesselCommand.action", "add, course, remove or drop");
+  if (auto p = known_enum(v.action(), "VesselCommand.action")) return p;
+  for (const double x : {v.length_m(), v.beam_m(), v.draft_m(), v.x_m(), v.z_m(), v.heading_deg(), v.speed_mps(), v.size_m()})
+    if (!std::isfinite(x)) return fail(Reason::non_finite_value, "VesselCommand", "finite numbers");
   return kOk;
 }
 
@@ -237,8 +251,10 @@ Problem check(const wire::SetTransport& m, const wire::Message&, std::size_t, wi
 Problem check(const wire::ParamChange& m, const wire::Message&, std::size_t, wire::Transport) {
   if (!m.admin_token() || m.admin_token()->size() == 0) return fail(Reason::missing_field, "ParamChange.admin_token", "present");
   if (auto p = text(m.admin_token(), kMaxAdminTokenBytes, "ParamChange.admin_token", "UTF-8, at most 128 bytes")) return p;
-  if (!m.wind_speed_mps() && !m.wind_dir_deg() && !m.amplitude() && !m.choppiness() && !m.spectrum())
-    return fail(Reason::missing_field, "ParamChange", "at least one parameter to change");
+  if (!m.wind_speed_mps() && !m.wind_dir_deg() && !m.amplitude() && !m.choppiness() && !m.spectrum() && !m.vessel())
+    return fail(Reason::missing_field, "ParamChange", "at least one parameter to change, or a vessel command");
+  if (m.vessel())
+    if (auto p = check_vessel_command(*m.vessel())) return p;
   if (auto v = m.wind_speed_mps())
     if (auto p = wind_speed(*v, "ParamChange.wind_speed_mps")) return p;
   if (auto v = m.wind_dir_deg())
@@ -254,6 +270,8 @@ Problem check(const wire::ParamChange& m, const wire::Message&, std::size_t, wir
 
 Problem check(const wire::SceneUpdate& m, const wire::Message&, std::size_t, wire::Transport) {
   if (!m.scene()) return fail(Reason::missing_field, "SceneUpdate.scene", "present");
+  if (m.vessels())
+    if (auto p = check_fleet(*m.vessels(), "SceneUpdate.vessels")) return p;
   return check_scene(*m.scene());
 }
 

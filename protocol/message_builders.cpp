@@ -66,6 +66,19 @@ Offset<wire::StreamParams> stream_of(FlatBufferBuilder& fbb, const StreamParams&
   return b.Finish();
 }
 
+Offset<flatbuffers::Vector<Offset<wire::Vessel>>> vessels_of(FlatBufferBuilder& fbb,
+                                                              const std::vector<model::VesselTrack>& vessels) {
+  std::vector<Offset<wire::Vessel>> out;
+  for (const model::VesselTrack& v : vessels) {
+    std::vector<wire::Waypoint> points;
+    for (const model::Waypoint& p : v.points) points.emplace_back(p.t_s, p.x_m, p.z_m);
+    out.push_back(wire::CreateVessel(fbb, v.id, v.hull.length_m, v.hull.beam_m, v.hull.draft_m, v.repeat,
+                                     fbb.CreateVectorOfStructs(points), v.presence.from_s, v.presence.for_s,
+                                     v.presence.every_s));
+  }
+  return fbb.CreateVector(out);
+}
+
 Offset<wire::SceneParams> scene_of(FlatBufferBuilder& fbb, const SceneParams& s) {
   wire::SceneParamsBuilder b(fbb);
   // 16 bits hold every valid size; the enums have the model's numbers (protocol/scene_wire checks).
@@ -106,18 +119,7 @@ Bytes encode(const Welcome& m) {
   const auto scene = scene_of(fbb, m.scene);
   const auto offered = bytes_of(fbb, m.offered_profiles);
   const auto cookie = bytes_of(fbb, m.udp_cookie);
-  Offset<flatbuffers::Vector<Offset<wire::Vessel>>> vessels = 0;
-  if (!m.vessels.empty()) {
-    std::vector<Offset<wire::Vessel>> out;
-    for (const model::VesselTrack& v : m.vessels) {
-      std::vector<wire::Waypoint> points;
-      for (const model::Waypoint& p : v.points) points.emplace_back(p.t_s, p.x_m, p.z_m);
-      out.push_back(wire::CreateVessel(fbb, v.id, v.hull.length_m, v.hull.beam_m, v.hull.draft_m, v.repeat,
-                                       fbb.CreateVectorOfStructs(points), v.presence.from_s, v.presence.for_s,
-                                       v.presence.every_s));
-    }
-    vessels = fbb.CreateVector(out);
-  }
+  const auto vessels = m.vessels.empty() ? 0 : vessels_of(fbb, m.vessels);
   wire::WelcomeBuilder b(fbb);
   b.add_session_id(m.session_id);
   b.add_stream(stream);
@@ -200,7 +202,12 @@ Bytes encode(const SetTransport& m) {
 Bytes encode(const ParamChange& m) {
   FlatBufferBuilder fbb(256);
   const auto token = string_of(fbb, m.admin_token);
+  Offset<wire::VesselCommand> vessel = 0;
+  if (const auto& v = m.vessel)
+    vessel = wire::CreateVesselCommand(fbb, v->action, v->id, v->hull.length_m, v->hull.beam_m, v->hull.draft_m, v->x_m,
+                                       v->z_m, v->heading_deg, v->speed_mps, v->size_m);
   wire::ParamChangeBuilder b(fbb);
+  if (m.vessel) b.add_vessel(vessel);
   b.add_admin_token(token);
   b.add_request_id(m.request_id);
   if (m.wind_speed_mps) b.add_wind_speed_mps(*m.wind_speed_mps);
@@ -214,7 +221,9 @@ Bytes encode(const ParamChange& m) {
 Bytes encode(const SceneUpdate& m) {
   FlatBufferBuilder fbb(256);
   const auto scene = scene_of(fbb, m.scene);
+  const auto vessels = m.vessels ? vessels_of(fbb, *m.vessels) : 0;
   wire::SceneUpdateBuilder b(fbb);
+  if (m.vessels) b.add_vessels(vessels);
   b.add_request_id(m.request_id);
   b.add_effective_tick64(m.effective_tick);
   b.add_serial(m.serial);

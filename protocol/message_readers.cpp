@@ -118,6 +118,9 @@ ParamChange read(const wire::ParamChange& m) {
   out.amplitude = optional_of(m.amplitude());
   out.choppiness = optional_of(m.choppiness());
   out.spectrum = optional_of(m.spectrum());
+  if (const wire::VesselCommand* v = m.vessel())
+    out.vessel = VesselCommand{v->action(), v->id(), {v->length_m(), v->beam_m(), v->draft_m()}, v->x_m(), v->z_m(),
+                               v->heading_deg(), v->speed_mps(), v->size_m()};
   return out;
 }
 
@@ -127,6 +130,10 @@ SceneUpdate read(const wire::SceneUpdate& m) {
   out.effective_tick = m.effective_tick64();
   if (m.scene()) out.scene = read(*m.scene());
   out.serial = m.serial();
+  if (m.vessels()) {
+    out.vessels.emplace();
+    for (const wire::Vessel* v : *m.vessels()) out.vessels->push_back(read(*v));
+  }
   return out;
 }
 

@@ -105,6 +105,17 @@ struct SetTransport {
   bool operator==(const SetTransport&) const = default;
 };
 
+// What an admin does to a vessel (ParamChange.vessel, PROTOCOL.md 8).
+struct VesselCommand {
+  wire::VesselAction action = wire::VesselAction::none;
+  std::uint32_t id = 0;
+  model::Hull hull;  // add
+  double x_m = 0.0, z_m = 0.0;  // add, drop
+  double heading_deg = 0.0, speed_mps = 0.0;  // add, course
+  double size_m = 0.0;  // drop
+  bool operator==(const VesselCommand&) const = default;
+};
+
 struct ParamChange {
   std::string admin_token;
   std::uint32_t request_id = 0;
@@ -113,6 +124,7 @@ struct ParamChange {
   std::optional<double> amplitude;
   std::optional<double> choppiness;
   std::optional<wire::Spectrum> spectrum;
+  std::optional<VesselCommand> vessel;
   bool operator==(const ParamChange&) const = default;
 };
 
@@ -121,6 +133,7 @@ struct SceneUpdate {
   Tick effective_tick = 0;
   SceneParams scene;
   std::uint32_t serial = 0;  // differs from the previous scene's mod 256 (PROTOCOL.md 6.2); chunks name it mod 256
+  std::optional<std::vector<model::VesselTrack>> vessels = std::nullopt;  // the fleet from effective_tick on, when it changes
   bool operator==(const SceneUpdate&) const = default;
 };
 

@@ -55,6 +55,17 @@ void EpochWake::advance_to(std::int64_t tick) {
   tick_ = tick;
 }
 
+void EpochWake::set_tracks(std::vector<model::VesselTrack> tracks, std::int64_t from) {
+  tracks_ = std::move(tracks);
+  for (Part& p : parts_)
+    if (p.reached > from) p = fresh(p.start);
+  if (tick_ > from) {  // the wake at tick_ must be stepped again with the new tracks
+    const std::int64_t tick = tick_;
+    tick_ = -1;
+    advance_to(tick);
+  }
+}
+
 std::vector<const WakeField*> EpochWake::fields() const {
   std::vector<const WakeField*> out;
   for (const Part& p : parts_) out.push_back(&p.field);

@@ -30,6 +30,11 @@ class EpochWake {
 
   // The wake at `tick` (any tick >= 0; stepping forward is cheap, going back recomputes).
   void advance_to(std::int64_t tick);
+  // The tracks from tick `from` on (a vessel command): they must press as the current ones do
+  // before `from` (a command ends and starts presences there), so the parts stepped up to `from`
+  // stay; one stepped past it starts again.
+  void set_tracks(std::vector<model::VesselTrack> tracks, std::int64_t from);
+  const std::vector<model::VesselTrack>& tracks() const { return tracks_; }
   // The fields whose sum is the wake at the tick last advanced to (one or two).
   std::vector<const WakeField*> fields() const;
 

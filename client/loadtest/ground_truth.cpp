@@ -46,7 +46,7 @@ GroundTruth::SceneEntry* GroundTruth::scene_for(Tick tick) {
 
 void GroundTruth::set_wake(const WakeLattice& lattice, std::vector<model::VesselTrack> vessels,
                            const protocol::SceneParams& scene) {
-  if (lattice.grid == 0 || vessels.empty()) return;
+  if (lattice.grid == 0) return;  // a wake lattice even with no vessels yet (they may be added live)
   wake_lattice_ = lattice;
   // The stream's own lattice size is enough: a wave below its Nyquist has the same bits in the
   // server's finer field (each mode is stepped alone, from the same wavevector and poses).
@@ -55,6 +55,12 @@ void GroundTruth::set_wake(const WakeLattice& lattice, std::vector<model::Vessel
   wake_ = std::make_unique<sim::EpochWake>(region, lattice.origin_x_m, lattice.origin_z_m, std::move(vessels), rate_hz_,
                                            static_cast<std::int64_t>(lattice.epoch_ticks));
   cache_.clear();
+}
+
+void GroundTruth::set_vessels(std::vector<model::VesselTrack> vessels, Tick from) {
+  if (!wake_ || vessels == wake_->tracks()) return;
+  wake_->set_tracks(std::move(vessels), static_cast<std::int64_t>(from));
+  std::erase_if(cache_, [from](const auto& entry) { return (entry.first >> 16) >= from; });
 }
 
 double GroundTruth::time_of(Tick tick) const {

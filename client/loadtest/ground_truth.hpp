@@ -32,6 +32,9 @@ class GroundTruth {
   // frames then end with the wake as the server computes it (sim::EpochWake).
   void set_wake(const WakeLattice& lattice, std::vector<model::VesselTrack> vessels, const protocol::SceneParams& scene);
 
+  // A vessel command's fleet from tick `from` on (SceneUpdate.vessels).
+  void set_vessels(std::vector<model::VesselTrack> vessels, Tick from);
+
   // The scene in force from effective_tick on. Re-announcing a known scene changes nothing, so
   // every client may report the Welcome and SceneUpdates it sees.
   void set_scene(Tick effective_tick, const protocol::SceneParams& scene);

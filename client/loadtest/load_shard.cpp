@@ -136,7 +136,9 @@ void LoadShard::on_welcome(std::size_t k, const protocol::Welcome& w) {
 
 void LoadShard::on_scene_update(const protocol::SceneUpdate& u) {
   std::lock_guard lock(shared_.truth_mutex);
-  if (shared_.truth) shared_.truth->set_scene(u.effective_tick, u.scene);
+  if (!shared_.truth) return;
+  shared_.truth->set_scene(u.effective_tick, u.scene);
+  if (u.vessels) shared_.truth->set_vessels(*u.vessels, u.effective_tick);
 }
 
 void LoadShard::warn_if_server_differs(const protocol::Welcome& w) const {

@@ -134,6 +134,8 @@ void ClientSession::handle(const wire::Message& message, wire::Transport transpo
       const protocol::SceneUpdate update = protocol::read(*message.body_as_SceneUpdate());
       add_scene(update.effective_tick, update.serial, update.scene);
       if (state_ != State::streaming) return;
+      // A vessel command's fleet, from its tick on (ignored by a stream without a wake lattice).
+      if (update.vessels && decoder_->config().has_wake()) decoder_->set_vessels(*update.vessels, update.effective_tick);
       scene_ = update.scene;
       if (events_.on_scene_update) events_.on_scene_update(update);
       return;

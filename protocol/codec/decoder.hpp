@@ -48,6 +48,8 @@ class Decoder {
   const SceneTimeline& scenes() const { return scenes_; }
   // The vessels forcing the stream's wake lattice (Welcome.vessels; CODEC.md 7.9).
   void set_vessels(std::vector<model::VesselTrack> vessels) { scenes_.set_vessels(std::move(vessels)); }
+  // A new fleet from tick `from` on (a vessel command; SceneTimeline::set_vessels).
+  void set_vessels(std::vector<model::VesselTrack> vessels, Tick from) { scenes_.set_vessels(std::move(vessels), from); }
 
   // Takes one chunk; on any error nothing inside the decoder changes.
   ChunkError accept(const ChunkView& chunk);

@@ -77,6 +77,8 @@ class Encoder {
   const SceneTimeline& scenes() const { return scenes_; }
   // The vessels forcing the stream's wake lattice, as its decoders are told (CODEC.md 7.9).
   void set_vessels(std::vector<model::VesselTrack> vessels) { scenes_.set_vessels(std::move(vessels)); }
+  // A new fleet from tick `from` on (a vessel command; SceneTimeline::set_vessels).
+  void set_vessels(std::vector<model::VesselTrack> vessels, Tick from) { scenes_.set_vessels(std::move(vessels), from); }
   // That scene's model, built ahead elsewhere (SceneTimeline::provide_model): the first frame of
   // a new scene then costs no model build (a desktop stream's took 50-100 ms).
   void provide_scene_model(Tick from, const model::SceneParams& scene, std::shared_ptr<const SceneModel> model) {

@@ -36,4 +36,12 @@ std::shared_ptr<WakeForcing> ModelCache::wake_forcing(const StreamConfig& stream
       [&] { return ForcingEntry{stream, vessels, std::make_shared<WakeForcing>(stream, vessels)}; });
 }
 
+std::shared_ptr<WakeForcing> ModelCache::wake_forcing(const StreamConfig& stream,
+                                                     const std::vector<model::VesselTrack>& vessels,
+                                                     const WakeForcing& earlier, Tick from) {
+  return find_or_build(
+      forcings_, kKeep, [&](const ForcingEntry& e) { return e.stream == stream && e.vessels == vessels; },
+      [&] { return ForcingEntry{stream, vessels, std::make_shared<WakeForcing>(earlier, vessels, from)}; });
+}
+
 }  // namespace ocean::codec

@@ -23,6 +23,9 @@ class ModelCache {
   // decoders: they must all follow the same server's timeline (a DecodeMemo's decoders do), since a
   // history is advanced by the recurrences of the scenes in force.
   std::shared_ptr<WakeForcing> wake_forcing(const StreamConfig& stream, const std::vector<model::VesselTrack>& vessels);
+  // The same, for a fleet that succeeds `earlier`'s from tick `from` (WakeForcing's successor).
+  std::shared_ptr<WakeForcing> wake_forcing(const StreamConfig& stream, const std::vector<model::VesselTrack>& vessels,
+                                            const WakeForcing& earlier, Tick from);
 
  private:
   // Scenes change a few times an hour: a short list, the least recently built dropped first

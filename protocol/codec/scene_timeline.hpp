@@ -62,6 +62,9 @@ class SceneTimeline {
   // The vessels whose hulls force the wake lattice (CODEC.md 7.9), from now on in every advance;
   // none: the wake rings down freely. Throws std::invalid_argument for a stream without a wake.
   void set_vessels(std::vector<model::VesselTrack> vessels);
+  // The fleet from tick `from` on (a SceneUpdate's vessels): its presences agree with the current
+  // fleet's before `from`, so the wake history computed up to `from` is kept.
+  void set_vessels(std::vector<model::VesselTrack> vessels, Tick from);
 
   // Forgets entries no longer in force at `tick` or later.
   void forget_before(Tick tick);

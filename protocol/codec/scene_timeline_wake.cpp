@@ -39,6 +39,14 @@ void SceneTimeline::set_vessels(std::vector<model::VesselTrack> vessels) {
     forcing_ = cache_ ? cache_->wake_forcing(config_, vessels) : std::make_shared<WakeForcing>(config_, std::move(vessels));
 }
 
+void SceneTimeline::set_vessels(std::vector<model::VesselTrack> vessels, Tick from) {
+  if (!forcing_ || vessels.empty()) return set_vessels(std::move(vessels));
+  if (!config_.has_wake()) throw std::invalid_argument("SceneTimeline::set_vessels: the stream has no wake lattice");
+  if (vessels == forcing_->vessels()) return;
+  forcing_ = cache_ ? cache_->wake_forcing(config_, vessels, *forcing_, from)
+                    : std::make_shared<WakeForcing>(*forcing_, std::move(vessels), from);
+}
+
 const ModalModel& SceneTimeline::recurrence_near(Tick tick) const {
   // A tick before every scene still held (a decoder forgets old ones): the oldest held.
   return recurrence_of(held_at(std::max(tick, entries_.begin()->first)));

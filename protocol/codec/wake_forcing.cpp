@@ -24,6 +24,22 @@ WakeForcing::WakeForcing(const StreamConfig& config, std::vector<model::VesselTr
   if (!lattice_.wake) throw std::invalid_argument("WakeForcing: the stream has no wake lattice");
 }
 
+WakeForcing::WakeForcing(const WakeForcing& earlier, std::vector<model::VesselTrack> vessels, Tick from)
+    : epoch_ticks_(earlier.epoch_ticks_),
+      lattice_(earlier.lattice_),
+      origin_x_m_(earlier.origin_x_m_),
+      origin_z_m_(earlier.origin_z_m_),
+      rate_hz_(earlier.rate_hz_),
+      scale_(earlier.scale_),
+      vessels_(std::move(vessels)),
+      hulls_(lattice_.n, lattice_.patch_x_m) {
+  // A part at tick `at` used the pressures of ticks before it; one past `from` starts again.
+  for (const auto& [epoch, p] : earlier.parts_)
+    if (p.at <= from) parts_.emplace(epoch, p);
+  for (const auto& [t, p] : earlier.ticks_)
+    if (t < from) ticks_.emplace(t, p);
+}
+
 WakeForcing::Part& WakeForcing::part(std::int64_t epoch) {
   auto it = parts_.find(epoch);
   if (it != parts_.end()) return it->second;

@@ -20,6 +20,10 @@ class WakeForcing {
  public:
   // `config` must have a wake lattice.
   WakeForcing(const StreamConfig& config, std::vector<model::VesselTrack> vessels);
+  // The fleet `vessels` from tick `from` on, succeeding `earlier`'s (a vessel command): the two
+  // press alike before `from` (a command ends and starts presences there), so the history
+  // `earlier` advanced up to `from` and its pressures before it are kept, not recomputed.
+  WakeForcing(const WakeForcing& earlier, std::vector<model::VesselTrack> vessels, Tick from);
 
   // The pressure of every hull during the step from tick t to t + 1, per wake mode.
   const std::vector<std::complex<double>>& pressure(Tick t);

@@ -13,6 +13,9 @@ import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../client/loadtest"))
 import local_server  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import admin_expect  # noqa: E402
+
 
 def main():
     parser = argparse.ArgumentParser()
@@ -27,11 +30,7 @@ def main():
         return r.returncode, r.stdout, r.stderr
 
     def expect(name, got, code, stderr_has=None):
-        rc, out, err = got
-        if rc != code or (stderr_has and stderr_has not in err):
-            failures.append(f"{name}: exit {rc} (want {code}), stderr {err.strip()!r}"
-                            + (f" (want it to contain {stderr_has!r})" if stderr_has else ""))
-        return out
+        return admin_expect.expect(failures, name, got, code, stderr_has)
 
     with tempfile.TemporaryDirectory() as work:
         token, wrong = os.path.join(work, "token"), os.path.join(work, "wrong")

@@ -198,3 +198,81 @@ TEST_CASE("eight vessels' wakes stream within half a step, bit for bit, at a lag
     CHECK(told.late_key_err <= 0.5 * config.height_step_m);
   }
 }
+
+TEST_CASE("a fleet changed mid-stream (a vessel command) streams as if it had always been the fleet", "[wake]") {
+  // Vessel 1 of the circuits turns away at tick 400 (its circuit ends there, a straight leg east
+  // starts from where it was) and an object splashes for a second: the server's sim, the encoder
+  // and a watching decoder take the new fleet 30 ticks ahead; a decoder that joins at tick 500
+  // knows only the new fleet. Epochs of 10 s: tick 600 drops the epoch that held the old circuit.
+  const StreamConfig config = wake_stream(false);
+  const std::vector<model::VesselTrack> before = fleet(3);
+  constexpr std::uint64_t kChange = 400;
+  const double change_s = kChange * config.dt_s();
+  std::vector<model::VesselTrack> after = before;
+  const model::HullPose there = model::pose_at(after[0], change_s);
+  after[0].presence = {0.0, change_s, 0.0};
+  model::VesselTrack turned = after[0];
+  turned.repeat = false;
+  turned.presence = {change_s, std::numeric_limits<double>::infinity(), 0.0};
+  turned.points = {{0.0, there.x_m, there.z_m}, {change_s, there.x_m, there.z_m}, {change_s + 20.0, there.x_m + 140.0, there.z_m}};
+  after.push_back(turned);
+  model::VesselTrack object;
+  object.id = 40;
+  object.hull = {4.0, 4.0, 2.0};
+  object.points = {{0.0, -30.0, 40.0}};
+  object.presence = {change_s + 0.5, 1.0, 0.0};
+  after.push_back(object);
+
+  const model::SceneParams scene = calm();
+  Truth truth(scene, config, before);
+  Encoder encoder(config);
+  Decoder watching(config), joining(config);
+  encoder.set_scene(0, 0, scene);
+  watching.add_scene(0, 0, scene);
+  joining.add_scene(0, 0, scene);
+  encoder.set_vessels(before);
+  watching.set_vessels(before);
+  joining.set_vessels(after);
+  std::size_t bytes_after = 0, frames_after = 0;
+  bool bitwise = true;
+  double worst = 0.0;
+  StateId previous{};
+  for (std::uint64_t tick = 1; tick <= 700; ++tick) {
+    if (tick == kChange - 30) {
+      truth.wake.set_tracks(after, static_cast<std::int64_t>(kChange));
+      encoder.set_vessels(after, kChange);
+      watching.set_vessels(after, kChange);
+    }
+    const sim::Frame f = truth.at(tick, config);
+    encoder.add_truth(tick, wake_view(f));
+    if (tick == 1) {
+      const auto key = encoder.encode_key(tick);
+      previous = key->id;
+      for (const Chunk& c : key->chunks) REQUIRE(watching.accept(view(c)) == ChunkError::ok);
+      continue;
+    }
+    const auto delta = encoder.encode_delta(tick, previous);
+    previous = delta->id;
+    for (const Chunk& c : delta->chunks) REQUIRE(watching.accept(view(c)) == ChunkError::ok);
+    const ReconstructedFrame* shown = watching.latest();
+    REQUIRE(shown);
+    bitwise = bitwise && shown->height == delta->reconstruction.height;
+    worst = std::max(worst, wake_worst(shown->height, f.height));
+    if (tick > kChange) {
+      for (const Chunk& c : delta->chunks) bytes_after += c.payload.size();
+      ++frames_after;
+    }
+    if (tick == 500) {
+      const auto key = encoder.encode_key(tick);
+      for (const Chunk& c : key->chunks) REQUIRE(joining.accept(view(c)) == ChunkError::ok);
+      REQUIRE(joining.latest());
+      CHECK(joining.latest()->height == key->reconstruction.height);
+    }
+  }
+  const double per_frame = static_cast<double>(bytes_after) / static_cast<double>(frames_after);
+  std::printf("a fleet changed at tick 400: %.1f payload bytes a frame after it, worst error %.2g m\n", per_frame, worst);
+  CHECK(bitwise);
+  CHECK(worst <= 0.5 * config.height_step_m);
+  // The encoder predicts the new fleet as the sim forces it: no corrections after the change.
+  CHECK(per_frame < 6.0);
+}

@@ -36,6 +36,9 @@ int refused(const protocol::Error& e) {
 std::string update_json(const protocol::SceneUpdate& u) {
   common::JsonWriter json(common::JsonWriter::Style::compact);
   json.integer("effective_tick", u.effective_tick).integer("serial", u.serial).integer("request_id", u.request_id);
+  if (u.vessels) {  // a vessel command's: how many tracks the fleet holds from its tick (the last two minutes')
+    json.integer("tracks", static_cast<long long>(u.vessels->size()));
+  }
   return json.raw("scene", scene_json(u.scene)).str();
 }
 
@@ -83,6 +86,7 @@ int change(AdminLink& link, const AdminOptions& o, const protocol::Welcome& welc
     common::JsonWriter json(common::JsonWriter::Style::compact);
     json.integer("effective_tick", u->effective_tick).integer("serial", u->serial);
     json.integer("request_id", u->request_id).integer("welcome_tick", welcome.current_tick);
+    if (u->vessels) json.integer("tracks", static_cast<long long>(u->vessels->size()));
     std::printf("%s\n", json.raw("scene", scene_json(u->scene)).str().c_str());
     (void)link.send(protocol::encode(protocol::Bye{wire::ByeReason::client_quit, "ocean-admin done"}), error);
     return kExitOk;

@@ -311,6 +311,11 @@ void Server::request_scene(const model::SceneParams& scene, std::int64_t from) {
   scene_requests_.emplace_back(scene, from);
 }
 
+void Server::request_vessels(const std::vector<model::VesselTrack>& vessels, std::int64_t from) {
+  std::lock_guard lock(scene_request_mutex_);
+  vessel_requests_.emplace_back(vessels, from);
+}
+
 bool Server::send_datagram(std::span<const std::uint8_t> bytes, const asio::ip::udp::endpoint& to) {
   if (!udp_->is_open()) return false;
   return ::sendto(udp_->fd(), bytes.data(), bytes.size(), MSG_DONTWAIT, to.data(), to.size()) >= 0;
@@ -333,6 +338,8 @@ void Server::on_tick(const TickDecision& decision) {
     std::lock_guard lock(scene_request_mutex_);
     for (const auto& [scene, from] : scene_requests_) producer_.override_scene(scene, from);
     scene_requests_.clear();
+    for (auto& [vessels, from] : vessel_requests_) producer_.set_vessels(std::move(vessels), from);
+    vessel_requests_.clear();
   }
   const double time_s = tick_loop_.clock().sim_time_s(decision.tick);
   std::shared_ptr<const TickFrames> frames = producer_.produce(decision.tick, time_s);

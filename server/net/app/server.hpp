@@ -73,6 +73,7 @@ class Server : public DatagramSocket {
   // Thread-safe: the simulation switches to this scene at tick `from` (admin ParamChange; the
   // hub announced it to the clients first).
   void request_scene(const model::SceneParams& scene, std::int64_t from);
+  void request_vessels(const std::vector<model::VesselTrack>& vessels, std::int64_t from);
   // The config's schedule, checked (immutable).
   const SceneSchedule& schedule() const { return schedule_; }
   // Sends one datagram without blocking; false when the socket refused it (the frame is lost).
@@ -156,6 +157,7 @@ class Server : public DatagramSocket {
   bool run_returned_ = false;  // guarded by run_mutex_
   std::mutex scene_request_mutex_;
   std::vector<std::pair<model::SceneParams, std::int64_t>> scene_requests_;  // guarded by scene_request_mutex_
+  std::vector<std::pair<std::vector<model::VesselTrack>, std::int64_t>> vessel_requests_;  // the same
 
   DatagramBatch batch_;
 

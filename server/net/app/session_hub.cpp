@@ -21,7 +21,10 @@ SessionCoreHost host_of(Server& server) {
   return SessionCoreHost{server.config(), server.schedule(), server.metrics(), server.cookie_key(), server,
                          server.config().udp_public_port ? static_cast<std::uint16_t>(server.config().udp_public_port)
                                                          : server.udp_port(),
-                         [&server](const model::SceneParams& scene, std::int64_t from) { server.request_scene(scene, from); }};
+                         [&server](const model::SceneParams& scene, std::int64_t from) { server.request_scene(scene, from); },
+                         [&server](const std::vector<model::VesselTrack>& vessels, std::int64_t from) {
+                           server.request_vessels(vessels, from);
+                         }};
 }
 
 // A warning about overload at most this often.

@@ -10,6 +10,7 @@
 #include "message_readers.hpp"
 #include "servable_scene.hpp"
 #include "server_log.hpp"
+#include "vessel_commands.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -65,6 +66,27 @@ bool SessionCore::token_refused(Session& session, const std::string& token) {
 void SessionCore::apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now) {
   const Tick from = tick_ + scenes_.lead_ticks();
   model::SceneParams scene = scenes_.in_force(from).scene;
+  // A vessel command: the fleet from `from` on, announced with the scene in force (changed too
+  // when the same message changes it).
+  std::optional<std::vector<model::VesselTrack>> fleet;
+  if (change.vessel) {
+    const auto refused = [&](const std::string& text) {
+      log_limited(spdlog::level::warn, "vessel_command_refused", session.peer(),
+                  "vessel command refused session={} peer={} reason=out_of_range: {}", session.id, session.peer(), text);
+      host_.metrics.rejects("out_of_range").inc();
+      send_control(session, protocol::encode(protocol::Error{protocol::Reason::out_of_range,
+                                                             text.substr(0, protocol::kMaxTextBytes)}));
+    };
+    if (streams_.empty() || !streams_.front()->config().has_wake())
+      return refused("out_of_range in ParamChange.vessel: this server streams no wake (its config has no "
+                                     "[[vessel]] or [[drop]]), so vessels cannot be added live");
+    const WakeLattice& wake = streams_.front()->config().wake;
+    const FleetRules rules{host_.config.wake_origin_x_m, host_.config.wake_origin_z_m, host_.config.wake_size_m,
+                           host_.config.tick_rate_hz, static_cast<std::int64_t>(wake.epoch_ticks)};
+    FleetChange changed = apply_vessel_command(vessels_, *change.vessel, from, tick_, rules);
+    if (!changed.error.empty()) return refused("out_of_range in ParamChange.vessel: " + changed.error);
+    fleet = std::move(changed.fleet);
+  }
   if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;
   if (change.wind_dir_deg) scene.wind_dir_deg = *change.wind_dir_deg;
   if (change.amplitude) scene.amplitude = *change.amplitude;
@@ -89,8 +111,13 @@ void SessionCore::apply_param_change(Session& session, const protocol::ParamChan
                                                  options_.scene_changes_per_s, options_.scene_change_burst, wait_s + 0.05)}));
   }
   if (host_.request_scene) host_.request_scene(scene, static_cast<std::int64_t>(from));
-  announce({scenes_.add_admin(tick_, scene)}, session.id, change.request_id);
+  const std::size_t vessels = fleet ? fleet->size() : 0;
+  announce({scenes_.add_admin(tick_, scene, std::move(fleet))}, session.id, change.request_id);
   host_.metrics.param_changes.inc();
+  if (change.vessel)
+    spdlog::info("vessel command accepted session={} peer={} request={} from tick {}: action {} vessel {}; {} tracks",
+                 session.id, session.peer(), change.request_id, from, static_cast<int>(change.vessel->action),
+                 change.vessel->id, vessels);
   spdlog::info("param_change accepted session={} peer={} request={} from tick {}: wind={} m/s dir={} deg amplitude={} "
                "choppiness={}",
                session.id, session.peer(), change.request_id, from, scene.wind_speed_mps, scene.wind_dir_deg,

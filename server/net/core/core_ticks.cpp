@@ -17,7 +17,7 @@
 namespace ocean::server {
 
 protocol::SceneUpdate SessionCore::scene_update(const AnnouncedScene& scene, std::uint32_t request_id) const {
-  return protocol::SceneUpdate{request_id, scene.from, scene.scene, scene.serial};
+  return protocol::SceneUpdate{request_id, scene.from, scene.scene, scene.serial, scene.vessels};
 }
 
 // Both sides of every stream switch scene at its first tick with no keyframe: the encoders learn
@@ -28,6 +28,12 @@ void SessionCore::announce(const std::vector<AnnouncedScene>& scenes, std::optio
   for (const AnnouncedScene& scene : scenes) {
     const model::SceneParams model = scene.scene;
     for (auto& stream : streams_) stream->set_scene(scene.from, scene.serial, model);
+    if (scene.vessels) {
+      vessels_ = *scene.vessels;
+      for (auto& stream : streams_)
+        if (stream->config().has_wake()) stream->set_vessels(vessels_, scene.from);
+      if (host_.request_vessels) host_.request_vessels(vessels_, static_cast<std::int64_t>(scene.from));
+    }
     for (const auto& session : sessions_.snapshot())  // a full control queue closes its session
       send_control(*session, protocol::encode(scene_update(scene, requester == session->id ? request_id : 0)));
     spdlog::info("scene {} announced: from tick {} (wind {} m/s towards {} deg, depth {} m)", scene.serial, scene.from,

@@ -31,7 +31,8 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
                             options.key_bytes_per_s},
               host_.config.tick_rate_hz, 0.0),
       token_checks_(options.token_checks_per_s, options.token_check_burst, 0.0),
-      scene_changes_(options.scene_changes_per_s, options.scene_change_burst, 0.0) {
+      scene_changes_(options.scene_changes_per_s, options.scene_change_burst, 0.0),
+      vessels_(host_.config.vessels) {
   for (const std::string& name : host_.config.profiles) {
     const Profile* profile = find_profile(std::string_view(name));
     if (!profile) continue;
@@ -322,7 +323,7 @@ protocol::Welcome SessionCore::welcome(const Session& session) const {
     welcome.udp_cookie.assign(session.cookie.begin(), session.cookie.end());
   }
   welcome.max_message_bytes = protocol::kDefaultMaxMessageBytes;
-  if (session.stream->config().has_wake()) welcome.vessels = host_.config.vessels;
+  if (session.stream->config().has_wake()) welcome.vessels = vessels_;
   return welcome;
 }
 

@@ -87,6 +87,8 @@ struct SessionCoreHost {
   std::uint16_t udp_port = 0;  // announced in the Welcome
   // An accepted admin change: the simulation switches to `scene` at tick `from`.
   std::function<void(const model::SceneParams& scene, std::int64_t from)> request_scene;
+  // An accepted vessel command: the simulation's fleet from tick `from` on.
+  std::function<void(const std::vector<model::VesselTrack>& vessels, std::int64_t from)> request_vessels = nullptr;
 };
 
 // What the last tick did, for metrics and tests.
@@ -223,6 +225,7 @@ class SessionCore {
   std::deque<PendingChange> admin_queue_;  // one per connection at most, oldest first
   TokenBucket token_checks_;               // admin tokens looked at, all connections together
   TokenBucket scene_changes_;              // admin changes applied
+  std::vector<model::VesselTrack> vessels_;  // the fleet, as the newest announcement leaves it
   std::vector<const ProfileStream*> roots_full_;
   std::uint64_t streams_released_ = 0;  // this key tick: no new root, joiners wait
 };

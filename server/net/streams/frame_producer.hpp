@@ -41,6 +41,11 @@ class FrameProducer {
   // until the schedule reaches its next entry. The scene must pass model::validate.
   // Several may wait (admin changes within one announcement lead), each from its own tick.
   void override_scene(const model::SceneParams& scene, std::int64_t from) { overrides_[from] = scene; }
+  // A vessel command: the fleet from tick `from` on (its presences agree with the current fleet's
+  // before it). Ignored without a wake (the server was started without vessels).
+  void set_vessels(std::vector<model::VesselTrack> vessels, std::int64_t from) {
+    if (wake_) wake_->set_tracks(std::move(vessels), from);
+  }
   // True when the last produce() switched to a scheduled or overriding scene.
   bool scene_changed() const { return scene_changed_; }
   const model::SceneParams& scene() const { return ocean_->params(); }

@@ -43,6 +43,8 @@ class ProfileStream {
   const codec::StreamConfig& config() const { return config_; }
   // The vessels forcing the stream's wake lattice, as its Welcome tells decoders.
   void set_vessels(std::vector<model::VesselTrack> vessels) { encoder_->set_vessels(std::move(vessels)); }
+  // A vessel command's fleet from tick `from` on.
+  void set_vessels(std::vector<model::VesselTrack> vessels, Tick from) { encoder_->set_vessels(std::move(vessels), from); }
   std::uint32_t tick_step() const { return tick_step_; }
   bool is_frame_tick(Tick tick) const { return tick % tick_step_ == 0; }
 

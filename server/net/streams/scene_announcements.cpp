@@ -40,10 +40,11 @@ std::vector<AnnouncedScene> SceneAnnouncements::announce(Tick now) {
   return out;
 }
 
-const AnnouncedScene& SceneAnnouncements::add_admin(Tick now, const model::SceneParams& scene) {
+const AnnouncedScene& SceneAnnouncements::add_admin(Tick now, const model::SceneParams& scene,
+                                                    std::optional<std::vector<model::VesselTrack>> vessels) {
   const Tick from = now + lead_;
   const std::uint32_t serial = in_force(from).serial + 128;
-  return announced_[from] = AnnouncedScene{from, serial, scene};
+  return announced_[from] = AnnouncedScene{from, serial, scene, std::move(vessels)};
 }
 
 const AnnouncedScene& SceneAnnouncements::in_force(Tick tick) const {

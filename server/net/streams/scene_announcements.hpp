@@ -8,9 +8,11 @@
 
 #include "scene_schedule.hpp"
 #include "tick.hpp"
+#include "vessel_track.hpp"
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace ocean::server {
@@ -19,6 +21,8 @@ struct AnnouncedScene {
   Tick from = 0;
   std::uint32_t serial = 0;
   model::SceneParams scene;
+  // A vessel command's: the whole fleet from `from` on (the scene itself unchanged).
+  std::optional<std::vector<model::VesselTrack>> vessels = std::nullopt;
 };
 
 class SceneAnnouncements {
@@ -32,7 +36,8 @@ class SceneAnnouncements {
   std::vector<AnnouncedScene> start(Tick now);
   std::vector<AnnouncedScene> announce(Tick now);
   // An admin's scene from now + lead on (until the next schedule entry), already announced.
-  const AnnouncedScene& add_admin(Tick now, const model::SceneParams& scene);
+  const AnnouncedScene& add_admin(Tick now, const model::SceneParams& scene,
+                                  std::optional<std::vector<model::VesselTrack>> vessels = std::nullopt);
 
   // The announced scene in force at `tick` (start() must have run).
   const AnnouncedScene& in_force(Tick tick) const;

@@ -1,0 +1,150 @@
+#include "vessel_commands.hpp"
+
+#include "param_message.hpp"
+#include "wire_limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace ocean::server {
+namespace {
+
+constexpr double kMaxDropSizeM = 50.0;  // as a config's [[drop]]
+constexpr double kDropSplashS = 1.0;
+
+std::string named(std::uint32_t id) { return "vessel " + std::to_string(id); }
+
+bool repeats(const model::Presence& p) { return p.every_s > 0.0; }
+
+// When a track stops pressing for good (infinity: never).
+double end_of(const model::Presence& p) {
+  if (repeats(p) || p.for_s == std::numeric_limits<double>::infinity()) return std::numeric_limits<double>::infinity();
+  return p.from_s + p.for_s;
+}
+
+// The track of `id` pressing at the step from tick `from` (its middle), if any.
+const model::VesselTrack* present(const std::vector<model::VesselTrack>& fleet, std::uint32_t id, double mid_s) {
+  for (const model::VesselTrack& v : fleet)
+    if (v.id == id && model::present_at(v.presence, mid_s)) return &v;
+  return nullptr;
+}
+
+// Ends `track` at from_s (a track that has not begun by then is dropped: false).
+bool end_at(model::VesselTrack& track, double from_s) {
+  if (track.presence.from_s == -std::numeric_limits<double>::infinity()) track.presence.from_s = 0.0;  // no tick is earlier
+  track.presence.for_s = from_s - track.presence.from_s;
+  return track.presence.for_s > 0.0;
+}
+
+// A hull from (x, z), waiting there until from_s, then sailing `heading_deg` at `speed` until the
+// square's edge, where it stops.
+model::VesselTrack sailing(std::uint32_t id, const model::Hull& hull, double x, double z, double heading_deg,
+                           double speed, double from_s, const FleetRules& rules) {
+  model::VesselTrack v;
+  v.id = id;
+  v.hull = hull;
+  v.points = {{0.0, x, z}};
+  v.presence = {from_s, std::numeric_limits<double>::infinity(), 0.0};
+  const double a = heading_deg * std::numbers::pi / 180.0, dx = std::cos(a), dz = std::sin(a);
+  // How far it sails before leaving the square, along (dx, dz).
+  double reach = std::numeric_limits<double>::infinity();
+  const auto limit = [&](double p, double d, double lo, double hi) {
+    if (d > 1e-12) reach = std::min(reach, (hi - p) / d);
+    if (d < -1e-12) reach = std::min(reach, (lo - p) / d);
+  };
+  limit(x, dx, rules.square_x_m, rules.square_x_m + rules.square_size_m);
+  limit(z, dz, rules.square_z_m, rules.square_z_m + rules.square_size_m);
+  if (speed > 0.0 && reach > 1.0 && std::isfinite(reach)) {
+    v.points.push_back({from_s, x, z});
+    v.points.push_back({from_s + reach / speed, x + reach * dx, z + reach * dz});
+  }
+  return v;
+}
+
+}  // namespace
+
+std::string validate_fleet(const std::vector<model::VesselTrack>& fleet, const FleetRules& rules) {
+  if (fleet.size() > protocol::kMaxVessels)
+    return "at most " + std::to_string(protocol::kMaxVessels) +
+           " vessels and objects (counting the tracks of the last two minutes): remove one, or wait";
+  model::TrackLimits limits;
+  limits.world_min_m = 0.0;
+  limits.world_max_m = rules.square_size_m;
+  for (const model::VesselTrack& v : fleet) {
+    model::VesselTrack local = v;  // checked in the square's own coordinates
+    for (model::Waypoint& p : local.points) {
+      p.x_m -= rules.square_x_m;
+      p.z_m -= rules.square_z_m;
+    }
+    if (std::string error = model::validate(local, limits); !error.empty())
+      return error + " (in the wake's square, corner (" + model::format_value(rules.square_x_m) + ", " +
+             model::format_value(rules.square_z_m) + "), side " + model::format_value(rules.square_size_m) + " m)";
+  }
+  return {};
+}
+
+FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, const protocol::VesselCommand& c, Tick from,
+                                 Tick now, const FleetRules& rules) {
+  FleetChange out;
+  const double rate = static_cast<double>(rules.tick_rate_hz);
+  const double from_s = static_cast<double>(from) / rate, mid_s = (static_cast<double>(from) + 0.5) / rate;
+  // What no tick the wake still holds was pressed by: tracks ended before the epoch before last.
+  const auto epoch = static_cast<std::int64_t>(now) / rules.epoch_ticks;
+  const double forgotten_s = static_cast<double>(std::max<std::int64_t>(0, epoch - 2) * rules.epoch_ticks) / rate;
+  for (const model::VesselTrack& v : fleet)
+    if (!(end_of(v.presence) < forgotten_s)) out.fleet.push_back(v);
+  const model::VesselTrack* current = present(out.fleet, c.id, mid_s);
+  const auto find = [&](const model::VesselTrack* track) {
+    return std::find_if(out.fleet.begin(), out.fleet.end(), [&](const model::VesselTrack& v) { return &v == track; });
+  };
+  switch (c.action) {
+    case wire::VesselAction::add:
+      if (current) return {{}, named(c.id) + " is already at sea (give another id, or set its course)"};
+      if (!(c.speed_mps >= 0.0 && c.speed_mps <= 20.0))
+        return {{}, "speed " + model::format_value(c.speed_mps) + " m/s: must be in [0, 20]"};
+      out.fleet.push_back(sailing(c.id, c.hull, c.x_m, c.z_m, c.heading_deg, c.speed_mps, from_s, rules));
+      break;
+    case wire::VesselAction::course: {
+      if (!current) return {{}, named(c.id) + " is not at sea"};
+      if (repeats(current->presence)) return {{}, named(c.id) + " is a dropped object; it cannot be steered"};
+      if (!(c.speed_mps >= 0.0 && c.speed_mps <= 20.0))
+        return {{}, "speed " + model::format_value(c.speed_mps) + " m/s: must be in [0, 20]"};
+      const model::HullPose pose = model::pose_at(*current, from_s);
+      const model::Hull hull = current->hull;
+      auto it = find(current);
+      if (!end_at(*it, from_s)) out.fleet.erase(it);
+      out.fleet.push_back(sailing(c.id, hull, pose.x_m, pose.z_m, c.heading_deg, c.speed_mps, from_s, rules));
+      break;
+    }
+    case wire::VesselAction::remove: {
+      if (!current) return {{}, named(c.id) + " is not at sea"};
+      auto it = find(current);
+      if (repeats(it->presence)) {
+        out.fleet.erase(it);  // a repeating object: its splashes before `from` are in the history
+        return {{}, named(c.id) + " splashes again and again (a config's [[drop]]); change the config to remove it"};
+      }
+      if (!end_at(*it, from_s)) out.fleet.erase(it);
+      break;
+    }
+    case wire::VesselAction::drop: {
+      if (!(c.size_m > 0.0 && c.size_m <= kMaxDropSizeM))
+        return {{}, "size " + model::format_value(c.size_m) + " m: must be in (0, " + model::format_value(kMaxDropSizeM) + "]"};
+      if (current) return {{}, named(c.id) + " is already at sea (give the object an id of its own)"};
+      model::VesselTrack object;
+      object.id = c.id;
+      object.hull = {c.size_m, c.size_m, 0.5 * c.size_m};
+      object.points = {{0.0, c.x_m, c.z_m}};
+      object.presence = {from_s, kDropSplashS, 0.0};
+      out.fleet.push_back(object);
+      break;
+    }
+    default:
+      return {{}, "VesselCommand.action: add, course, remove or drop"};
+  }
+  if (std::string error = validate_fleet(out.fleet, rules); !error.empty()) return {{}, error};
+  return out;
+}
+
+}  // namespace ocean::server
