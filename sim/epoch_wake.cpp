@@ -32,6 +32,9 @@ void EpochWake::step(Part& part) {
       poses_.push_back(pose);
     }
   }
+  // The depth in force at t (the region's before every change).
+  auto depth = depths_.upper_bound(t);
+  part.field.set_depth(depth == depths_.begin() ? region_.depth_m : std::prev(depth)->second);
   part.field.step(1.0 / rate_hz_, poses_);
   ++part.reached;
 }
@@ -55,8 +58,18 @@ void EpochWake::advance_to(std::int64_t tick) {
   tick_ = tick;
 }
 
+void EpochWake::set_depth(double depth_m, std::int64_t from) {
+  if (auto it = depths_.find(from); it != depths_.end() && it->second == depth_m) return;
+  depths_[from] = depth_m;
+  restart_after(from);
+}
+
 void EpochWake::set_tracks(std::vector<model::VesselTrack> tracks, std::int64_t from) {
   tracks_ = std::move(tracks);
+  restart_after(from);
+}
+
+void EpochWake::restart_after(std::int64_t from) {
   for (Part& p : parts_)
     if (p.reached > from) p = fresh(p.start);
   if (tick_ > from) {  // the wake at tick_ must be stepped again with the new tracks

@@ -12,6 +12,7 @@
 #include "wake_field.hpp"
 
 #include <cstdint>
+#include <map>
 #include <vector>
 
 namespace ocean::sim {
@@ -35,6 +36,10 @@ class EpochWake {
   // stay; one stepped past it starts again.
   void set_tracks(std::vector<model::VesselTrack> tracks, std::int64_t from);
   const std::vector<model::VesselTrack>& tracks() const { return tracks_; }
+  // The water's depth from tick `from` on (a change of scene), as the codec's recurrence follows
+  // the scene in force at each tick (CODEC.md 7.9): a step from tick t uses the depth in force at
+  // t. Parts stepped past `from` start again.
+  void set_depth(double depth_m, std::int64_t from);
   // The fields whose sum is the wake at the tick last advanced to (one or two).
   std::vector<const WakeField*> fields() const;
 
@@ -49,6 +54,7 @@ class EpochWake {
   };
   void step(Part& part);
   Part fresh(std::int64_t start) const;
+  void restart_after(std::int64_t from);  // parts stepped past `from` start again
 
   WakeRegion region_;
   double origin_x_m_, origin_z_m_;
@@ -57,6 +63,7 @@ class EpochWake {
   std::int64_t epoch_ticks_;
   std::int64_t tick_ = -1;
   std::vector<Part> parts_;  // the previous epoch's (if any), then the current one's
+  std::map<std::int64_t, double> depths_;  // from tick (the region's own depth before the first)
   std::vector<HullPose> poses_;
 };
 

@@ -24,19 +24,33 @@ WakeField::WakeField(const WakeRegion& region)
   kz_.resize(n);
   for (int j = 0; j < n; ++j) kz_[j] = wavenumber(j < n / 2 ? j : j - n, region.size_m);
   const std::size_t modes = static_cast<std::size_t>(n) * columns_;
+  set_frequencies();
+  eta_.assign(modes, {});
+  velocity_.assign(modes, {});
+  forcing_.assign(modes, {});
+  synthesis_ = std::make_unique<C2rTransform>(n, n);
+}
+
+void WakeField::set_frequencies() {
+  const int n = region_.n;
+  const std::size_t modes = static_cast<std::size_t>(n) * columns_;
   omega_.resize(modes);
   gamma_.resize(modes);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < columns_; ++i) {
       const double k = std::hypot(kx_[i], kz_[j]);
       const std::size_t m = static_cast<std::size_t>(j) * columns_ + i;
-      omega_[m] = angular_frequency(k, region.gravity_mps2, region.depth_m);
-      gamma_[m] = region.decay_per_s + 2.0 * region.viscosity_m2ps * k * k;
+      omega_[m] = angular_frequency(k, region_.gravity_mps2, region_.depth_m);
+      gamma_[m] = region_.decay_per_s + 2.0 * region_.viscosity_m2ps * k * k;
     }
-  eta_.assign(modes, {});
-  velocity_.assign(modes, {});
-  forcing_.assign(modes, {});
-  synthesis_ = std::make_unique<C2rTransform>(n, n);
+  step_dt_ = 0.0;  // the propagator follows at the next step
+}
+
+void WakeField::set_depth(double depth_m) {
+  if (depth_m == region_.depth_m) return;
+  if (!(depth_m > 0.0)) throw ParamError(bad_param("wake depth_m", depth_m, "> 0 (infinity: deep water)"));
+  region_.depth_m = depth_m;
+  set_frequencies();
 }
 
 WakeField::~WakeField() = default;

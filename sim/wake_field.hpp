@@ -58,11 +58,15 @@ class WakeField {
   // The height at one point (a sum over the modes: for checks and buoyancy, not for frames).
   double height_at(double x_m, double z_m) const;
 
+  // The water's depth from the next step on (a scene's change of depth): every mode's w(k) follows.
+  void set_depth(double depth_m);
+
   const WakeRegion& region() const { return region_; }
   double time_s() const { return time_s_; }
 
  private:
   void prepare_step(double dt_s);
+  void set_frequencies();
 
   WakeRegion region_;
   int columns_;                  // n / 2 + 1: the half spectrum a real field needs

@@ -24,6 +24,8 @@ void GroundTruth::set_scene(Tick effective_tick, const protocol::SceneParams& sc
   } else {
     scenes_.insert(it, entry(effective_tick, scene));
   }
+  // The wake's waves travel at the new depth from that tick on, as the server's do.
+  if (wake_) wake_->set_depth(scene.depth_m, static_cast<std::int64_t>(effective_tick));
   // Frames from the changed tick on were computed with the old scene.
   for (auto c = cache_.begin(); c != cache_.end();)
     c = (c->first >> 16) >= effective_tick ? cache_.erase(c) : std::next(c);

@@ -276,3 +276,49 @@ TEST_CASE("a fleet changed mid-stream (a vessel command) streams as if it had al
   // The encoder predicts the new fleet as the sim forces it: no corrections after the change.
   CHECK(per_frame < 6.0);
 }
+
+TEST_CASE("the wake follows a change of depth as the decoders' recurrence does", "[wake]") {
+  // The tide goes out at tick 300: 12 m of water from there on (announced ahead). The server's sim
+  // steps the wake with the depth in force at each tick, so the decoder's prediction, which
+  // follows the scene in force, needs no correction; a server (or replica) started after the
+  // change computes the same wake from the schedule.
+  const StreamConfig config = wake_stream(false);
+  const std::vector<model::VesselTrack> vessels = fleet(3);
+  constexpr std::uint64_t kChange = 300;
+  const model::SceneParams deep = calm();
+  model::SceneParams shallow = deep;
+  shallow.depth_m = 12.0;
+  Truth truth(deep, config, vessels);
+  truth.wake.set_depth(shallow.depth_m, static_cast<std::int64_t>(kChange));
+  Truth late(deep, config, vessels);  // a second server, told the schedule from the start
+  late.wake.set_depth(shallow.depth_m, static_cast<std::int64_t>(kChange));
+  Encoder encoder(config);
+  Decoder decoder(config);
+  encoder.set_scene(0, 0, deep);
+  encoder.set_scene(kChange, 1, shallow);
+  decoder.add_scene(0, 0, deep);
+  decoder.add_scene(kChange, 1, shallow);
+  encoder.set_vessels(vessels);
+  decoder.set_vessels(vessels);
+  std::size_t bytes_after = 0, frames_after = 0;
+  StateId previous{};
+  for (std::uint64_t tick = 1; tick <= 500; ++tick) {
+    if (tick == kChange) truth.ocean = sim::Ocean(shallow);  // the sea's own band follows too
+    const sim::Frame f = truth.at(tick, config);
+    encoder.add_truth(tick, wake_view(f));
+    const auto encoded = tick == 1 ? encoder.encode_key(tick) : encoder.encode_delta(tick, previous);
+    previous = encoded->id;
+    for (const Chunk& c : encoded->chunks) REQUIRE(decoder.accept(view(c)) == ChunkError::ok);
+    if (tick > kChange + 1) {
+      for (const Chunk& c : encoded->chunks) bytes_after += c.payload.size();
+      ++frames_after;
+    }
+  }
+  const sim::Frame restarted = late.at(500, config), stepped = truth.at(500, config);
+  const double per_frame = static_cast<double>(bytes_after) / static_cast<double>(frames_after);
+  std::printf("a change of depth at tick 300: %.1f payload bytes a frame after it\n", per_frame);
+  CHECK(per_frame < 6.0);
+  const std::size_t sea = static_cast<std::size_t>(config.grid) * config.grid;
+  CHECK(std::vector<float>(restarted.height.begin() + sea, restarted.height.end()) ==
+        std::vector<float>(stepped.height.begin() + sea, stepped.height.end()));
+}

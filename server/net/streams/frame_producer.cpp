@@ -65,6 +65,8 @@ FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*>
     const sim::WakeRegion region{wake.size_m, n, schedule_.base().gravity_mps2, schedule_.base().depth_m, wake.decay_per_s, 1e-6};
     wake_ = std::make_unique<sim::EpochWake>(region, wake.origin_x_m, wake.origin_z_m, wake.vessels, wake.tick_rate_hz,
                                              sim::wake_epoch_ticks(wake.tick_rate_hz));
+    // The wake's waves travel at the depth of the scene in force at each tick, as the codec's do.
+    for (const ScheduledScene& change : schedule_.changes()) wake_->set_depth(change.scene.depth_m, change.tick);
   }
   // Profiles with the same cascades (desktop and desktop-choppy) share one evaluation, with every
   // channel either streams: the sim's channels are transforms of their own, so each profile's

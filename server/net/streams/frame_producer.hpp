@@ -40,7 +40,10 @@ class FrameProducer {
   // From tick `from` on, this scene replaces the active one (an admin change); it lasts
   // until the schedule reaches its next entry. The scene must pass model::validate.
   // Several may wait (admin changes within one announcement lead), each from its own tick.
-  void override_scene(const model::SceneParams& scene, std::int64_t from) { overrides_[from] = scene; }
+  void override_scene(const model::SceneParams& scene, std::int64_t from) {
+    overrides_[from] = scene;
+    if (wake_) wake_->set_depth(scene.depth_m, from);
+  }
   // A vessel command: the fleet from tick `from` on (its presences agree with the current fleet's
   // before it). Ignored without a wake (the server was started without vessels).
   void set_vessels(std::vector<model::VesselTrack> vessels, std::int64_t from) {
