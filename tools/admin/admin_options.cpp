@@ -11,6 +11,11 @@
 namespace ocean::admin {
 namespace {
 
+constexpr std::string_view kDescription =
+    "ocean-admin: change the scene an ocean-server runs (wind, amplitude, choppiness, spectrum) or steer its vessels "
+    "(add, course, remove, drop an object), or print the scene in force with --show. A change takes effect one "
+    "second (the server's lead) after the server accepts it, on every session of that server only";
+
 constexpr const char* kExitCodes =
     "exit codes: 0 done (the change was announced, or --show printed the scene); 2 usage or config "
     "(bad flag or value, unreadable token file); 3 refused by the server (unauthorized, out_of_range: its "
@@ -51,15 +56,83 @@ bool read_admin_token(const std::string& token_file, const char* env_token, std:
   return true;
 }
 
+// The vessel flags (the server's config must have a [[vessel]] or [[drop]]: its streams then
+// carry a wake), and the VesselCommand they make.
+struct VesselFlags {
+  std::string action, at, hull;
+  std::uint32_t id = 0;
+  double heading = 0.0, speed = 0.0, size = 2.0;
+
+  CLI::Option* add_to(CLI::App& app) {
+    app.add_option("--id", id, "the vessel's or object's id, 0..4294967295");
+    app.add_option("--at", at, "X,Z: where, world metres inside the server's wake square");
+    app.add_option("--hull", hull, "LENGTH,BEAM,DRAFT in metres (default 24,6,1.5)");
+    app.add_option("--heading", heading, "degrees from +x towards +z (default 0)")->check(CLI::Range(-1e6, 1e6));
+    app.add_option("--speed", speed, "m/s, [0, 20] (default 0)")->check(CLI::Range(0.0, 20.0));
+    app.add_option("--size", size, "a dropped object's size, metres, (0, 50] (default 2)")->check(CLI::Range(0.0, 50.0));
+    return app.add_option("--vessel", action, "a vessel command, one second ahead: add (--id, --at, --hull, --heading, "
+                                              "--speed), course (--id, --heading, --speed), remove (--id), drop (an "
+                                              "object: --id, --at, --size)")
+        ->check(CLI::IsMember({"add", "course", "remove", "drop"}));
+  }
+
+  bool command(protocol::ParamChange& change, std::string& error) const {
+    static const std::map<std::string, wire::VesselAction> actions{{"add", wire::VesselAction::add},
+                                                                   {"course", wire::VesselAction::course},
+                                                                   {"remove", wire::VesselAction::remove},
+                                                                   {"drop", wire::VesselAction::drop}};
+    protocol::VesselCommand v;
+    v.action = actions.at(action);  // IsMember checked it
+    v.id = id;
+    v.hull = {24.0, 6.0, 1.5};
+    v.heading_deg = heading;
+    v.speed_mps = speed;
+    v.size_m = size;
+    std::vector<double> xs;
+    if (!hull.empty()) {
+      if (!numbers(hull, 3, xs)) return fail(error, "--hull '" + hull + "': give LENGTH,BEAM,DRAFT in metres, e.g. 24,6,1.5");
+      v.hull = {xs[0], xs[1], xs[2]};
+    }
+    const bool placed = v.action == wire::VesselAction::add || v.action == wire::VesselAction::drop;
+    if (placed && at.empty()) return fail(error, "--vessel " + action + " needs --at X,Z (world metres)");
+    if (!at.empty()) {
+      if (!numbers(at, 2, xs)) return fail(error, "--at '" + at + "': give X,Z in metres, e.g. 40,-60");
+      v.x_m = xs[0];
+      v.z_m = xs[1];
+    }
+    change.vessel = v;
+    return true;
+  }
+
+ private:
+  static bool fail(std::string& error, std::string text) {
+    error = std::move(text);
+    return false;
+  }
+  // `count` comma-separated numbers, nothing else.
+  static bool numbers(const std::string& text, std::size_t count, std::vector<double>& out) {
+    out.clear();
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+      try {
+        std::size_t used = 0;
+        out.push_back(std::stod(item, &used));
+        if (used != item.size()) return false;
+      } catch (const std::exception&) {
+        return false;
+      }
+    }
+    return out.size() == count;
+  }
+};
+
 }  // namespace
 
 AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, const char* env_token) {
   AdminOptionsResult result;
   AdminOptions& o = result.options;
-  CLI::App app{"ocean-admin: change the scene an ocean-server runs (wind, amplitude, choppiness, spectrum) or steer "
-               "its vessels (add, course, remove, drop an object), "
-               "or print the scene in force with --show. A change takes effect one second (the server's lead) "
-               "after the server accepts it, on every session of that server only"};
+  CLI::App app{std::string(kDescription)};
   app.footer(kExitCodes);
   std::string server, token_file, spectrum;
   double wind_speed = 0, wind_dir = 0, amplitude = 0, choppiness = 0;
@@ -75,24 +148,8 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
   auto* ch = app.add_option("--choppiness", choppiness, "horizontal displacement scale, [0, 100]")->check(CLI::Range(0.0, 100.0));
   auto* sp = app.add_option("--spectrum", spectrum, model::join_names(model::spectrum_names(), ", ", " or "))
                  ->check(CLI::IsMember(model::spectrum_names()));
-  // Vessels (the server's config must have a [[vessel]] or [[drop]]: its streams then carry a wake).
-  std::string action, at, hull;
-  std::uint32_t id = 0;
-  double heading = 0.0, speed = 0.0, size = 2.0;
-  const std::map<std::string, wire::VesselAction> actions{{"add", wire::VesselAction::add},
-                                                          {"course", wire::VesselAction::course},
-                                                          {"remove", wire::VesselAction::remove},
-                                                          {"drop", wire::VesselAction::drop}};
-  auto* va = app.add_option("--vessel", action, "a vessel command, one second ahead: add (--id, --at, --hull, --heading, "
-                                                "--speed), course (--id, --heading, --speed), remove (--id), drop (an "
-                                                "object: --id, --at, --size)")
-                 ->check(CLI::IsMember({"add", "course", "remove", "drop"}));
-  app.add_option("--id", id, "the vessel's or object's id, 0..4294967295");
-  app.add_option("--at", at, "X,Z: where, world metres inside the server's wake square");
-  app.add_option("--hull", hull, "LENGTH,BEAM,DRAFT in metres (default 24,6,1.5)");
-  app.add_option("--heading", heading, "degrees from +x towards +z (default 0)")->check(CLI::Range(-1e6, 1e6));
-  app.add_option("--speed", speed, "m/s, [0, 20] (default 0)")->check(CLI::Range(0.0, 20.0));
-  app.add_option("--size", size, "a dropped object's size, metres, (0, 50] (default 2)")->check(CLI::Range(0.0, 50.0));
+  VesselFlags vessel;
+  const CLI::Option* va = vessel.add_to(app);
   app.add_option("--timeout", o.timeout_s, "seconds to wait for the server, [0.1, 600]")->check(CLI::Range(0.1, 600.0));
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
@@ -121,52 +178,7 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
   if (*am) c.amplitude = amplitude;
   if (*ch) c.choppiness = choppiness;
   if (*sp) c.spectrum = scene_wire::to_wire(*model::spectrum_from_name(spectrum));  // IsMember checked it
-  if (*va) {
-    protocol::VesselCommand v;
-    v.action = actions.at(action);
-    v.id = id;
-    v.hull = {24.0, 6.0, 1.5};
-    v.heading_deg = heading;
-    v.speed_mps = speed;
-    v.size_m = size;
-    const auto numbers = [](const std::string& text, std::size_t count, std::vector<double>& out) {
-      out.clear();
-      std::stringstream ss(text);
-      std::string item;
-      while (std::getline(ss, item, ',')) {
-        try {
-          std::size_t used = 0;
-          out.push_back(std::stod(item, &used));
-          if (used != item.size()) return false;
-        } catch (const std::exception&) {
-          return false;
-        }
-      }
-      return out.size() == count;
-    };
-    std::vector<double> xs;
-    if (!hull.empty()) {
-      if (!numbers(hull, 3, xs)) {
-        result.error = "--hull '" + hull + "': give LENGTH,BEAM,DRAFT in metres, e.g. 24,6,1.5";
-        return result;
-      }
-      v.hull = {xs[0], xs[1], xs[2]};
-    }
-    const bool placed = v.action == wire::VesselAction::add || v.action == wire::VesselAction::drop;
-    if (placed && at.empty()) {
-      result.error = "--vessel " + action + " needs --at X,Z (world metres)";
-      return result;
-    }
-    if (!at.empty()) {
-      if (!numbers(at, 2, xs)) {
-        result.error = "--at '" + at + "': give X,Z in metres, e.g. 40,-60";
-        return result;
-      }
-      v.x_m = xs[0];
-      v.z_m = xs[1];
-    }
-    o.change.vessel = v;
-  }
+  if (*va && !vessel.command(o.change, result.error)) return result;
   const bool change = *ws || *wd || *am || *ch || *sp || *va;
   if (o.show == change) {
     result.error = o.show ? "--show prints the scene and changes nothing: leave out the change flags"

@@ -63,6 +63,28 @@ bool SessionCore::token_refused(Session& session, const std::string& token) {
   return true;
 }
 
+// The fleet after an admin's vessel command, or nothing when it is refused (answered here).
+std::optional<std::vector<model::VesselTrack>> SessionCore::fleet_after(Session& session, const protocol::VesselCommand& command,
+                                                                        Tick from) {
+  const auto refused = [&](const std::string& text) {
+    log_limited(spdlog::level::warn, "vessel_command_refused", session.peer(),
+                "vessel command refused session={} peer={} reason=out_of_range: {}", session.id, session.peer(), text);
+    host_.metrics.rejects("out_of_range").inc();
+    send_control(session, protocol::encode(protocol::Error{protocol::Reason::out_of_range,
+                                                           text.substr(0, protocol::kMaxTextBytes)}));
+    return std::nullopt;
+  };
+  if (streams_.empty() || !streams_.front()->config().has_wake())
+    return refused("out_of_range in ParamChange.vessel: this server streams no wake (its config has no [[vessel]] or "
+                   "[[drop]]), so vessels cannot be added live");
+  const WakeLattice& wake = streams_.front()->config().wake;
+  const FleetRules rules{host_.config.wake_origin_x_m, host_.config.wake_origin_z_m, host_.config.wake_size_m,
+                         host_.config.tick_rate_hz, static_cast<std::int64_t>(wake.epoch_ticks)};
+  FleetChange changed = apply_vessel_command(vessels_, command, from, tick_, rules);
+  if (!changed.error.empty()) return refused("out_of_range in ParamChange.vessel: " + changed.error);
+  return std::move(changed.fleet);
+}
+
 void SessionCore::apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now) {
   const Tick from = tick_ + scenes_.lead_ticks();
   model::SceneParams scene = scenes_.in_force(from).scene;
@@ -70,22 +92,8 @@ void SessionCore::apply_param_change(Session& session, const protocol::ParamChan
   // when the same message changes it).
   std::optional<std::vector<model::VesselTrack>> fleet;
   if (change.vessel) {
-    const auto refused = [&](const std::string& text) {
-      log_limited(spdlog::level::warn, "vessel_command_refused", session.peer(),
-                  "vessel command refused session={} peer={} reason=out_of_range: {}", session.id, session.peer(), text);
-      host_.metrics.rejects("out_of_range").inc();
-      send_control(session, protocol::encode(protocol::Error{protocol::Reason::out_of_range,
-                                                             text.substr(0, protocol::kMaxTextBytes)}));
-    };
-    if (streams_.empty() || !streams_.front()->config().has_wake())
-      return refused("out_of_range in ParamChange.vessel: this server streams no wake (its config has no "
-                                     "[[vessel]] or [[drop]]), so vessels cannot be added live");
-    const WakeLattice& wake = streams_.front()->config().wake;
-    const FleetRules rules{host_.config.wake_origin_x_m, host_.config.wake_origin_z_m, host_.config.wake_size_m,
-                           host_.config.tick_rate_hz, static_cast<std::int64_t>(wake.epoch_ticks)};
-    FleetChange changed = apply_vessel_command(vessels_, *change.vessel, from, tick_, rules);
-    if (!changed.error.empty()) return refused("out_of_range in ParamChange.vessel: " + changed.error);
-    fleet = std::move(changed.fleet);
+    fleet = fleet_after(session, *change.vessel, from);
+    if (!fleet) return;  // refused, and answered
   }
   if (change.wind_speed_mps) scene.wind_speed_mps = *change.wind_speed_mps;
   if (change.wind_dir_deg) scene.wind_dir_deg = *change.wind_dir_deg;

@@ -151,6 +151,8 @@ class SessionCore {
   void on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& change, const Instant& now);
   void check_admin_changes(const Instant& now);
   bool token_refused(Session& session, const std::string& token);
+  std::optional<std::vector<model::VesselTrack>> fleet_after(Session& session, const protocol::VesselCommand& command,
+                                                             Tick from);
   void apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now);
   // Ack, KeyframeRequest and Ping mean the same on any transport; `reply` carries the Pong.
   void on_session_message(Session& session, const wire::Message& message, Link& reply, const Instant& now);

@@ -63,6 +63,28 @@ model::VesselTrack sailing(std::uint32_t id, const model::Hull& hull, double x, 
   return v;
 }
 
+// The fleet without what no tick the wake still holds was pressed by: tracks that ended before
+// the epoch before last.
+std::vector<model::VesselTrack> remembered(const std::vector<model::VesselTrack>& fleet, Tick now, const FleetRules& rules) {
+  const auto epoch = static_cast<std::int64_t>(now) / rules.epoch_ticks;
+  const double forgotten_s = static_cast<double>(std::max<std::int64_t>(0, epoch - 2) * rules.epoch_ticks) /
+                             static_cast<double>(rules.tick_rate_hz);
+  std::vector<model::VesselTrack> out;
+  for (const model::VesselTrack& v : fleet)
+    if (!(end_of(v.presence) < forgotten_s)) out.push_back(v);
+  return out;
+}
+
+// A dropped object: a round hull pressing half its size deep for a splash, from from_s.
+model::VesselTrack dropped(const protocol::VesselCommand& c, double from_s) {
+  model::VesselTrack object;
+  object.id = c.id;
+  object.hull = {c.size_m, c.size_m, 0.5 * c.size_m};
+  object.points = {{0.0, c.x_m, c.z_m}};
+  object.presence = {from_s, kDropSplashS, 0.0};
+  return object;
+}
+
 }  // namespace
 
 std::string validate_fleet(const std::vector<model::VesselTrack>& fleet, const FleetRules& rules) {
@@ -87,14 +109,9 @@ std::string validate_fleet(const std::vector<model::VesselTrack>& fleet, const F
 
 FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, const protocol::VesselCommand& c, Tick from,
                                  Tick now, const FleetRules& rules) {
-  FleetChange out;
+  FleetChange out{remembered(fleet, now, rules), {}};
   const double rate = static_cast<double>(rules.tick_rate_hz);
   const double from_s = static_cast<double>(from) / rate, mid_s = (static_cast<double>(from) + 0.5) / rate;
-  // What no tick the wake still holds was pressed by: tracks ended before the epoch before last.
-  const auto epoch = static_cast<std::int64_t>(now) / rules.epoch_ticks;
-  const double forgotten_s = static_cast<double>(std::max<std::int64_t>(0, epoch - 2) * rules.epoch_ticks) / rate;
-  for (const model::VesselTrack& v : fleet)
-    if (!(end_of(v.presence) < forgotten_s)) out.fleet.push_back(v);
   const model::VesselTrack* current = present(out.fleet, c.id, mid_s);
   const auto find = [&](const model::VesselTrack* track) {
     return std::find_if(out.fleet.begin(), out.fleet.end(), [&](const model::VesselTrack& v) { return &v == track; });
@@ -132,12 +149,7 @@ FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, c
       if (!(c.size_m > 0.0 && c.size_m <= kMaxDropSizeM))
         return {{}, "size " + model::format_value(c.size_m) + " m: must be in (0, " + model::format_value(kMaxDropSizeM) + "]"};
       if (current) return {{}, named(c.id) + " is already at sea (give the object an id of its own)"};
-      model::VesselTrack object;
-      object.id = c.id;
-      object.hull = {c.size_m, c.size_m, 0.5 * c.size_m};
-      object.points = {{0.0, c.x_m, c.z_m}};
-      object.presence = {from_s, kDropSplashS, 0.0};
-      out.fleet.push_back(object);
+      out.fleet.push_back(dropped(c, from_s));
       break;
     }
     default:
