@@ -3,8 +3,9 @@
 ocean-server running the harbour fleet, a vessel is added, turned, an object dropped and a
 config vessel removed, each announced a second ahead; every frame the clients decode is checked
 against the load test's own sim, which follows the same commands from the SceneUpdates (0 beyond
-the bound). Commands no vessel could obey are refused with the server's reason (exit 3), and a
-server whose config has no vessels refuses them all: it streams no wake."""
+the bound). Commands no vessel could obey are refused with the server's reason (exit 3); a
+server whose config has no vessels refuses them all (it streams no wake) unless started with
+--wake on."""
 import argparse
 import json
 import os
@@ -91,9 +92,18 @@ def main():
             "--patch", "64", "--admin-token-file", token, "--log-level", "warn"], port)
         try:
             expect("a server without vessels", admin(f"127.0.0.1:{port}", token, "--vessel", "add", "--id", "1", "--at",
-                                                     "0,0"), 3, "streams no wake")
+                                                     "0,0"), 3, "--wake on")
         finally:
             local_server.stop(calm)
+        port = local_server.free_port()
+        empty = local_server.start(args.server_bin, [
+            "--listen", f"127.0.0.1:{port}", "--metrics-listen", "off", "--profiles", "mobile", "--size", "64",
+            "--patch", "64", "--wake", "on", "--admin-token-file", token, "--log-level", "warn"], port)
+        try:
+            expect("an empty sea with --wake on", admin(f"127.0.0.1:{port}", token, "--vessel", "add", "--id", "1", "--at",
+                                                        "0,0", "--speed", "6"), 0)
+        finally:
+            local_server.stop(empty)
 
     for f in failures:
         print("FAIL:", f, file=sys.stderr)

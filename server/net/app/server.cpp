@@ -77,7 +77,7 @@ Server::Server(ServerConfig config)
       schedule_(checked_schedule(config_)),
       producer_(schedule_, offered_profiles(config_),
                 WakeSetup{config_.wake_size_m, config_.wake_origin_x_m, config_.wake_origin_z_m, config_.wake_decay_per_s,
-                          config_.vessels, config_.tick_rate_hz}),
+                          config_.vessels, config_.tick_rate_hz, config_.wake_always}),
       tick_loop_(TickClock(config_.tick_rate_hz, config_.epoch_unix_ms),
                  [this](const TickDecision& decision) { on_tick(decision); }) {
   open_listeners();  // first: an address in use is told before the simulation is built

@@ -265,6 +265,15 @@ const ConfigOption kOptions[] = {
     {"wake-decay", "PER_S", "how fast a wake's waves fade (amplitude e^{-decay t}), in [0.01, 10]", ValueKind::number, false,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.wake_decay_per_s); },
      [](const ServerConfig& c) { return show_number(c.wake_decay_per_s); }},
+    {"wake", "auto|on", "auto: streams carry a wake lattice when the config has a [[vessel]] or [[drop]]; on: always, so "
+                        "that ocean-admin --vessel can put vessels on an empty sea",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) {
+       if (v != "auto" && v != "on") return std::string("must be auto or on, not '") + std::string(v) + "'";
+       c.wake_always = v == "on";
+       return std::string();
+     },
+     [](const ServerConfig& c) { return std::string(c.wake_always ? "on" : "auto"); }},
     {"tick-rate", "HZ", "simulation ticks per second, an integer in 1..240 and a multiple of every offered profile's rate",
      ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.tick_rate_hz); },

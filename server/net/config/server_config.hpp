@@ -53,6 +53,10 @@ struct ServerConfig {
   double wake_size_m = 512.0;
   double wake_origin_x_m = -256.0, wake_origin_z_m = -256.0;
   double wake_decay_per_s = 0.05;
+  // --wake on: streams carry the wake lattice even with no vessel in the config, so that
+  // ocean-admin can put vessels on an empty sea (auto: only when the config has some).
+  bool wake_always = false;
+  bool has_wake() const { return wake_always || !vessels.empty(); }
 
   int tick_rate_hz = 30;
   // Wall-clock time of tick 0: 2026-01-01T00:00:00Z. Not the Unix epoch: the simulation accepts

@@ -76,7 +76,7 @@ std::optional<std::vector<model::VesselTrack>> SessionCore::fleet_after(Session&
   };
   if (streams_.empty() || !streams_.front()->config().has_wake())
     return refused("out_of_range in ParamChange.vessel: this server streams no wake (its config has no [[vessel]] or "
-                   "[[drop]]), so vessels cannot be added live");
+                   "[[drop]]; start it with --wake on to add vessels to an empty sea)");
   const WakeLattice& wake = streams_.front()->config().wake;
   const FleetRules rules{host_.config.wake_origin_x_m, host_.config.wake_origin_z_m, host_.config.wake_size_m,
                          host_.config.tick_rate_hz, static_cast<std::int64_t>(wake.epoch_ticks)};

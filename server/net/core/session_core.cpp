@@ -61,7 +61,7 @@ codec::StreamConfig SessionCore::stream_config(const Profile& profile, const mod
       codec::StreamConfig::from_profile(profile, scene.patch_x_m, scene.patch_z_m, scene.gravity_mps2,
                                         model::wire_depth(scene.depth_m));
   config.tick_rate_hz = static_cast<std::uint16_t>(host_.config.tick_rate_hz);
-  if (!host_.config.vessels.empty())
+  if (host_.config.has_wake())
     config.wake = WakeLattice{profile.wake_grid, host_.config.wake_size_m, host_.config.wake_origin_x_m,
                               host_.config.wake_origin_z_m, host_.config.wake_decay_per_s, 1e-6,
                               static_cast<std::uint32_t>(sim::wake_epoch_ticks(host_.config.tick_rate_hz))};

@@ -58,7 +58,7 @@ FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*>
       profiles_(std::move(profiles)),
       scheduled_scene_(&schedule_.base()),
       pool_(std::make_shared<BufferPool>()) {
-  if (!wake.vessels.empty()) {
+  if (wake.always || !wake.vessels.empty()) {
     // One field fine enough for every profile's lattice; each samples the waves below its Nyquist.
     int n = 16;
     for (const Profile* p : profiles_) n = std::max<int>(n, p->wake_grid);

@@ -23,6 +23,7 @@ struct WakeSetup {
   double decay_per_s = 0.05;
   std::vector<model::VesselTrack> vessels;
   int tick_rate_hz = 30;
+  bool always = false;  // a wake even with no vessels (they may be added live)
 };
 
 class FrameProducer {
