@@ -26,9 +26,7 @@ void GroundTruth::set_scene(Tick effective_tick, const protocol::SceneParams& sc
   }
   // The wake's waves travel at the new depth from that tick on, as the server's do.
   if (wake_) wake_->set_depth(scene.depth_m, static_cast<std::int64_t>(effective_tick));
-  // Frames from the changed tick on were computed with the old scene.
-  for (auto c = cache_.begin(); c != cache_.end();)
-    c = (c->first >> 16) >= effective_tick ? cache_.erase(c) : std::next(c);
+  forget_from(effective_tick);  // frames from the changed tick on were computed with the old scene
 }
 
 GroundTruth::SceneEntry GroundTruth::entry(Tick effective_tick, const protocol::SceneParams& scene) const {
@@ -62,7 +60,11 @@ void GroundTruth::set_wake(const WakeLattice& lattice, std::vector<model::Vessel
 void GroundTruth::set_vessels(std::vector<model::VesselTrack> vessels, Tick from) {
   if (!wake_ || vessels == wake_->tracks()) return;
   wake_->set_tracks(std::move(vessels), static_cast<std::int64_t>(from));
-  std::erase_if(cache_, [from](const auto& entry) { return (entry.first >> 16) >= from; });
+  forget_from(from);
+}
+
+void GroundTruth::forget_from(Tick tick) {
+  std::erase_if(cache_, [tick](const auto& entry) { return (entry.first >> 16) >= tick; });
 }
 
 double GroundTruth::time_of(Tick tick) const {

@@ -58,6 +58,7 @@ class GroundTruth {
   };
   SceneEntry entry(Tick effective_tick, const protocol::SceneParams& scene) const;
   SceneEntry* scene_for(Tick tick);
+  void forget_from(Tick tick);  // cached frames of this tick and later
 
   int rate_hz_;
   bool choppy_;

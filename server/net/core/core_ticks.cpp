@@ -34,8 +34,10 @@ void SessionCore::announce(const std::vector<AnnouncedScene>& scenes, std::optio
         if (stream->config().has_wake()) stream->set_vessels(vessels_, scene.from);
       if (host_.request_vessels) host_.request_vessels(vessels_, static_cast<std::int64_t>(scene.from));
     }
+    // Encoded once for every session (with a fleet it is up to ~50 KB), once more for the requester.
+    const protocol::Bytes broadcast = protocol::encode(scene_update(scene, 0));
     for (const auto& session : sessions_.snapshot())  // a full control queue closes its session
-      send_control(*session, protocol::encode(scene_update(scene, requester == session->id ? request_id : 0)));
+      send_control(*session, requester == session->id ? protocol::encode(scene_update(scene, request_id)) : broadcast);
     spdlog::info("scene {} announced: from tick {} (wind {} m/s towards {} deg, depth {} m)", scene.serial, scene.from,
                  scene.scene.wind_speed_mps, scene.scene.wind_dir_deg, scene.scene.depth_m);
   }

@@ -137,11 +137,9 @@ FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, c
     }
     case wire::VesselAction::remove: {
       if (!current) return {{}, named(c.id) + " is not at sea"};
-      auto it = find(current);
-      if (repeats(it->presence)) {
-        out.fleet.erase(it);  // a repeating object: its splashes before `from` are in the history
+      if (repeats(current->presence))
         return {{}, named(c.id) + " splashes again and again (a config's [[drop]]); change the config to remove it"};
-      }
+      auto it = find(current);
       if (!end_at(*it, from_s)) out.fleet.erase(it);
       break;
     }
