@@ -220,6 +220,7 @@ class Writer {
     text_ << "scene from=" << u.effective_tick << " serial=" << u.serial << " tag=" << (u.serial % 256) << " "
           << scene_fields(u.scene) << "\n";
     decoder_->add_scene(u.effective_tick, static_cast<std::uint8_t>(u.serial), u.scene);
+    if (u.vessels) decoder_->set_vessels(*u.vessels, u.effective_tick);
   }
 
   // The scene model's state of `tick` (before any correction), for checking a scene model alone.
@@ -643,7 +644,9 @@ void mobile_wake(Writer& w) {
   w.comment("pressure forces every advance of the wake's modes (CODEC.md 7.9), and the hollow is corrected.");
   w.comment("Presence (codec version 7, protocol version 3): vessel 2 is removed from K/30 + 0.14 s; object 3");
   w.comment("(3 m round, 1.5 m) at (0, 40) presses for 0.1 s every 0.2 s from K/30: during the steps of ticks");
-  w.comment("K..K+2 and K+6..K+7, not K-3..K-1 (its fmod is negative there) nor K+3..K+5.");
+  w.comment("K..K+2 and K+6..K+7, not K-3..K-1 (its fmod is negative there) nor K+3..K+5. The SceneUpdate");
+  w.comment("at K+5 carries the fleet from K+5 on (SceneUpdate.vessels): the Welcome's and a launch sailing");
+  w.comment("north from (-40, -40) from K+5; a decoder replaces its fleet with it.");
   w.welcome(welcome);
   const StreamConfig& c = w.config();
   REQUIRE(c.has_wake());
@@ -651,11 +654,22 @@ void mobile_wake(Writer& w) {
   protocol::SceneParams scene1 = scene;
   scene1.depth_m = 20.0;
   const Tick change = kKeyTick + 5;
-  const protocol::SceneUpdate update{0, change, scene1, 1};
+  // The SceneUpdate also brings a new fleet (protocol version 3, a vessel command): a launch put in
+  // at (-40, -40) from K+5, sailing north at 5 m/s; the Welcome's tracks are unchanged before it.
+  protocol::SceneUpdate update{0, change, scene1, 1};
+  model::VesselTrack launch;
+  launch.id = 4;
+  launch.hull = {8.0, 3.0, 0.6};
+  const double change_s = static_cast<double>(change) / kTickRateHz;
+  launch.points = {{0.0, -40.0, -40.0}, {change_s, -40.0, -40.0}, {change_s + 20.0, -40.0, 60.0}};
+  launch.presence = {change_s, std::numeric_limits<double>::infinity(), 0.0};
+  update.vessels = welcome.vessels;
+  update.vessels->push_back(launch);
   Encoder enc(c, server_encoder_options());
   enc.set_scene(0, 0, scene);
   enc.set_scene(change, 1, scene1);
   enc.set_vessels(welcome.vessels);
+  enc.set_vessels(*update.vessels, change);
   ReconstructedFrame truth;
   for (Tick t = kKeyTick - 1; t <= kKeyTick + 7; ++t) {
     std::vector<Push> pushed;

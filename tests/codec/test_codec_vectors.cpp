@@ -148,6 +148,8 @@ Counts run_sequence(const std::string& name) {
       const wire::Message& message = verified(bytes);
       REQUIRE(message.body_type() == wire::Body::SceneUpdate);
       update = protocol::read(*message.body_as_SceneUpdate());
+      // A new fleet from its effective tick on (CODEC.md 7.9).
+      if (update->vessels) decoder->set_vessels(*update->vessels, update->effective_tick);
       ++counts.updates;
     } else if (line.kind == "model") {
       REQUIRE(decoder);

@@ -489,3 +489,35 @@ TEST_CASE("Welcome vessels: counts, tracks and presences at their limits are acc
   refused([=](Welcome& w) { w.vessels[0].presence = {-inf, 5.0, 0.0}; }, Reason::out_of_range);
   refused([](Welcome& w) { w.vessels[31].presence.every_s = std::nextafter(1e12, 0.0); }, Reason::out_of_range);
 }
+
+TEST_CASE("vessel commands and fleets in SceneUpdates: malformed ones are refused, naming the field", "[vessels]") {
+  ParamChange change;
+  change.admin_token = "token";
+  change.vessel = VesselCommand{wire::VesselAction::course, 7, {24.0, 6.0, 1.5}, 0.0, 0.0, 90.0, 20.0, 2.0};
+  CHECK(verify_message(encode(change), from_client()).ok);  // a vessel command alone is a change
+  const auto refused = [&](auto edit, Reason reason) {
+    ParamChange c = change;
+    edit(*c.vessel);
+    expect_rejected(encode(c), from_client(), reason);
+  };
+  refused([](VesselCommand& v) { v.action = wire::VesselAction::none; }, Reason::missing_field);
+  refused([](VesselCommand& v) { v.action = static_cast<wire::VesselAction>(9); }, Reason::bad_enum);
+  refused([](VesselCommand& v) { v.speed_mps = std::nan(""); }, Reason::non_finite_value);
+  refused([](VesselCommand& v) { v.x_m = std::numeric_limits<double>::infinity(); }, Reason::non_finite_value);
+  refused([](VesselCommand& v) { v.hull.draft_m = -std::numeric_limits<double>::infinity(); }, Reason::non_finite_value);
+
+  // A SceneUpdate's fleet: the Welcome's limits.
+  ocean::model::VesselTrack v;
+  v.hull = {24.0, 6.0, 1.5};
+  v.points = {{0.0, 10.0, 10.0}};
+  SceneUpdate update{0, 100, sample_scene(), 3};
+  update.vessels = std::vector<ocean::model::VesselTrack>(32, v);
+  CHECK(verify_message(encode(update), from_server()).ok);
+  update.vessels->push_back(v);
+  expect_rejected(encode(update), from_server(), Reason::bad_dimensions);
+  update.vessels = std::vector<ocean::model::VesselTrack>{v};
+  update.vessels->front().presence = {5.0, 0.0, 0.0};
+  expect_rejected(encode(update), from_server(), Reason::out_of_range);
+  update.vessels = std::vector<ocean::model::VesselTrack>{};  // an empty fleet: every vessel gone
+  CHECK(verify_message(encode(update), from_server()).ok);
+}

@@ -420,6 +420,9 @@ waypoints = [[0, 50, 50]]
   refused("id = 1\nlength = 24\nbeam = 6\ndraft = 1\nrepeat = true\nwaypoints = [[0, 0, 0], [10, 10, 0]]\n", {"circuit"});
   CHECK_THAT(load({"--wake-size", "10"}).message, Catch::Contains("--wake-size"));
   CHECK_THAT(load({"--wake-decay", "0"}).message, Catch::Contains("--wake-decay"));
+  CHECK_THAT(load({"--wake", "maybe"}).message, Catch::Contains("must be auto or on"));
+  CHECK(load({"--wake", "on"}).config.has_wake());
+  CHECK_FALSE(load({"--wake", "auto"}).config.has_wake());
 }
 
 // Dropped objects ([[drop]] tables): round hulls pressing for a splash, once or again and again,

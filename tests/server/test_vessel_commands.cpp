@@ -131,6 +131,13 @@ TEST_CASE("commands no vessel could obey are refused, naming why", "[vessels]") 
   refused(add, "speed 21 m/s");
   add.speed_mps = 5.0, add.hull.draft_m = 30.0;
   refused(add, "draft_m = 30 is invalid");
+  // The edges themselves are accepted: 20 m/s, a hull at the square's corner, the largest object.
+  protocol::VesselCommand fastest = command(wire::VesselAction::add, 3);
+  fastest.x_m = -256.0, fastest.z_m = 255.0, fastest.speed_mps = 20.0, fastest.heading_deg = 0.0;
+  CHECK(apply_vessel_command(harbour(), fastest, kAt, kToday, kRules).error == "");
+  protocol::VesselCommand largest = command(wire::VesselAction::drop, 4);
+  largest.x_m = 256.0, largest.z_m = -256.0, largest.size_m = 50.0;
+  CHECK(apply_vessel_command(harbour(), largest, kAt, kToday, kRules).error == "");
   refused(command(wire::VesselAction::course, 5), "vessel 5 is not at sea");
   refused(command(wire::VesselAction::remove, 5), "vessel 5 is not at sea");
   protocol::VesselCommand buoy = command(wire::VesselAction::course, 9);

@@ -1151,11 +1151,11 @@ def read_wake(buf, stream_table):
     if t is None: return None
     w = read_table(buf, t, WAKE)
     return tuple(w[name] for name, _, _ in WAKE)
-def read_vessels(buf, welcome_table):
-    # Welcome slot 12: a vector of tables Vessel {id:uint32, length_m, beam_m, draft_m:double,
+def read_vessels(buf, welcome_table, slot=12):
+    # Welcome slot 12 (SceneUpdate slot 5): a vector of tables Vessel {id:uint32, length_m, beam_m, draft_m:double,
     # repeat:bool, waypoints:[struct Waypoint {t_s, x_m, z_m:double}], present_from_s = -inf,
     # present_for_s = inf, present_every_s = 0:double} (PROTOCOL.md 8).
-    v = table_ref(buf, welcome_table, 12)
+    v = table_ref(buf, welcome_table, slot)
     if v is None: return []
     out = []
     for i in range(u32(buf, v)):
@@ -1239,6 +1239,9 @@ def run(name):
             assert version == 3 and bt == 10
             u = {'scene': read_table(buf, table_ref(buf, body, 2), SCENE), 'effective_tick64': table_field(buf, body, 3, '<Q', 0),
                  'serial': table_field(buf, body, 4, '<I', 0)}
+            if table_ref(buf, body, 5) is not None:  # SceneUpdate.vessels (slot 5): the fleet from its tick on
+                dec.s.vessels = read_vessels(buf, body, 5)
+                dec.s.pressures = {}; dec.parts = {}  # computed again with it: the same integers (7.9)
             last = ('update', u)
         elif kind == 'scene':
             kind0, m = last
