@@ -268,6 +268,22 @@ Problem check(const wire::ParamChange& m, const wire::Message&, std::size_t, wir
   return kOk;
 }
 
+Problem check(const wire::HeightQuery& m, const wire::Message&, std::size_t, wire::Transport) {
+  if (!m.admin_token() || m.admin_token()->size() == 0) return fail(Reason::missing_field, "HeightQuery.admin_token", "present");
+  if (auto p = text(m.admin_token(), kMaxAdminTokenBytes, "HeightQuery.admin_token", "UTF-8, at most 128 bytes")) return p;
+  if (!m.points() || m.points()->size() == 0) return fail(Reason::missing_field, "HeightQuery.points", "at least one point");
+  if (m.points()->size() > kMaxQueryPoints) return fail(Reason::oversized, "HeightQuery.points", "at most 2048 points");
+  for (const wire::QueryPoint* p : *m.points())
+    if (!std::isfinite(p->x_m()) || !std::isfinite(p->z_m()))
+      return fail(Reason::non_finite_value, "HeightQuery.points", "finite coordinates");
+  return kOk;
+}
+
+Problem check(const wire::HeightAnswer& m, const wire::Message&, std::size_t, wire::Transport) {
+  if (m.samples() && m.samples()->size() > kMaxQueryPoints) return fail(Reason::oversized, "HeightAnswer.samples", "at most 2048 samples");
+  return kOk;
+}
+
 Problem check(const wire::SceneUpdate& m, const wire::Message&, std::size_t, wire::Transport) {
   if (!m.scene()) return fail(Reason::missing_field, "SceneUpdate.scene", "present");
   if (m.vessels())
@@ -320,6 +336,8 @@ Problem check_body(const wire::Message& message, std::size_t size, wire::Transpo
     case wire::Body::Ping: return check_as<wire::Ping>(message, size, transport);
     case wire::Body::Pong: return check_as<wire::Pong>(message, size, transport);
     case wire::Body::FrameData: return check_as<wire::FrameData>(message, size, transport);
+    case wire::Body::HeightQuery: return check_as<wire::HeightQuery>(message, size, transport);
+    case wire::Body::HeightAnswer: return check_as<wire::HeightAnswer>(message, size, transport);
     case wire::Body::NONE: break;
   }
   return fail(Reason::unknown_message_type, "Message.body_type", "a type defined in ocean.fbs");

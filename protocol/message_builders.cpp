@@ -270,6 +270,29 @@ Bytes encode(const Pong& m) {
   return finish(fbb, wire::Body::Pong, b.Finish());
 }
 
+Bytes encode(const HeightQuery& m) {
+  FlatBufferBuilder fbb(128 + m.points.size() * sizeof(wire::QueryPoint));
+  const auto token = string_of(fbb, m.admin_token);
+  const auto points = fbb.CreateVectorOfStructs(m.points);
+  wire::HeightQueryBuilder b(fbb);
+  b.add_admin_token(token);
+  b.add_request_id(m.request_id);
+  b.add_profile_id(m.profile_id);
+  b.add_points(points);
+  return finish(fbb, wire::Body::HeightQuery, b.Finish());
+}
+
+Bytes encode(const HeightAnswer& m) {
+  FlatBufferBuilder fbb(128 + m.samples.size() * sizeof(wire::SurfaceSample));
+  const auto samples = fbb.CreateVectorOfStructs(m.samples);
+  wire::HeightAnswerBuilder b(fbb);
+  b.add_request_id(m.request_id);
+  b.add_tick64(m.tick);
+  b.add_profile_id(m.profile_id);
+  b.add_samples(samples);
+  return finish(fbb, wire::Body::HeightAnswer, b.Finish());
+}
+
 Bytes encode(const AnyMessage& message) {
   return std::visit([](const auto& m) { return encode(m); }, message);
 }

@@ -24,6 +24,8 @@ Bytes encode(const Error& message);
 Bytes encode(const Bye& message);
 Bytes encode(const Ping& message);
 Bytes encode(const Pong& message);
+Bytes encode(const HeightQuery& message);
+Bytes encode(const HeightAnswer& message);
 Bytes encode(const FrameData& message);  // frames: a block of frame_records.hpp
 Bytes encode(const AnyMessage& message);
 

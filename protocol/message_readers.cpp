@@ -149,6 +149,20 @@ Pong read(const wire::Pong& m) {
   return Pong{m.seq(), m.client_time_us(), m.server_tick64(), m.server_time_unix_ms()};
 }
 
+HeightQuery read(const wire::HeightQuery& m) {
+  HeightQuery out{string_of(m.admin_token()), m.request_id(), m.profile_id(), {}};
+  if (m.points())
+    for (const wire::QueryPoint* p : *m.points()) out.points.push_back(*p);
+  return out;
+}
+
+HeightAnswer read(const wire::HeightAnswer& m) {
+  HeightAnswer out{m.request_id(), m.tick64(), m.profile_id(), {}};
+  if (m.samples())
+    for (const wire::SurfaceSample* s : *m.samples()) out.samples.push_back(*s);
+  return out;
+}
+
 AnyMessage decode(const wire::Message& message) {
   switch (message.body_type()) {
     case wire::Body::Hello: return read(*message.body_as_Hello());
@@ -165,6 +179,8 @@ AnyMessage decode(const wire::Message& message) {
     case wire::Body::Ping: return read(*message.body_as_Ping());
     case wire::Body::Pong: return read(*message.body_as_Pong());
     case wire::Body::FrameData: return read(*message.body_as_FrameData());
+    case wire::Body::HeightQuery: return read(*message.body_as_HeightQuery());
+    case wire::Body::HeightAnswer: return read(*message.body_as_HeightAnswer());
     case wire::Body::FrameChunk:   // version 1 only: verification refuses them
     case wire::Body::FrameBundle:
     case wire::Body::NONE: break;

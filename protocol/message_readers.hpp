@@ -27,5 +27,7 @@ Bye read(const wire::Bye& message);
 Ping read(const wire::Ping& message);
 Pong read(const wire::Pong& message);
 FrameData read(const wire::FrameData& message);
+HeightQuery read(const wire::HeightQuery& message);
+HeightAnswer read(const wire::HeightAnswer& message);
 
 }  // namespace ocean::protocol

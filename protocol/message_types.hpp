@@ -7,6 +7,7 @@
 #include "common/wake_lattice.hpp"
 #include "vessel_track.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -165,9 +166,39 @@ struct Pong {
   bool operator==(const Pong&) const = default;
 };
 
+// The sea at a batch of world points (version 4, admin only): the server answers each point of
+// the stream of profile_id (0: its first offered profile) at its newest tick.
+struct HeightQuery {
+  std::string admin_token;
+  std::uint32_t request_id = 0;
+  std::uint8_t profile_id = 0;
+  std::vector<wire::QueryPoint> points;
+  bool operator==(const HeightQuery& o) const {
+    return admin_token == o.admin_token && request_id == o.request_id && profile_id == o.profile_id &&
+           std::equal(points.begin(), points.end(), o.points.begin(), o.points.end(), [](const auto& a, const auto& b) {
+             return a.x_m() == b.x_m() && a.z_m() == b.z_m();
+           });
+  }
+};
+
+struct HeightAnswer {
+  std::uint32_t request_id = 0;
+  Tick tick = 0;
+  std::uint8_t profile_id = 0;
+  std::vector<wire::SurfaceSample> samples;  // one per point of the query, in its order
+  bool operator==(const HeightAnswer& o) const {
+    return request_id == o.request_id && tick == o.tick && profile_id == o.profile_id &&
+           std::equal(samples.begin(), samples.end(), o.samples.begin(), o.samples.end(), [](const auto& a, const auto& b) {
+             return a.height_m() == b.height_m() && a.normal_x() == b.normal_x() && a.normal_y() == b.normal_y() &&
+                    a.normal_z() == b.normal_z() && a.vertical_velocity_mps() == b.vertical_velocity_mps();
+           });
+  }
+};
+
 // Any one message, as decode() returns it.
 // (FrameChunk and FrameBundle are version 1 only: a version-2 peer refuses them.)
 using AnyMessage = std::variant<Hello, Welcome, UdpHello, UdpReady, Ack, KeyframeRequest, SetTransport,
-                                ParamChange, SceneUpdate, Error, Bye, Ping, Pong, FrameData>;
+                                ParamChange, SceneUpdate, Error, Bye, Ping, Pong, FrameData, HeightQuery,
+                                HeightAnswer>;
 
 }  // namespace ocean::protocol

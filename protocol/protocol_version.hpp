@@ -6,7 +6,7 @@
 
 namespace ocean::protocol {
 
-inline constexpr std::uint16_t kProtocolVersion = 3;
+inline constexpr std::uint16_t kProtocolVersion = 4;
 
 // The FlatBuffers file identifier of ocean.fbs; bytes 8..11 of every size-prefixed message.
 inline constexpr char kFileIdentifier[] = "OCNP";

@@ -9,6 +9,9 @@
 namespace ocean::protocol {
 namespace {
 
+static_assert(kProtocolVersion < 10, "kVersionText below holds one digit");
+constexpr char kVersionText[] = {static_cast<char>('0' + kProtocolVersion), '\0'};
+
 Verified reject(Reason reason, std::string_view field, std::string_view rule) {
   Verified result;
   result.reason = reason;
@@ -46,6 +49,7 @@ bool may_send(Sender sender, wire::Body type) {
     case wire::Body::KeyframeRequest:
     case wire::Body::SetTransport:
     case wire::Body::ParamChange:
+    case wire::Body::HeightQuery:
     case wire::Body::Ping:
       return sender == Sender::client;
     case wire::Body::Welcome:
@@ -53,6 +57,7 @@ bool may_send(Sender sender, wire::Body type) {
     case wire::Body::FrameData:
     case wire::Body::SceneUpdate:
     case wire::Body::Pong:
+    case wire::Body::HeightAnswer:
       return sender == Sender::server;
     case wire::Body::Error:
     case wire::Body::Bye:
@@ -91,7 +96,7 @@ Verified verify_message(std::span<const std::uint8_t> bytes, const VerifyOptions
 
   const wire::Message* message = wire::GetSizePrefixedMessage(bytes.data());
   if (message->version() != kProtocolVersion)
-    return reject(Reason::unknown_version, "Message.version", "2");
+    return reject(Reason::unknown_version, "Message.version", kVersionText);
   const wire::Body type = message->body_type();
   if (type == wire::Body::NONE || static_cast<std::uint8_t>(type) > static_cast<std::uint8_t>(wire::Body::MAX))
     return reject(Reason::unknown_message_type, "Message.body_type", "a type defined in ocean.fbs");

@@ -51,6 +51,8 @@ inline constexpr std::size_t kMaxOfferedProfiles = 16;
 // Welcome.vessels (PROTOCOL.md 8): at most this many, each of at most kMaxWaypoints points.
 inline constexpr std::size_t kMaxVessels = 32;
 inline constexpr std::size_t kMaxWaypoints = 64;
+// HeightQuery.points (PROTOCOL.md 8): the answer, 20 bytes a point, fits the default message size.
+inline constexpr std::size_t kMaxQueryPoints = 2048;
 inline constexpr std::size_t kMaxClientNameBytes = 64;
 inline constexpr std::size_t kMaxAdminTokenBytes = 128;
 inline constexpr std::size_t kMaxTextBytes = 256;

@@ -1,6 +1,7 @@
 // SurfaceQuery: the height and normal of the water a client decoded, at any world point - against
 // waves written here whose surface is known in closed form: a plain wave, the wake's square, and a
 // choppy (Gerstner) wave whose water drawn at x came from elsewhere.
+#include "frame_channels.hpp"
 #include "surface_query.hpp"
 
 #include <catch2/catch.hpp>
@@ -10,7 +11,7 @@
 
 using namespace ocean;
 using ocean::client::FrameChannels;
-using ocean::client::SurfaceQuery;
+using ocean::codec::SurfaceQuery;
 using std::numbers::pi;
 
 namespace {

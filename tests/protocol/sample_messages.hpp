@@ -114,6 +114,10 @@ inline std::vector<Sample> all_samples() {
       {Ping{session, cookie, 42, 123'456'789'012ull}, Sender::client},
       {Pong{42, 123'456'789'012ull, 5'000'000'124ull, 1'763'700'033'366}, Sender::server},
       {sample_frame_data(), Sender::server},
+      {HeightQuery{"s3cret", 12, 3, {wire::QueryPoint(10.5, -20.25), wire::QueryPoint(-1e4, 3e3)}}, Sender::client},
+      {HeightAnswer{12, 5'000'000'031ull, 3,
+                    {wire::SurfaceSample(0.75f, -0.1f, 0.99f, 0.05f, -0.3f), wire::SurfaceSample(-1.5f, 0.f, 1.f, 0.f, 0.f)}},
+       Sender::server},
   };
 }
 

@@ -44,6 +44,7 @@ class SessionTestClient {
     tcp_.open(asio::ip::tcp::v4());
     if (receive_buffer_bytes > 0) tcp_.set_option(asio::socket_base::receive_buffer_size(receive_buffer_bytes));
     tcp_.connect({asio::ip::make_address("127.0.0.1"), tcp_port});
+    tcp_.set_option(asio::ip::tcp::no_delay(true));  // as the client library's: no Nagle wait on small requests
     if (websocket_) upgrade(tcp_port, *websocket_origin);
     tcp_.non_blocking(true);
     udp_.open(asio::ip::udp::v4());
@@ -127,6 +128,10 @@ class SessionTestClient {
 
   // Every complete tick's reconstruction, as the decoder showed it when it completed.
   std::map<Tick, std::vector<float>> completed_heights;
+  bool keep_frames = false;  // then every channel too
+  std::map<Tick, codec::ReconstructedFrame> completed_frames;
+  const codec::StreamConfig& stream_config() const { return config_; }
+  std::vector<proto::HeightAnswer> height_answers;
   std::optional<proto::Welcome> welcome;
   std::vector<proto::Error> errors;
   std::vector<proto::Bye> byes;
@@ -159,6 +164,7 @@ class SessionTestClient {
       options.max_payload = proto::kMaxChunkPayloadUdp;
       decoder_ = std::make_unique<codec::Decoder>(config_, options);
       decoder_->add_scene(0, static_cast<std::uint8_t>(w->scene_serial), w->scene);
+      if (config_.has_wake()) decoder_->set_vessels(w->vessels);
     } else if (const auto* data = std::get_if<proto::FrameData>(&message)) {
       on_frames(data->frames, transport);
     } else if (std::get_if<proto::UdpReady>(&message)) {
@@ -171,6 +177,9 @@ class SessionTestClient {
       scene_updates.push_back(*u);
       if (decoder_)  // the stream goes on: the decoder switches scene at the update's tick
         decoder_->add_scene(u->effective_tick, static_cast<std::uint8_t>(u->serial), u->scene);
+      if (decoder_ && u->vessels && config_.has_wake()) decoder_->set_vessels(*u->vessels, u->effective_tick);
+    } else if (const auto* a = std::get_if<proto::HeightAnswer>(&message)) {
+      height_answers.push_back(*a);
     }
   }
 
@@ -198,7 +207,10 @@ class SessionTestClient {
     if (!decoder_->is_complete(tick) || completed_heights.count(tick)) return;
     if (record.key) key_ticks.push_back(tick);
     const codec::ReconstructedFrame* shown = decoder_->latest();
-    if (shown && shown->tick == tick && shown->complete) completed_heights[tick] = shown->height;
+    if (shown && shown->tick == tick && shown->complete) {
+      completed_heights[tick] = shown->height;
+      if (keep_frames) completed_frames[tick] = *shown;
+    }
     const std::vector<Tick> ticks = decoder_->complete_ticks();
     const auto window = proto::ack_window(ticks);
     if (!window || !welcome || !send_acks) return;

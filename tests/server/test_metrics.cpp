@@ -208,7 +208,7 @@ TEST_CASE("server metrics register the documented families", "[metrics]") {
     if (sample.name == "ocean_build_info") build = &sample;
   REQUIRE(build);
   CHECK(build->value == 1.0);
-  CHECK(build->labels.at("protocol") == "3");
+  CHECK(build->labels.at("protocol") == "4");
   CHECK(build->labels.at("codec") == "7");
   CHECK(!build->labels.at("version").empty());
 }

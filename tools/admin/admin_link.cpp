@@ -49,6 +49,7 @@ bool AdminLink::connect(const client::ServerEndpoint& server, std::string& error
     error = "cannot connect to " + name + ": " + ec.message();
     return false;
   }
+  socket_.set_option(asio::ip::tcp::no_delay(true), ec);  // a repeated query must not wait for Nagle
   return true;
 }
 

@@ -1,6 +1,7 @@
 // ocean-admin: changes the scene one ocean-server runs, or prints the scene in force.
 //   ocean-admin --server 127.0.0.1:7700 --token-file ./admin-token --wind-speed 18 --spectrum jonswap
 //   ocean-admin --server 127.0.0.1:7700 --show
+//   ocean-admin --server 127.0.0.1:7700 --token-file ./admin-token query --at 10,20 --at 30,-5
 // Exit codes (admin_options.hpp): 0 ok, 2 usage/config, 3 refused by the server, 4 unreachable.
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include "admin_options.hpp"
 #include "common/json_writer.hpp"
 #include "message_builders.hpp"
+#include "query_run.hpp"
 #include "scene_json.hpp"
 
 using namespace ocean;
@@ -104,7 +106,8 @@ int main(int argc, char** argv) {
   if (!parsed.error.empty()) return fail(kExitUsage, parsed.error);
   const AdminOptions& o = parsed.options;
 
-  AdminLink link(o.timeout_s);
+  // A repeated query runs for its queries' time, then the timeout as for one exchange.
+  AdminLink link(o.timeout_s + (o.query ? (o.query_repeat - 1) / o.query_rate_hz : 0.0));
   std::string error;
   if (!link.connect(o.server, error)) return fail(kExitUnreachable, error);
   protocol::Hello hello;
@@ -117,5 +120,6 @@ int main(int argc, char** argv) {
   const auto* welcome = std::get_if<protocol::Welcome>(&*first);
   if (!welcome) return fail(kExitUnreachable, "the server answered the Hello with something other than a Welcome");
   link.set_max_message_bytes(welcome->max_message_bytes);
+  if (o.query) return run_query(link, o);
   return o.show ? show(link, *welcome) : change(link, o, *welcome);
 }

@@ -5,6 +5,8 @@
 #include <map>
 #include <sstream>
 
+#include "number_list.hpp"
+#include "query_flags.hpp"
 #include "scene_names.hpp"
 #include "scene_wire.hpp"
 
@@ -90,13 +92,13 @@ struct VesselFlags {
     v.size_m = size;
     std::vector<double> xs;
     if (!hull.empty()) {
-      if (!numbers(hull, 3, xs)) return fail(error, "--hull '" + hull + "': give LENGTH,BEAM,DRAFT in metres, e.g. 24,6,1.5");
+      if (!parse_numbers(hull, 3, xs)) return fail(error, "--hull '" + hull + "': give LENGTH,BEAM,DRAFT in metres, e.g. 24,6,1.5");
       v.hull = {xs[0], xs[1], xs[2]};
     }
     const bool placed = v.action == wire::VesselAction::add || v.action == wire::VesselAction::drop;
     if (placed && at.empty()) return fail(error, "--vessel " + action + " needs --at X,Z (world metres)");
     if (!at.empty()) {
-      if (!numbers(at, 2, xs)) return fail(error, "--at '" + at + "': give X,Z in metres, e.g. 40,-60");
+      if (!parse_numbers(at, 2, xs)) return fail(error, "--at '" + at + "': give X,Z in metres, e.g. 40,-60");
       v.x_m = xs[0];
       v.z_m = xs[1];
     }
@@ -108,22 +110,6 @@ struct VesselFlags {
   static bool fail(std::string& error, std::string text) {
     error = std::move(text);
     return false;
-  }
-  // `count` comma-separated numbers, nothing else.
-  static bool numbers(const std::string& text, std::size_t count, std::vector<double>& out) {
-    out.clear();
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-      try {
-        std::size_t used = 0;
-        out.push_back(std::stod(item, &used));
-        if (used != item.size()) return false;
-      } catch (const std::exception&) {
-        return false;
-      }
-    }
-    return out.size() == count;
   }
 };
 
@@ -150,6 +136,8 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
                  ->check(CLI::IsMember(model::spectrum_names()));
   VesselFlags vessel;
   const CLI::Option* va = vessel.add_to(app);
+  QueryFlags query;
+  CLI::App* query_command = query.add_to(app);
   app.add_option("--timeout", o.timeout_s, "seconds to wait for the server, [0.1, 600]")->check(CLI::Range(0.1, 600.0));
 
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
@@ -180,10 +168,19 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
   if (*sp) c.spectrum = scene_wire::to_wire(*model::spectrum_from_name(spectrum));  // IsMember checked it
   if (*va && !vessel.command(o.change, result.error)) return result;
   const bool change = *ws || *wd || *am || *ch || *sp || *va;
+  if (query_command->parsed()) {
+    if (change || o.show) {
+      result.error = "query asks and changes nothing: leave out --show and the change flags";
+      return result;
+    }
+    if (!query.read(o, result.error)) return result;
+    read_admin_token(token_file, env_token, o.query->admin_token, result.error);
+    return result;
+  }
   if (o.show == change) {
     result.error = o.show ? "--show prints the scene and changes nothing: leave out the change flags"
                           : "nothing to do: give --show, or at least one of --wind-speed, --wind-dir, "
-                            "--amplitude, --choppiness, --spectrum, --vessel";
+                            "--amplitude, --choppiness, --spectrum, --vessel, or the query command";
     return result;
   }
   if (!o.show) read_admin_token(token_file, env_token, c.admin_token, result.error);

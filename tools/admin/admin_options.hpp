@@ -2,6 +2,7 @@
 // exits; an error names the flag and what it accepts.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,11 @@ struct AdminOptions {
   // (absent = unchanged); the token from --token-file, else $OCEAN_ADMIN_TOKEN. request_id is the
   // caller's.
   protocol::ParamChange change;
+  // `ocean-admin query`: the sea at points (HeightQuery), asked `query_repeat` times at
+  // `query_rate_hz` (the token as above).
+  std::optional<protocol::HeightQuery> query;
+  int query_repeat = 1;
+  double query_rate_hz = 30.0;
 };
 
 struct AdminOptionsResult {

@@ -36,6 +36,7 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       frames_skipped_bandwidth(registry.counter("ocean_frames_skipped_bandwidth_total",
                                                 "Frames skipped to stay within a client's announced bandwidth.")),
       param_changes(registry.counter("ocean_param_changes_total", "Admin parameter changes accepted.")),
+      height_queries(registry.counter("ocean_height_queries_total", "Admin HeightQueries answered.")),
       send_queue_max_bytes(registry.gauge("ocean_send_queue_max_bytes",
                                           "Largest TCP send queue of any client at the last tick, bytes (bounded).")),
       bundled_copies(registry.counter("ocean_udp_bundled_copies_total",

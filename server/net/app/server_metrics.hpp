@@ -30,6 +30,7 @@ class ServerMetrics {
   Counter& send_queue_drops; // frames not queued because a client's send queue was full
   Counter& frames_skipped_bandwidth;  // frames skipped to stay within a client's bandwidth_bps
   Counter& param_changes;    // admin ParamChanges accepted
+  Counter& height_queries;   // admin HeightQueries answered
   Gauge& send_queue_max_bytes;   // max over sessions of queued TCP bytes, per tick
   Counter& bundled_copies;   // earlier frames re-sent inside FrameBundles
   Counter& root_merges;      // key roots merged into a newer key (beyond the profile's root cap)

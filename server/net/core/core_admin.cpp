@@ -39,27 +39,31 @@ void SessionCore::check_admin_changes(const Instant& now) {
       continue;
     }
     if (!token_checks_.try_take(1, now.monotonic_s)) return;
-    const protocol::ParamChange change = std::move(admin_queue_.front().change);
+    const auto request = std::move(admin_queue_.front().request);
     admin_queue_.pop_front();
     session->change_waiting = false;
-    if (!token_refused(*session, change.admin_token)) apply_param_change(*session, change, now);
+    if (const auto* change = std::get_if<protocol::ParamChange>(&request)) {
+      if (!token_refused(*session, change->admin_token, "ParamChange")) apply_param_change(*session, *change, now);
+    } else if (const auto* query = std::get_if<protocol::HeightQuery>(&request)) {
+      if (!token_refused(*session, query->admin_token, "HeightQuery")) answer_height_query(*session, *query, now);
+    }
   }
 }
 
 // True when the token is refused (answered, and the connection closed after a few guesses).
-bool SessionCore::token_refused(Session& session, const std::string& token) {
-  if (same_token(token, host_.config.admin_token)) return false;
+bool SessionCore::token_refused(Session& session, const std::string& token, std::string_view message) {
+  if (same_token(token, host_.config.admin_token)) return !(session.admin_proven = true);
   if (++session.token_failures >= options_.token_failures_per_connection) {
     refuse(session, protocol::Reason::unauthorized,
-           "unauthorized in ParamChange.admin_token: too many wrong tokens; closing", "token_guessing");
+           fmt::format("unauthorized in {}.admin_token: too many wrong tokens; closing", message), "token_guessing");
     return true;
   }
-  log_limited(spdlog::level::warn, "unauthorized", session.peer(), "param_change refused session={} peer={} reason=unauthorized",
-              session.id, session.peer());
+  log_limited(spdlog::level::warn, "unauthorized", session.peer(), "{} refused session={} peer={} reason=unauthorized",
+              message, session.id, session.peer());
   host_.metrics.rejects("unauthorized").inc();
   send_control(session, protocol::encode(protocol::Error{
                             protocol::Reason::unauthorized,
-                            "unauthorized in ParamChange.admin_token: expected the server's admin token"}));
+                            fmt::format("unauthorized in {}.admin_token: expected the server's admin token", message)}));
   return true;
 }
 

@@ -60,6 +60,7 @@ void SessionCore::add_truth(ProfileStream& stream, const sim::Frame& frame) {
 void SessionCore::on_frames(const std::shared_ptr<const TickFrames>& frames, const Instant& now) {
   if (stopping_) return;
   tick_ = static_cast<Tick>(frames->tick);
+  previous_frames_ = std::exchange(newest_frames_, frames);
   check_admin_changes(now);  // token checks and changes waiting for the admin budget
   announce(scenes_.announce(tick_));
   scenes_.forget_before(tick_ > protocol::kMaxFrameLag ? tick_ - protocol::kMaxFrameLag : 0);

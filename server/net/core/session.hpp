@@ -40,7 +40,10 @@ struct Session {
   bool ending = false;                      // Bye or Error sent, closing after a flush
   bool admitted = false;                    // counted by Admission (its address's connections)
   int token_failures = 0;                   // ParamChanges with a wrong admin token
-  bool change_waiting = false;              // its ParamChange waits in the admin queue
+  bool change_waiting = false;              // its ParamChange or HeightQuery waits in the admin queue
+  bool admin_proven = false;                // it sent the right admin token once
+  TokenBucket height_queries{0.0, 0.0, 0.0};  // HeightQuery rate (SessionCoreOptions), set at the first
+  TokenBucket query_refusals{0.0, 0.0, 0.0};  // refusals it may ignore (as fast), before it is closed
   BaselineTracker baselines;
   std::deque<RecentFrame> recent_udp;       // the last kMaxUdpRedundancy single-chunk UDP frames
   std::uint64_t tcp_frames_mark = 0;        // link->enqueued_total() after the last frame queued on it

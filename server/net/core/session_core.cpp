@@ -32,6 +32,7 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
               host_.config.tick_rate_hz, 0.0),
       token_checks_(options.token_checks_per_s, options.token_check_burst, 0.0),
       scene_changes_(options.scene_changes_per_s, options.scene_change_burst, 0.0),
+      query_points_(options.query_points_per_s, options.query_point_burst, 0.0),
       vessels_(host_.config.vessels) {
   for (const std::string& name : host_.config.profiles) {
     const Profile* profile = find_profile(std::string_view(name));
@@ -216,6 +217,8 @@ void SessionCore::on_message(const std::shared_ptr<Session>& session, std::span<
       return update_client_gauges();
     case wire::Body::ParamChange:
       return on_param_change(session, *message.body_as_ParamChange(), now);
+    case wire::Body::HeightQuery:
+      return on_height_query(session, *message.body_as_HeightQuery(), now);
     case wire::Body::Bye:
       return session->link->close("client_bye");
     default:

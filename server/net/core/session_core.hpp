@@ -32,6 +32,7 @@
 #include <optional>
 #include <span>
 #include <unordered_map>
+#include <variant>
 #include <vector>
 
 namespace ocean::server {
@@ -75,6 +76,13 @@ struct SessionCoreOptions {
   double token_check_burst = 10.0;
   double scene_changes_per_s = 1.0;
   double scene_change_burst = 4.0;
+  // HeightQuery (PROTOCOL.md 8): answered per connection at most this often (and burst); refused
+  // beyond, and a connection refused as often again (it ignores the waits) is closed.
+  // Points answered per second over every connection (and burst): about 0.1 us each on one core.
+  double height_queries_per_s = 60.0;
+  double height_query_burst = 30.0;
+  double query_points_per_s = 1'000'000.0;
+  double query_point_burst = 200'000.0;
 };
 
 // What the core needs from the server around it; none of it a socket or a clock.
@@ -150,10 +158,15 @@ class SessionCore {
   // first come first served, applied at the change rate.
   void on_param_change(const std::shared_ptr<Session>& session, const wire::ParamChange& change, const Instant& now);
   void check_admin_changes(const Instant& now);
-  bool token_refused(Session& session, const std::string& token);
+  bool token_refused(Session& session, const std::string& token, std::string_view message);
   std::optional<std::vector<model::VesselTrack>> fleet_after(Session& session, const protocol::VesselCommand& command,
                                                              Tick from);
   void apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now);
+  // Admin HeightQuery (core_queries.cpp): a connection's first right token passes the admin queue,
+  // later queries with it are answered at once, at the query rate, from the newest tick's frames.
+  void on_height_query(const std::shared_ptr<Session>& session, const wire::HeightQuery& query, const Instant& now);
+  void answer_height_query(Session& session, const protocol::HeightQuery& query, const Instant& now);
+  bool query_rate_refused(Session& session, std::size_t points, const Instant& now);
   // Ack, KeyframeRequest and Ping mean the same on any transport; `reply` carries the Pong.
   void on_session_message(Session& session, const wire::Message& message, Link& reply, const Instant& now);
   void on_udp_hello(Session& session, const wire::Message& message, std::size_t datagram_bytes, bool proven,
@@ -222,11 +235,14 @@ class SessionCore {
   KeyingPolicy keying_;
   struct PendingChange {
     std::weak_ptr<Session> session;
-    protocol::ParamChange change;
+    std::variant<protocol::ParamChange, protocol::HeightQuery> request;
   };
   std::deque<PendingChange> admin_queue_;  // one per connection at most, oldest first
   TokenBucket token_checks_;               // admin tokens looked at, all connections together
   TokenBucket scene_changes_;              // admin changes applied
+  TokenBucket query_points_;               // HeightQuery points answered, all connections together
+  // The newest tick's frames and the one before (a HeightQuery's heights and their rate of change).
+  std::shared_ptr<const TickFrames> newest_frames_, previous_frames_;
   std::vector<model::VesselTrack> vessels_;  // the fleet, as the newest announcement leaves it
   std::vector<const ProfileStream*> roots_full_;
   std::uint64_t streams_released_ = 0;  // this key tick: no new root, joiners wait

@@ -1204,7 +1204,7 @@ def run(name):
     for kind, f in lines:
         if kind == 'welcome':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
-            assert version == 3 and bt == 2, (version, bt)
+            assert version == 4 and bt == 2, (version, bt)
             w = {'stream': read_table(buf, table_ref(buf, body, 1), STREAM), 'cascades': read_cascades(buf, table_ref(buf, body, 1)),
                  'wake': read_wake(buf, table_ref(buf, body, 1)), 'vessels': read_vessels(buf, body), 'scene': read_table(buf, table_ref(buf, body, 2), SCENE),
                  'tick_period_s': table_field(buf, body, 6, '<d', 0.0), 'max_message_bytes': table_field(buf, body, 9, '<I', 0),
@@ -1236,7 +1236,7 @@ def run(name):
             dec = Decoder(stream, int(f['max_payload']), int(f['history_ticks']), int(f['max_lag']))
         elif kind == 'scene_update':
             buf, version, bt, body = message(bytes.fromhex(f['hex']))
-            assert version == 3 and bt == 10
+            assert version == 4 and bt == 10
             u = {'scene': read_table(buf, table_ref(buf, body, 2), SCENE), 'effective_tick64': table_field(buf, body, 3, '<Q', 0),
                  'serial': table_field(buf, body, 4, '<I', 0)}
             if table_ref(buf, body, 5) is not None:  # SceneUpdate.vessels (slot 5): the fleet from its tick on

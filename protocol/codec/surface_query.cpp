@@ -2,17 +2,17 @@
 
 #include <cmath>
 
-namespace ocean::client {
+namespace ocean::codec {
 
-SurfaceQuery::SurfaceQuery(const codec::StreamConfig& config) {
-  for (const codec::StreamConfig::Lattice& l : config.lattices()) {
+SurfaceQuery::SurfaceQuery(const StreamConfig& config) {
+  for (const StreamConfig::Lattice& l : config.lattices()) {
     // The sea's lattices repeat from the world's origin; the wake lies once on its square.
     const double ox = l.wake ? config.wake.origin_x_m : 0.0, oz = l.wake ? config.wake.origin_z_m : 0.0;
     lattices_.push_back({l.n, l.patch_x_m, l.patch_z_m, ox, oz, l.wake, l.samples_at});
   }
 }
 
-double SurfaceQuery::sum(const std::vector<float>& channel, double x_m, double z_m) const {
+double SurfaceQuery::sum(std::span<const float> channel, double x_m, double z_m) const {
   if (channel.empty()) return 0.0;
   double total = 0.0;
   for (const Lattice& l : lattices_) {
@@ -31,7 +31,7 @@ double SurfaceQuery::sum(const std::vector<float>& channel, double x_m, double z
   return total;
 }
 
-SurfaceQuery::Point SurfaceQuery::at(const FrameChannels& frame, double x_m, double z_m) const {
+SurfaceQuery::Point SurfaceQuery::at(const SurfaceFields& frame, double x_m, double z_m) const {
   Point p;
   p.source_x_m = x_m;
   p.source_z_m = z_m;
@@ -50,4 +50,4 @@ SurfaceQuery::Point SurfaceQuery::at(const FrameChannels& frame, double x_m, dou
   return p;
 }
 
-}  // namespace ocean::client
+}  // namespace ocean::codec

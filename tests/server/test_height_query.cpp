@@ -1,0 +1,174 @@
+// HeightQuery: the sea a game server asks for at a batch of points, against what a viewer of the
+// same stream decoded there (codec::SurfaceQuery over its own frame of the answer's tick): the two
+// differ only by the stream's bound, calm and choppy, over the sea's tile and a vessel's wake. And
+// the abuse an admin interface meets: no token, too many points, non-finite points, a flood.
+#include "session_harness.hpp"
+#include "surface_query.hpp"
+
+#include <cmath>
+
+using namespace ocean::server;
+using namespace ocean::server::test;
+namespace proto = ocean::protocol;
+
+namespace {
+
+constexpr const char* kToken = "s3cret-token";
+
+ServerConfig wake_config() {
+  ServerConfig config = session_test_config();
+  config.admin_token = kToken;
+  config.profiles = {"mobile", "mobile-choppy"};
+  config.scene.choppiness = 1.0;
+  config.scene.wind_speed_mps = 9.0;
+  // One vessel crossing the wake's square at 7 m/s, so the answers sample the wake lattice too.
+  ocean::model::VesselTrack vessel;
+  vessel.id = 1;
+  vessel.hull = {30.0, 7.0, 2.0};
+  vessel.points = {{0.0, -100.0, 0.0}, {60.0, 320.0, 0.0}};
+  config.vessels = {vessel};
+  return config;
+}
+
+proto::HeightQuery query_of(std::uint8_t profile, std::uint32_t request_id) {
+  proto::HeightQuery q{kToken, request_id, profile, {}};
+  // 20 x 20 points over 150 m x 60 m around the vessel's track: its tile repeats, its wake does not.
+  for (int j = 0; j < 20; ++j)
+    for (int i = 0; i < 20; ++i) q.points.emplace_back(-40.0 + 7.5 * i + 0.37 * j, -30.0 + 3.0 * j + 0.11 * i);
+  return q;
+}
+
+}  // namespace
+
+TEST_CASE("a HeightQuery's answer is the viewer's height_at within the stream's bound, calm and choppy") {
+  SessionHarness harness(wake_config());
+  for (const std::uint8_t profile : {std::uint8_t{1}, std::uint8_t{5}}) {
+    auto viewer = harness.client();
+    viewer->keep_frames = true;
+    viewer->hello(proto::Hello{profile, 0, ocean::wire::Transport::tcp, "viewer"});
+    REQUIRE(pump_until({viewer.get()}, [&] { return viewer->completed_heights.size() > 40; }));  // the vessel is under way
+    REQUIRE(viewer->stream_config().has_wake());
+    const proto::HeightQuery query = query_of(profile, 40 + profile);
+    viewer->send_tcp(proto::encode(query));
+    REQUIRE(pump_until({viewer.get()}, [&] { return !viewer->height_answers.empty() || !viewer->errors.empty(); }));
+    REQUIRE(viewer->errors.empty());
+    const proto::HeightAnswer answer = viewer->height_answers.front();
+    CHECK(answer.request_id == query.request_id);
+    CHECK(answer.profile_id == profile);
+    REQUIRE(answer.samples.size() == query.points.size());
+    REQUIRE(pump_until({viewer.get()}, [&] { return viewer->completed_frames.count(answer.tick) > 0; }));
+
+    const ocean::codec::StreamConfig& config = viewer->stream_config();
+    const ocean::codec::SurfaceQuery sea(config);
+    const ocean::codec::ReconstructedFrame& frame = viewer->completed_frames.at(answer.tick);
+    double worst_height = 0.0, worst_normal = 0.0, moving = 0.0;
+    std::size_t in_wake = 0;
+    for (std::size_t i = 0; i < query.points.size(); ++i) {
+      const double x = query.points[i].x_m(), z = query.points[i].z_m();
+      const ocean::codec::SurfaceQuery::Point seen = sea.at(frame, x, z);
+      const ocean::wire::SurfaceSample& truth = answer.samples[i];
+      worst_height = std::max(worst_height, std::abs(seen.height_m - truth.height_m()));
+      worst_normal = std::max({worst_normal, std::abs(seen.normal[0] - truth.normal_x()), std::abs(seen.normal[2] - truth.normal_z())});
+      moving = std::max(moving, static_cast<double>(std::abs(truth.vertical_velocity_mps())));
+      const double u = (x - config.wake.origin_x_m) / config.wake.size_m, v = (z - config.wake.origin_z_m) / config.wake.size_m;
+      in_wake += u >= 0.0 && u < 1.0 && v >= 0.0 && v < 1.0;
+    }
+    INFO("profile " << int(profile) << ": worst height difference " << worst_height << " m, normal " << worst_normal);
+    CHECK(in_wake == query.points.size());
+    // Each sample the viewer holds is within step / 2 of the server's (CODEC.md 6), and a bilinear
+    // blend of samples stays within it; the tile's and the wake's lattices each add their own.
+    CHECK(worst_height <= config.height_step_m);
+    CHECK(worst_height > 0.0);  // the viewer's sea is the quantized one, not the server's
+    // Normals from slopes within slope_step / 2 each: a unit normal moves by less than that.
+    CHECK(worst_normal <= config.slope_step);
+    CHECK(moving > 0.05);  // a sea at 9 m/s: some water rises or falls faster than 5 cm/s
+    viewer->send_tcp(proto::encode(proto::Bye{ocean::wire::ByeReason::client_quit, "done"}));
+  }
+}
+
+TEST_CASE("HeightQuery abuse is refused with reasons while viewers keep streaming") {
+  SessionHarness harness(wake_config());
+  auto viewer = harness.client();
+  viewer->hello(proto::Hello{1, 0, ocean::wire::Transport::udp, "viewer"});
+  auto admin = harness.client();
+  admin->hello(proto::Hello{1, 0, ocean::wire::Transport::tcp, "admin"});
+  const std::vector<SessionTestClient*> all{viewer.get(), admin.get()};
+  REQUIRE(pump_until(all, [&] { return viewer->completed_heights.size() > 3 && admin->completed_heights.size() > 3; }));
+
+  SECTION("a wrong token, an unoffered or unknown profile, no token: each refused by name") {
+    proto::HeightQuery q = query_of(1, 1);
+    q.admin_token = "wrong";
+    admin->send_tcp(proto::encode(q));
+    REQUIRE(pump_until(all, [&] { return admin->errors.size() == 1; }));
+    CHECK(admin->errors[0].code == proto::Reason::unauthorized);
+    CHECK(admin->errors[0].text.find("HeightQuery.admin_token") != std::string::npos);
+    q.admin_token = kToken;
+    q.profile_id = 4;  // lite: a profile, not offered here
+    admin->send_tcp(proto::encode(q));
+    REQUIRE(pump_until(all, [&] { return admin->errors.size() == 2; }));
+    CHECK(admin->errors[1].code == proto::Reason::profile_unavailable);
+    q.profile_id = 99;
+    admin->send_tcp(proto::encode(q));
+    REQUIRE(pump_until(all, [&] { return admin->errors.size() == 3; }));
+    CHECK(admin->errors[2].code == proto::Reason::unknown_profile);
+    CHECK(admin->height_answers.empty());
+    q.admin_token.clear();  // no token at all: the message is malformed
+    admin->send_tcp(proto::encode(q));
+    REQUIRE(pump_until(all, [&] { return admin->errors.size() == 4; }));
+    CHECK(admin->errors[3].code == proto::Reason::missing_field);
+    CHECK(admin->errors[3].text.find("HeightQuery.admin_token") != std::string::npos);
+  }
+  SECTION("oversized and non-finite batches are refused by name") {
+    proto::HeightQuery q = query_of(1, 2);
+    q.points.resize(proto::kMaxQueryPoints + 1, q.points.front());
+    admin->send_tcp(proto::encode(q));
+    REQUIRE(pump_until(all, [&] { return !admin->errors.empty(); }));
+    CHECK(admin->errors[0].code == proto::Reason::oversized);
+    CHECK(admin->errors[0].text.find("HeightQuery.points") != std::string::npos);
+    auto other = harness.client();
+    other->hello(proto::Hello{1, 0, ocean::wire::Transport::tcp, "admin-2"});
+    q = query_of(1, 3);
+    q.points[7] = ocean::wire::QueryPoint(std::nan(""), 1.0);
+    other->send_tcp(proto::encode(q));
+    REQUIRE(pump_until({other.get(), viewer.get()}, [&] { return !other->errors.empty(); }));
+    CHECK(other->errors[0].code == proto::Reason::non_finite_value);
+  }
+  SECTION("a proven admin is answered at its rate; a flood is refused, then closed") {
+    proto::HeightQuery q = query_of(0, 10);
+    admin->send_tcp(proto::encode(q));
+    REQUIRE(pump_until(all, [&] { return admin->height_answers.size() == 1; }));
+    CHECK(admin->height_answers[0].profile_id == 1);  // 0: the first offered profile
+    admin->height_answers.clear();
+    // As fast as the answers come, never waiting for the retry: the burst is answered, then each
+    // is refused with its wait, and a connection that ignores the waits is closed.
+    const auto answered = [&] { return admin->height_answers.size() + admin->errors.size(); };
+    const auto flood_start = std::chrono::steady_clock::now();
+    for (std::uint32_t i = 0; i < 200 && !admin->closed(); ++i) {
+      q.request_id = 100 + i;
+      const std::size_t seen = answered();
+      admin->send_tcp(proto::encode(q));
+      REQUIRE(pump_until(all, [&] { return answered() > seen || admin->closed(); }));
+    }
+    INFO("answers " << admin->height_answers.size() << " errors " << admin->errors.size() << " in "
+                    << std::chrono::duration<double>(std::chrono::steady_clock::now() - flood_start).count() << " s");
+    REQUIRE(pump_until(all, [&] { return admin->closed(); }));
+    CHECK(admin->height_answers.size() >= 20);  // the burst
+    CHECK(admin->height_answers.size() < 100);
+    REQUIRE(!admin->errors.empty());
+    CHECK(admin->errors.front().code == proto::Reason::rate_limited);
+    CHECK(admin->errors.front().text.find("retry in") != std::string::npos);
+    CHECK(admin->errors.back().text.find("closing") != std::string::npos);
+  }
+  SECTION("a flood that reads nothing is closed") {
+    proto::HeightQuery q = query_of(0, 10);
+    for (std::uint32_t i = 0; i < 400 && !admin->closed(); ++i) {
+      q.request_id = 100 + i;
+      admin->send_tcp(proto::encode(q));
+    }
+    REQUIRE(pump_until(all, [&] { return admin->closed(); }));
+    CHECK(admin->height_answers.size() < 100);
+  }
+  const std::size_t before = viewer->completed_heights.size();
+  REQUIRE(pump_until({viewer.get()}, [&] { return viewer->completed_heights.size() > before + 5; }));  // still streaming
+  harness.check_reconstructions(*viewer);
+}
