@@ -52,10 +52,10 @@ bool HudOverlay::init(std::string& error) {
 
 void HudOverlay::draw(const HudStats& s, int width, int height) {
   if (!program_ || width <= 0 || height <= 0) return;
-  char text[512];
-  std::snprintf(text, sizeof text, "fps %.1f\nkbps %.1f\nlatency %.1f ms\nloss %.2f %%\nprofile %s%s%s", s.fps,
+  char text[1024];
+  std::snprintf(text, sizeof text, "fps %.1f\nkbps %.1f\nlatency %.1f ms\nloss %.2f %%\nprofile %s%s%s%s%s", s.fps,
                 s.kbps, s.latency_ms, s.loss_percent, s.profile.empty() ? "-" : s.profile.c_str(),
-                s.extra.empty() ? "" : "\n", s.extra.c_str());
+                s.extra.empty() ? "" : "\n", s.extra.c_str(), s.vessels.empty() ? "" : "\n", s.vessels.c_str());
 
   text_vertices_.clear();
   const unsigned char backing[4] = {0, 0, 0, 140};

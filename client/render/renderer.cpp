@@ -248,6 +248,12 @@ TileSelection Renderer::visible_tiles(const Camera& camera, const glm::mat4& cli
   return select_tiles(sel);
 }
 
+glm::vec3 Renderer::horizon_colour() const {
+  glm::vec3 sum(0.0f);
+  for (const glm::vec3& c : weathered_ring_) sum += c;
+  return weathered_ring_.empty() ? glm::vec3(0.6f) : sum / static_cast<float>(weathered_ring_.size());
+}
+
 void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_from_rel) {
   const OceanProgram& program = ocean_program();
   const OceanUniforms& u = program.u;

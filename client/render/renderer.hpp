@@ -92,6 +92,10 @@ class Renderer {
   // The weather's light (weather_light.hpp): 0 a clear sky .. 1 all cloud deck, which hides the
   // sun and greys the sky, its reflection and the water.
   void set_overcast(float overcast);
+  float overcast() const { return overcast_; }
+  // The sky's colour just above the horizon, averaged round it, under the weather: what the water
+  // fades into with distance, and the light the sky sheds on things above the water.
+  glm::vec3 horizon_colour() const;
   // Uploads only the attribute streams of one frame (sizes from set_grid).
   bool upload_frame(const FrameStreams& frame);
   bool upload_frame(const float* height, const float* slope_x, const float* slope_z,

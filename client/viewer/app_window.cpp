@@ -97,6 +97,7 @@ void AppWindow::on_key(GLFWwindow* w, int key, int, int action, int) {
   if (key == GLFW_KEY_Q || key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(w, GLFW_TRUE);
   if (key == GLFW_KEY_F) self->toggle_fullscreen();
   if (key == GLFW_KEY_H) self->hud_visible_ = !self->hud_visible_;
+  if (key == GLFW_KEY_V) ++self->follow_presses_;
 }
 
 void AppWindow::on_cursor(GLFWwindow* w, double x, double y) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include "client/render/camera_controls.hpp"
 
@@ -33,6 +34,8 @@ class AppWindow {
   void swap();
   void framebuffer_size(int& width, int& height) const;
   bool hud_visible() const { return hud_visible_; }
+  // Presses of V since the last call: each moves the follow camera to the next vessel.
+  int take_follow_presses() { return std::exchange(follow_presses_, 0); }
 
  private:
   static void on_key(GLFWwindow* w, int key, int scancode, int action, int mods);
@@ -42,6 +45,7 @@ class AppWindow {
 
   GLFWwindow* window_ = nullptr;
   bool hud_visible_ = true;
+  int follow_presses_ = 0;
   bool dragging_ = false;
   double last_x_ = 0.0, last_y_ = 0.0, drag_dx_ = 0.0, drag_dy_ = 0.0;
   int windowed_x_ = 0, windowed_y_ = 0, windowed_w_ = 0, windowed_h_ = 0;

@@ -26,6 +26,8 @@ class FrameSource {
   // Brings the uploaded frame to time t_s. False with a reason (the loop then stops).
   virtual bool update(double t_s, std::string& error) = 0;
   virtual render::HudStats hud_stats(double fps) const = 0;
+  // The follow camera moves to the next vessel (after the last: free flight again).
+  virtual void cycle_follow() {}
   // After the last frame, or when the loop gives up; may be called more than once.
   virtual void stop() {}
 

@@ -11,6 +11,7 @@
 
 #include "client/viewer/thread_cpu_clock.hpp"
 #include "frame_recorder.hpp"
+#include "stream_wire.hpp"
 #include "profile.hpp"
 #include "worker_pool.hpp"
 
@@ -84,6 +85,7 @@ void NetworkThread::run() {
         on_frame(frame, tick);
       });
   connection->set_on_welcome([this](const protocol::Welcome& welcome) { on_welcome(welcome); });
+  connection->set_on_scene_update([this](const protocol::SceneUpdate& update) { on_scene_update(update); });
   connection->set_on_session_end([this](const client::ClientSession& session, const std::string&) { on_session_end(session); });
   connection->start();
 
@@ -153,6 +155,16 @@ void NetworkThread::on_welcome(const protocol::Welcome& welcome) {
   stream_.lattices = client::stream_lattices(welcome.stream);
   stream_.tick_period_s = welcome.tick_period_s;
   stream_.send_interval_s = send_interval;
+  stream_.config = codec::decoder_config(welcome);
+  stream_.vessels = welcome.vessels;
+  ++stream_.vessels_serial;
+}
+
+void NetworkThread::on_scene_update(const protocol::SceneUpdate& update) {
+  if (!update.vessels) return;
+  std::lock_guard lock(mutex_);
+  stream_.vessels = *update.vessels;
+  ++stream_.vessels_serial;
 }
 
 void NetworkThread::on_frame(const codec::ReconstructedFrame& frame, Tick tick) {

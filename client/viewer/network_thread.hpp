@@ -39,6 +39,11 @@ struct StreamShape {
   double tick_period_s = 0.0;
   double send_interval_s = 0.0;
   double wind_speed_mps = 0.0;  // of the newest scene announced: the weather's light follows it
+  codec::StreamConfig config;   // the lattices, for asking the frames where the water is
+  // The fleet forcing the wake (Welcome.vessels, replaced by each SceneUpdate that carries one:
+  // the new list is right for earlier ticks too, PROTOCOL.md 8); its serial grows with each.
+  std::vector<model::VesselTrack> vessels;
+  std::uint64_t vessels_serial = 0;
 };
 
 struct NetworkStats {
@@ -81,6 +86,7 @@ class NetworkThread {
  private:
   void run();
   void on_welcome(const protocol::Welcome& welcome);
+  void on_scene_update(const protocol::SceneUpdate& update);
   void on_session_end(const client::ClientSession& session);
   void on_frame(const codec::ReconstructedFrame& frame, Tick tick);
   void publish(const client::ClientConnection& connection, double now);

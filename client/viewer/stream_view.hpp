@@ -8,9 +8,13 @@
 #include <vector>
 
 #include "client/render/foam_memory.hpp"
+#include "client/viewer/hull_record.hpp"
 #include "client/render/weather_light.hpp"
 #include "client/viewer/network_thread.hpp"
 #include "client/viewer/view_scene.hpp"
+#include "hull_motion.hpp"
+
+#include <optional>
 
 namespace ocean::viewer {
 
@@ -20,6 +24,15 @@ class StreamView {
   // Follows a new Welcome, blends the frame of time now and uploads it. False (with error()) only
   // when the renderer refuses the stream's grid.
   bool update(NetworkThread& net, double now);
+  // Every rendered frame's hull poses to this CSV (HullRecord); false with a reason.
+  bool record_hulls(const std::string& path, std::string& error) { return hull_record_.open(path, error); }
+  const std::vector<client::HullState>& hulls() const { return motion_.hulls(); }
+  // The camera follows vessel `id` from behind and above (-1: free); cycle_follow() moves it to
+  // the next vessel present, and after the last back to free flight.
+  void set_follow(std::int64_t id) { follow_id_ = id; }
+  void cycle_follow();
+  // The HUD's line: the vessels drawn in the last frame, with their speed.
+  std::string vessels_in_view() const;
 
   ViewScene& scene() { return scene_; }
   render::Renderer& renderer() { return scene_.renderer; }
@@ -35,12 +48,26 @@ class StreamView {
   std::uint64_t held_frames() const { return held_; }        // rendered with no new blend (empty timeline)
 
  private:
+  // The vessels present at the render time, posed on the frame just blended, as the scene's hulls.
+  void pose_hulls();
+  void follow_camera(const client::HullState& hull, double dt_s);
+
+ public:
+
+ private:
   ViewScene scene_;
   StreamShape shape_;
   client::RenderedFrame last_;
   client::FrameChannels channels_;
   render::FoamMemory foam_;
   render::WeatherEase weather_;
+  std::optional<codec::SurfaceQuery> sea_;  // the current stream's lattices
+  client::HullMotion motion_;
+  HullRecord hull_record_;
+  std::uint64_t frames_posed_ = 0;
+  std::int64_t follow_id_ = -1;
+  bool follow_eased_ = false;  // the follow camera has a previous pose to ease from
+  double last_pose_s_ = 0.0;
   double last_weather_s_ = 0.0;
   double last_upload_s_ = 0.0;
   std::string error_;

@@ -53,7 +53,7 @@ bool SyntheticSource::update(double t_s, std::string& /*error*/) {
 }
 
 render::HudStats SyntheticSource::hud_stats(double fps) const {
-  return {fps, 0.0, 0.0, 0.0, "local-synthetic", tiles_text(scene_.renderer.last_stats())};
+  return {fps, 0.0, 0.0, 0.0, "local-synthetic", tiles_text(scene_.renderer.last_stats()), ""};
 }
 
 }  // namespace ocean::viewer

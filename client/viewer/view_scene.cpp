@@ -10,18 +10,24 @@ bool ViewScene::init(const render::RendererDesc& desc, const CameraPose& pose, s
     error = renderer.error();
     return false;
   }
-  if (!hud.init(error)) return false;
+  if (!hud.init(error) || !hull_renderer.init(error)) return false;
   constexpr float kRadPerDeg = 3.14159265f / 180.0f;
-  camera.position = {0.0, pose.eye_height_m, 0.0};
+  camera.position = {pose.x_m, pose.eye_height_m, pose.z_m};
   camera.pitch_rad = pose.pitch_deg * kRadPerDeg;
   camera.yaw_rad = pose.yaw_deg * kRadPerDeg;
   camera.far_m = std::max(camera.far_m, renderer.desc().view_distance_m * 1.6f);
   return true;
 }
 
+void ViewScene::draw(int width, int height, double t_s) {
+  renderer.draw(camera, width, height, t_s);
+  hulls_in_view = hull_renderer.draw(camera, width, height, hulls, render::hull_light(renderer));
+}
+
 void ViewScene::release_gl() {
   renderer.shutdown();
   hud.shutdown();
+  hull_renderer.shutdown();
 }
 
 }  // namespace ocean::viewer

@@ -14,7 +14,7 @@ render::RendererDesc CommonViewerOptions::renderer_desc() const {
   return desc;
 }
 
-CameraPose CommonViewerOptions::camera_pose() const { return {eye_height_m, pitch_deg, yaw_deg}; }
+CameraPose CommonViewerOptions::camera_pose() const { return {eye_height_m, pitch_deg, yaw_deg, camera_x_m, camera_z_m}; }
 
 void add_output_flags(CLI::App& app, CommonViewerOptions& o, const OutputFlagsHelp& help) {
   app.add_flag("--headless", o.headless, "render off-screen through EGL, no window");
@@ -35,6 +35,8 @@ void add_camera_flags(CLI::App& app, CommonViewerOptions& o) {
   app.add_option("--eye-height", o.eye_height_m, "camera height above sea level, metres")->check(CLI::Range(1.0f, 10000.0f));
   app.add_option("--pitch", o.pitch_deg, "camera pitch, degrees (negative looks down)")->check(CLI::Range(-89.0f, 89.0f));
   app.add_option("--yaw", o.yaw_deg, "camera yaw, degrees (positive turns left)");
+  app.add_option("--camera-x", o.camera_x_m, "camera position along x, world metres (default 0)")->check(CLI::Range(-1e6f, 1e6f));
+  app.add_option("--camera-z", o.camera_z_m, "camera position along z, world metres (default 0)")->check(CLI::Range(-1e6f, 1e6f));
 }
 
 bool parse_size(const std::string& text, int& width, int& height, std::string& error) {

@@ -27,6 +27,7 @@ struct CommonViewerOptions {
   float eye_height_m = 10.0f;
   float pitch_deg = -6.0f;
   float yaw_deg = 0.0f;
+  float camera_x_m = 0.0f, camera_z_m = 0.0f;
 
   render::RendererDesc renderer_desc() const;
   CameraPose camera_pose() const;

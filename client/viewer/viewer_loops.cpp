@@ -84,7 +84,7 @@ int run_headless_loop(FrameSource& source, const LoopSettings& s, LoopResult& re
       return 1;
     }
     target.bind();
-    scene.renderer.draw(scene.camera, s.width, s.height, t);
+    scene.draw(s.width, s.height, t);
     if (s.hud) {
       const double elapsed = seconds_since(clock.start);
       scene.hud.draw(source.hud_stats(elapsed > 0 ? (i + 1) / elapsed : 0.0), s.width, s.height);
@@ -118,6 +118,7 @@ int run_window_loop(FrameSource& source, const LoopSettings& s, LoopResult& resu
     last = now;
     const double fps = fps_meter.tick(elapsed);
     render::apply_fly_input(scene.camera, window.poll(), dt);
+    for (int presses = window.take_follow_presses(); presses > 0; --presses) source.cycle_follow();
     const double t = source.frame_time_s(frame, elapsed);
     if (!source.update(t, error)) {
       source.stop();
@@ -125,7 +126,7 @@ int run_window_loop(FrameSource& source, const LoopSettings& s, LoopResult& resu
     }
     int w = 0, h = 0;
     window.framebuffer_size(w, h);
-    scene.renderer.draw(scene.camera, w, h, t);
+    scene.draw(w, h, t);
     if (window.hud_visible()) scene.hud.draw(source.hud_stats(fps), w, h);
     ++frame;
     if (!s.screenshot.empty() && s.frames > 0 && frame == s.frames) {

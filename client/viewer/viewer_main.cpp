@@ -37,6 +37,10 @@ int main(int argc, char** argv) {
   app.add_option("--transport", o.transport, "udp (falls back to tcp when UDP fails) or tcp")
       ->check(CLI::IsMember({"udp", "tcp"}));
   app.add_option("--record", o.record_path, "write every received frame: heights to this .npy, ticks and every channel of every lattice beside it (CODEC.md 10)");
+  app.add_option("--record-hulls", o.record_hulls_path,
+                 "write every rendered frame's hull poses (heave, pitch, roll) and the decoded surface under each hull to this CSV");
+  app.add_option("--follow", o.follow_id, "follow vessel ID from behind and above (the window's V key cycles the vessels)")
+      ->check(CLI::Range(0ll, 4294967295ll));
   app.add_option("--bandwidth", o.bandwidth_bps, "link bandwidth to tell the server, bits per second (0 = unstated)");
   app.add_option("--first-frame-timeout", o.first_frame_timeout_s, "headless: seconds to wait for the first frame")
       ->check(CLI::Range(0.1, 3600.0));

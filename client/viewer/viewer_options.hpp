@@ -19,6 +19,8 @@ struct ViewerOptions : CommonViewerOptions {
   std::string profile;            // empty: the server's choice
   std::string transport = "udp";  // udp (falls back to tcp by itself) or tcp
   std::string record_path;        // .npy of every received frame's heights
+  std::string record_hulls_path;  // CSV of every rendered frame's hull poses (HullRecord)
+  std::int64_t follow_id = -1;    // >= 0: the camera follows this vessel from behind and above
   std::uint64_t bandwidth_bps = 0;    // asked for in the Hello; 0 = no limit stated
   double first_frame_timeout_s = 10.0;
   double interpolation_delay_s = 0.0;  // 0: three send intervals (FrameTimeline's default)

@@ -45,8 +45,11 @@ class NetworkSource final : public FrameSource {
   NetworkSource(const ViewerOptions& options, NetworkThreadConfig config) : options_(options), net_(std::move(config)) {}
 
   bool init(std::string& error) override {
-    return view_.init(options_.renderer_desc(), options_.camera_pose(), error);
+    if (!view_.init(options_.renderer_desc(), options_.camera_pose(), error)) return false;
+    view_.set_follow(options_.follow_id);
+    return options_.record_hulls_path.empty() || view_.record_hulls(options_.record_hulls_path, error);
   }
+  void cycle_follow() override { view_.cycle_follow(); }
   void start() override { net_.start(); }
   bool wait_for_first_frame(std::string& error) override {
     if (net_.wait_for_first_frame(options_.first_frame_timeout_s)) return true;
@@ -90,7 +93,7 @@ render::HudStats NetworkSource::hud_stats(double fps) const {
                 net.path.c_str(), view_.shape().grid, static_cast<unsigned long long>(net.frames_received),
                 static_cast<unsigned long long>(net.connects > 0 ? net.connects - 1 : 0));
   const double delay_ms = interpolation_delay_ms(options_, view_);
-  return {fps, net.kbps, delay_ms + net.rtt_ms / 2.0, net.loss_pct, view_.shape().profile, extra};
+  return {fps, net.kbps, delay_ms + net.rtt_ms / 2.0, net.loss_pct, view_.shape().profile, extra, view_.vessels_in_view()};
 }
 
 void NetworkSource::fill_summary(ViewerSummary& s, const LoopResult& loop) {

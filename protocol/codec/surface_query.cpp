@@ -12,10 +12,11 @@ SurfaceQuery::SurfaceQuery(const StreamConfig& config) {
   }
 }
 
-double SurfaceQuery::sum(std::span<const float> channel, double x_m, double z_m) const {
+double SurfaceQuery::sum(std::span<const float> channel, double x_m, double z_m, Lattices which) const {
   if (channel.empty()) return 0.0;
   double total = 0.0;
   for (const Lattice& l : lattices_) {
+    if (l.bounded && which == Lattices::sea) continue;
     const double u = (x_m - l.origin_x_m) / l.size_x_m, v = (z_m - l.origin_z_m) / l.size_z_m;
     if (l.bounded && !(u >= 0.0 && u < 1.0 && v >= 0.0 && v < 1.0)) continue;
     // Sample coordinates, wrapped into the period (the fields are periodic: a Fourier lattice).
@@ -31,20 +32,20 @@ double SurfaceQuery::sum(std::span<const float> channel, double x_m, double z_m)
   return total;
 }
 
-SurfaceQuery::Point SurfaceQuery::at(const SurfaceFields& frame, double x_m, double z_m) const {
+SurfaceQuery::Point SurfaceQuery::at(const SurfaceFields& frame, double x_m, double z_m, Lattices which) const {
   Point p;
   p.source_x_m = x_m;
   p.source_z_m = z_m;
   if (!frame.disp_x.empty()) {
     // The water drawn at x left p with p + D(p) = x.
     for (int step = 0; step < kInversionSteps; ++step) {
-      const double dx = sum(frame.disp_x, p.source_x_m, p.source_z_m), dz = sum(frame.disp_z, p.source_x_m, p.source_z_m);
+      const double dx = sum(frame.disp_x, p.source_x_m, p.source_z_m, which), dz = sum(frame.disp_z, p.source_x_m, p.source_z_m, which);
       p.source_x_m = x_m - dx;
       p.source_z_m = z_m - dz;
     }
   }
-  p.height_m = sum(frame.height, p.source_x_m, p.source_z_m);
-  const double sx = sum(frame.slope_x, p.source_x_m, p.source_z_m), sz = sum(frame.slope_z, p.source_x_m, p.source_z_m);
+  p.height_m = sum(frame.height, p.source_x_m, p.source_z_m, which);
+  const double sx = sum(frame.slope_x, p.source_x_m, p.source_z_m, which), sz = sum(frame.slope_z, p.source_x_m, p.source_z_m, which);
   const double length = std::sqrt(sx * sx + 1.0 + sz * sz);
   p.normal = {-sx / length, 1.0 / length, -sz / length};
   return p;

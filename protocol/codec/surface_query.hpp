@@ -39,15 +39,18 @@ class SurfaceQuery {
     std::array<double, 3> normal{0.0, 1.0, 0.0};  // unit, y up
     double source_x_m = 0.0, source_z_m = 0.0;    // where the water at the point came from
   };
+  // Every lattice, or the sea's alone (the wake's left out: a hull rides the waves, not the
+  // depression its own pressure makes in the wake lattice).
+  enum class Lattices { all, sea };
   // The surface at world (x, z) in `fields` (a frame's channels, or a blend of two).
-  Point at(const SurfaceFields& fields, double x_m, double z_m) const;
+  Point at(const SurfaceFields& fields, double x_m, double z_m, Lattices which = Lattices::all) const;
   template <typename Frame>
-  Point at(const Frame& frame, double x_m, double z_m) const {
-    return at(surface_fields(frame), x_m, z_m);
+  Point at(const Frame& frame, double x_m, double z_m, Lattices which = Lattices::all) const {
+    return at(surface_fields(frame), x_m, z_m, which);
   }
   template <typename Frame>
-  double height_at(const Frame& frame, double x_m, double z_m) const {
-    return at(frame, x_m, z_m).height_m;
+  double height_at(const Frame& frame, double x_m, double z_m, Lattices which = Lattices::all) const {
+    return at(frame, x_m, z_m, which).height_m;
   }
   template <typename Frame>
   std::array<double, 3> normal_at(const Frame& frame, double x_m, double z_m) const {
@@ -65,7 +68,7 @@ class SurfaceQuery {
     std::size_t samples_at;
   };
   // The sum over the lattices of one channel at (x, z), bilinear within each.
-  double sum(std::span<const float> channel, double x_m, double z_m) const;
+  double sum(std::span<const float> channel, double x_m, double z_m, Lattices which) const;
 
   std::vector<Lattice> lattices_;
 };

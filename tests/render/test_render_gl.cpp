@@ -85,7 +85,7 @@ std::vector<std::uint8_t> render_sea(bool choppy, bool hud, render::DrawStats* s
   if (hud) {
     render::HudOverlay overlay;
     REQUIRE(overlay.init(error));
-    overlay.draw({60.0, 512.0, 40.0, 0.5, "mobile", ""}, kWidth, kHeight);
+    overlay.draw({60.0, 512.0, 40.0, 0.5, "mobile", "", "vessel 3 7.0 m/s (following)"}, kWidth, kHeight);
   }
   CHECK(glGetError() == GL_NO_ERROR);
   if (stats) *stats = renderer.last_stats();
