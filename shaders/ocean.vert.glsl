@@ -22,6 +22,12 @@ uniform float u_far_roughness;
 uniform vec2 u_foam;          // threshold, 1 / softness
 uniform vec2 u_fog;           // density per metre, 1 / (1 - exp(-density * view distance))
 uniform vec3 u_horizon[16];   // sky colour 0.01 rad above the horizon, azimuth 2 pi (i / 16 - 0.5)
+// The turbulent foam behind each moving hull (at most 8, the nearest), from its pose alone:
+// [2i] = stern minus eye (x, z), the trail's whole length backwards along -heading (x, z);
+// [2i + 1] = half width at the stern, widening per metre behind, strength (0 = none), unused.
+uniform vec4 u_trail[16];
+uniform float u_trails;       // how many of them are set
+uniform vec2 u_eye_xz;        // the eye's world x, z modulo 1024 m: the foam's grain stays put
 #if defined(COARSE_CASCADE) || defined(WAKE_LATTICE)
 // Bilinear between the four nearest of n x n samples: float textures need not filter (GLES 2).
 vec4 lattice_sample(sampler2D field, vec2 uv, float n) {
@@ -53,6 +59,28 @@ varying float v_foam;
 varying float v_height;
 varying vec4 v_haze;     // horizon colour in this direction, fog amount
 
+// The foam of the trails at a camera-relative point: white at the stern, fading and widening
+// behind it, broken into patches by a hash of the place (churned water is not uniform).
+float trail_foam(vec2 xz) {
+  float foam = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    if (float(i) >= u_trails) break;
+    vec4 a = u_trail[2 * i];
+    vec4 b = u_trail[2 * i + 1];
+    vec2 d = xz - a.xy;
+    float len2 = max(dot(a.zw, a.zw), 1e-6);
+    float s = dot(d, a.zw) / len2;                      // 0 at the stern, 1 at the trail's end
+    float across = length(d - s * a.zw);
+    float half_width = b.x + b.y * s * sqrt(len2);
+    float along = step(0.0, s) * step(s, 1.0) * (1.0 - s) * (1.0 - s);
+    float edge = clamp((half_width - across) / max(0.35 * half_width, 0.01), 0.0, 1.0);
+    foam = max(foam, b.z * along * edge);
+  }
+  vec2 cell = floor((xz + u_eye_xz) * 0.7);
+  float grain = fract(sin(dot(cell, vec2(12.9898, 78.233))) * 43758.5453);
+  return foam * (0.55 + 0.45 * grain);
+}
+
 void main() {
   float height = a_height;
   vec2 disp = a_disp;
@@ -77,6 +105,11 @@ void main() {
   coarse_slope += wshape.yz;
   disp += wchop.xy;
   jacobian += wchop.z;
+  // A wake's crests whiten where they are about to break: slopes beyond ~0.2 (a Stokes wave
+  // breaks near 0.44), on every profile (the choppy ones fold too, through the Jacobian).
+  float wake_foam = clamp((length(wshape.yz) - 0.2) * 8.0, 0.0, 1.0);
+#else
+  float wake_foam = 0.0;
 #endif
   vec2 xz = u_tile_offset + a_grid + u_choppiness * disp;
   vec3 rel = vec3(xz.x, height - u_eye_height, xz.y);
@@ -84,7 +117,7 @@ void main() {
   v_rel = rel;
   // Only the tile's short waves fade with distance (they would sparkle); the long ones stay.
   v_slope = a_slope * detail + coarse_slope;
-  v_foam = clamp((u_foam.x - jacobian) * u_foam.y, 0.0, 1.0) * detail;
+  v_foam = max(clamp((u_foam.x - jacobian) * u_foam.y, 0.0, 1.0), max(wake_foam, trail_foam(xz))) * detail;
   v_height = height;
   // Fog per vertex: smooth over a triangle, and it keeps the fragment stage to one texture fetch.
   // Normalised to reach exactly 1 at the view distance, where the tiles end and the sky below

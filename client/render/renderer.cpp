@@ -50,7 +50,8 @@ bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake
                loc("u_sun_dir"), loc("u_sun_colour"), loc("u_deep_colour"), loc("u_scatter_colour"),
                loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast"),
                loc("u_coarse_shape"), loc("u_coarse_chop"), loc("u_coarse_scale"), loc("u_coarse_origin"),
-               loc("u_wake_shape"), loc("u_wake_chop"), loc("u_wake_scale"), loc("u_wake_origin")};
+               loc("u_wake_shape"), loc("u_wake_chop"), loc("u_wake_scale"), loc("u_wake_origin"),
+               loc("u_trail[0]"), loc("u_trails"), loc("u_eye_xz")};
   return true;
 }
 
@@ -284,12 +285,36 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
     glUniform1i(u.coarse_chop, 2);
     glUniform3f(u.coarse_scale, 1.0f / coarse_.patch_x(), 1.0f / coarse_.patch_z(), static_cast<float>(coarse_.n()));
   }
+  set_trail_uniforms(camera);
   if (wake_.active()) {
     wake_.bind(GL_TEXTURE3);
     glUniform1i(u.wake_shape, 3);
     glUniform1i(u.wake_chop, 4);
     glUniform3f(u.wake_scale, 1.0f / wake_.patch_x(), 1.0f / wake_.patch_z(), static_cast<float>(wake_.n()));
   }
+}
+
+void Renderer::set_trail_uniforms(const Camera& camera) {
+  const OceanUniforms& u = ocean_program().u;
+  std::vector<const FoamTrail*> near;
+  for (const FoamTrail& t : trails_)
+    if (t.strength > 0.0f && t.length_m > 0.0f) near.push_back(&t);
+  const auto distance = [&](const FoamTrail* t) {
+    return std::hypot(t->stern_x_m - camera.position.x, t->stern_z_m - camera.position.z);
+  };
+  std::sort(near.begin(), near.end(), [&](const FoamTrail* a, const FoamTrail* b) { return distance(a) < distance(b); });
+  if (near.size() > kMaxTrails) near.resize(kMaxTrails);
+  std::array<glm::vec4, 2 * kMaxTrails> packed{};
+  for (std::size_t i = 0; i < near.size(); ++i) {
+    const FoamTrail& t = *near[i];
+    packed[2 * i] = {static_cast<float>(t.stern_x_m - camera.position.x), static_cast<float>(t.stern_z_m - camera.position.z),
+                     -t.dir_x * t.length_m, -t.dir_z * t.length_m};
+    packed[2 * i + 1] = {t.half_width_m, t.spread, t.strength, 0.0f};
+  }
+  glUniform4fv(u.trail, static_cast<GLsizei>(packed.size()), glm::value_ptr(packed[0]));
+  glUniform1f(u.trails, static_cast<float>(near.size()));
+  glUniform2f(u.eye_xz, static_cast<float>(std::fmod(camera.position.x, 1024.0)),
+              static_cast<float>(std::fmod(camera.position.z, 1024.0)));
 }
 
 void Renderer::draw_tiles(const TileSelection& tiles) {

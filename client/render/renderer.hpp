@@ -3,6 +3,7 @@
 // No windowing and no networking: the caller owns the context and the frame data.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -51,6 +52,31 @@ struct FrameStreams {
   const float* jacobian = nullptr;
 };
 
+// The churned water behind a moving hull (drawn as foam from its pose alone, no wire data):
+// from the stern backwards along -heading for length_m, half_width_m wide at the stern and
+// widening by spread per metre behind it, strength in [0, 1].
+struct FoamTrail {
+  double stern_x_m = 0.0, stern_z_m = 0.0;
+  float dir_x = 1.0f, dir_z = 0.0f;  // the hull's heading (unit)
+  float length_m = 0.0f, half_width_m = 0.0f, spread = 0.0f, strength = 0.0f;
+};
+
+// A hull's trail from its pose: churned white at the stern for a fast hull, none below 1 m/s,
+// as long as ten seconds of its run (at most 150 m), a little narrower than the hull at first.
+inline FoamTrail foam_trail(double x_m, double z_m, double dir_x, double dir_z, double speed_mps, double length_m,
+                            double beam_m) {
+  FoamTrail t;
+  t.stern_x_m = x_m - 0.5 * length_m * dir_x;
+  t.stern_z_m = z_m - 0.5 * length_m * dir_z;
+  t.dir_x = static_cast<float>(dir_x);
+  t.dir_z = static_cast<float>(dir_z);
+  t.length_m = static_cast<float>(std::min(10.0 * speed_mps, 150.0));
+  t.half_width_m = static_cast<float>(0.4 * beam_m);
+  t.spread = 0.06f;
+  t.strength = static_cast<float>(std::clamp((speed_mps - 1.0) / 6.0, 0.0, 1.0));
+  return t;
+}
+
 struct DrawStats {
   int tiles_drawn = 0;    // tiles and chunks drawn (a far block counts all its tiles)
   int far_blocks = 0;     // of which drawn as far blocks
@@ -96,6 +122,9 @@ class Renderer {
   // The sky's colour just above the horizon, averaged round it, under the weather: what the water
   // fades into with distance, and the light the sky sheds on things above the water.
   glm::vec3 horizon_colour() const;
+  // The foam trails of this frame (the nearest kMaxTrails to the camera are drawn).
+  static constexpr std::size_t kMaxTrails = 8;
+  void set_trails(const std::vector<FoamTrail>& trails) { trails_ = trails; }
   // Uploads only the attribute streams of one frame (sizes from set_grid).
   bool upload_frame(const FrameStreams& frame);
   bool upload_frame(const float* height, const float* slope_x, const float* slope_z,
@@ -119,6 +148,7 @@ class Renderer {
   void set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_from_rel);
   void draw_tiles(const TileSelection& tiles);
   void draw_sky(const Camera& camera, const glm::mat4& clip_from_rel);
+  void set_trail_uniforms(const Camera& camera);
 
   RendererDesc desc_;
   std::string error_;
@@ -129,6 +159,7 @@ class Renderer {
     GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon, overcast;
     GLint coarse_shape, coarse_chop, coarse_scale, coarse_origin;  // -1 in the plain program
     GLint wake_shape, wake_chop, wake_scale, wake_origin;          // -1 without the wake
+    GLint trail, trails, eye_xz;
   };
   struct OceanProgram {
     GLuint id = 0;
@@ -173,6 +204,7 @@ class Renderer {
 
   GLint sky_u_rel_from_clip_ = -1, sky_u_sky_ = -1, sky_u_overcast_ = -1;
   float overcast_ = 0.0f;
+  std::vector<FoamTrail> trails_;
   std::vector<glm::vec3> weathered_ring_;
 
   DrawStats stats_;

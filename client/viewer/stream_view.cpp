@@ -63,7 +63,9 @@ void StreamView::pose_hulls() {
   const double t_s = last_.render_tick * shape_.tick_period_s;
   const std::vector<client::HullState>& hulls = motion_.update(shape_.vessels, *sea_, codec::surface_fields(channels_), t_s);
   scene_.hulls.clear();
+  std::vector<render::FoamTrail> trails;
   for (const client::HullState& h : hulls) {
+    trails.push_back(render::foam_trail(h.x_m, h.z_m, h.dir_x, h.dir_z, h.speed_mps, h.hull.length_m, h.hull.beam_m));
     // Hull-local +x (bow), +y (up), +z (starboard) in world axes: heading, then pitch, then roll.
     const glm::vec3 bow(static_cast<float>(h.dir_x), 0.0f, static_cast<float>(h.dir_z));
     const glm::vec3 starboard(-bow.z, 0.0f, bow.x);
@@ -82,6 +84,7 @@ void StreamView::pose_hulls() {
     hull.draft_m = static_cast<float>(h.hull.draft_m);
     scene_.hulls.push_back(hull);
   }
+  scene_.renderer.set_trails(trails);
   hull_record_.write(frames_posed_++, t_s, hulls);
   const double dt = t_s - last_pose_s_;
   last_pose_s_ = t_s;
