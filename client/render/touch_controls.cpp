@@ -48,4 +48,33 @@ void apply_touch_motion(Camera& camera, const TouchMotion& motion, const FlySett
   camera.position += glm::normalize(ahead) * motion.forward_m + glm::dvec3(camera.right()) * motion.right_m;
 }
 
+bool DoubleTap::update(std::span<const TouchPoint> touches, double now_s) {
+  const auto far = [](const TouchPoint& a, const TouchPoint& b) {
+    return std::hypot(a.x_px - b.x_px, a.y_px - b.y_px) > kSlopPx;
+  };
+  if (touches.size() > 1) {  // a pinch or a pan: no tap, and no pair with the one before
+    pressed_ = false;
+    last_tap_s_ = -1e9;
+    return false;
+  }
+  if (touches.size() == 1) {
+    if (!pressed_) {
+      pressed_ = true;
+      moved_ = false;
+      start_ = touches[0];
+      start_s_ = now_s;
+    } else if (far(touches[0], start_)) {
+      moved_ = true;  // a drag turns the view
+    }
+    return false;
+  }
+  if (!pressed_) return false;
+  pressed_ = false;
+  if (moved_ || now_s - start_s_ > kTapS) return false;
+  const bool second = now_s - last_tap_s_ <= kBetweenS && !far(start_, last_tap_);
+  last_tap_s_ = second ? -1e9 : now_s;
+  last_tap_ = start_;
+  return second;
+}
+
 }  // namespace ocean::render

@@ -37,6 +37,22 @@ class TouchGesture {
   std::vector<TouchPoint> last_;
 };
 
+// A double tap (two quick taps of one finger in one place): the browser's gesture for what the V
+// key does (the follow camera's next vessel). Fed the touches down after each event and its time.
+class DoubleTap {
+ public:
+  bool update(std::span<const TouchPoint> touches, double now_s);
+
+  static constexpr double kTapS = 0.3, kBetweenS = 0.45, kSlopPx = 24.0;
+
+ private:
+  bool pressed_ = false, moved_ = false;
+  TouchPoint start_{};
+  double start_s_ = 0.0;
+  double last_tap_s_ = -1e9;
+  TouchPoint last_tap_{};
+};
+
 // Turns the camera as apply_fly_input does for a drag, and moves it over the water.
 void apply_touch_motion(Camera& camera, const TouchMotion& motion, const FlySettings& settings = {});
 

@@ -12,7 +12,7 @@
 #include "client/render/weather_light.hpp"
 #include "client/viewer/network_thread.hpp"
 #include "client/viewer/view_scene.hpp"
-#include "hull_motion.hpp"
+#include "client/viewer/vessel_view.hpp"
 
 #include <optional>
 
@@ -26,13 +26,13 @@ class StreamView {
   bool update(NetworkThread& net, double now);
   // Every rendered frame's hull poses to this CSV (HullRecord); false with a reason.
   bool record_hulls(const std::string& path, std::string& error) { return hull_record_.open(path, error); }
-  const std::vector<client::HullState>& hulls() const { return motion_.hulls(); }
+  const std::vector<client::HullState>& hulls() const { return vessels_.hulls(); }
   // The camera follows vessel `id` from behind and above (-1: free); cycle_follow() moves it to
   // the next vessel present, and after the last back to free flight.
-  void set_follow(std::int64_t id) { follow_id_ = id; }
-  void cycle_follow();
+  void set_follow(std::int64_t id) { vessels_.set_follow(id); }
+  void cycle_follow() { vessels_.cycle_follow(); }
   // The HUD's line: the vessels drawn in the last frame, with their speed.
-  std::string vessels_in_view() const;
+  std::string vessels_in_view() const { return vessels_.in_view(scene_.hulls_in_view); }
 
   ViewScene& scene() { return scene_; }
   render::Renderer& renderer() { return scene_.renderer; }
@@ -50,7 +50,6 @@ class StreamView {
  private:
   // The vessels present at the render time, posed on the frame just blended, as the scene's hulls.
   void pose_hulls();
-  void follow_camera(const client::HullState& hull, double dt_s);
 
  public:
 
@@ -62,12 +61,9 @@ class StreamView {
   render::FoamMemory foam_;
   render::WeatherEase weather_;
   std::optional<codec::SurfaceQuery> sea_;  // the current stream's lattices
-  client::HullMotion motion_;
+  VesselView vessels_;
   HullRecord hull_record_;
   std::uint64_t frames_posed_ = 0;
-  std::int64_t follow_id_ = -1;
-  bool follow_eased_ = false;  // the follow camera has a previous pose to ease from
-  double last_pose_s_ = 0.0;
   double last_weather_s_ = 0.0;
   double last_upload_s_ = 0.0;
   std::string error_;

@@ -38,6 +38,10 @@ EM_BOOL on_blur(int, const EmscriptenFocusEvent*, void*) {
 }
 
 EM_BOOL on_key(int type, const EmscriptenKeyboardEvent* e, void*) {
+  if (std::strcmp(e->code, "KeyV") == 0 && type == EMSCRIPTEN_EVENT_KEYDOWN) {
+    viewer->cycle_follow();
+    return EM_TRUE;
+  }
   if (std::strcmp(e->code, "KeyH") == 0 && type == EMSCRIPTEN_EVENT_KEYDOWN) {
     static bool hud = true;
     viewer->set_hud(hud = !hud);
@@ -85,6 +89,9 @@ EMSCRIPTEN_KEEPALIVE void ocean_web_connect(const char* url, int profile_id) {
 }
 EMSCRIPTEN_KEEPALIVE void ocean_web_disconnect() {
   if (viewer) viewer->disconnect();
+}
+EMSCRIPTEN_KEEPALIVE void ocean_web_follow(double id) {
+  if (viewer) viewer->set_follow(static_cast<std::int64_t>(id));
 }
 EMSCRIPTEN_KEEPALIVE void ocean_web_record(int on) {
   if (viewer) viewer->set_recording(on != 0);

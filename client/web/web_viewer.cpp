@@ -11,6 +11,7 @@
 #include "common/json_writer.hpp"
 #include "client/render/channel_upload.hpp"
 #include "height_hash.hpp"
+#include "stream_wire.hpp"
 #include "profile.hpp"
 
 namespace ocean::web {
@@ -32,7 +33,7 @@ bool WebViewer::init(std::string& error) {
     error = renderer_.error();
     return false;
   }
-  if (!hud_.init(error)) return false;
+  if (!hud_.init(error) || !hull_renderer_.init(error)) return false;
   camera_.position = {0.0, kEyeHeightM, 0.0};
   camera_.pitch_rad = static_cast<float>(kPitchDeg * 3.14159265358979 / 180.0);
   camera_.far_m = std::max(camera_.far_m, renderer_.desc().view_distance_m * 1.6f);
@@ -49,6 +50,7 @@ void WebViewer::connect(const std::string& url, std::uint8_t profile_id) {
   events.send_tcp = [this](std::span<const std::uint8_t> bytes) { socket_.send(bytes); };
   events.on_welcome = [this](const protocol::Welcome& welcome) { on_welcome(welcome); };
   events.on_frame = [this](const codec::ReconstructedFrame& frame, Tick tick) { on_frame(frame, tick); };
+  events.on_scene_update = [this](const protocol::SceneUpdate& update) { on_scene_update(update); };
   events.on_closed = [this](const std::string& why) { close_reason_ = why; };
   session_ = std::make_unique<client::ClientSession>(config, std::move(events));
   state_ = "connecting";
@@ -138,7 +140,22 @@ void WebViewer::on_welcome(const protocol::Welcome& welcome) {
     layout_ = layout;
     grid_ = welcome.stream.grid;
   }
+  sea_.emplace(codec::decoder_config(welcome));
+  fleet_ = welcome.vessels;
+  tick_period_s_ = welcome.tick_period_s;
   state_ = "streaming";
+}
+
+void WebViewer::on_scene_update(const protocol::SceneUpdate& update) {
+  if (update.vessels) fleet_ = *update.vessels;  // right for earlier ticks too (PROTOCOL.md 8)
+}
+
+// The hulls on the frame just blended, at its place on the server's tick axis, as natively.
+void WebViewer::draw_vessels(const client::TimelineSample& sample, int width, int height) {
+  if (sea_ && tick_period_s_ > 0.0 && channels_.height.size() == layout_.samples())
+    vessels_.update(fleet_, *sea_, codec::surface_fields(channels_), sample.render_tick * tick_period_s_, hulls_, renderer_,
+                    camera_);
+  hulls_in_view_ = hull_renderer_.draw(camera_, width, height, hulls_, render::hull_light(renderer_));
 }
 
 void WebViewer::on_frame(const codec::ReconstructedFrame& frame, Tick tick) {
@@ -160,6 +177,7 @@ double WebViewer::loss_percent() const {
 
 void WebViewer::touches(const std::vector<render::TouchPoint>& down) {
   render::apply_touch_motion(camera_, touch_.update(down));
+  if (double_tap_.update(down, now())) vessels_.cycle_follow();
 }
 
 void WebViewer::frame(double now_s, int width, int height) {
@@ -187,6 +205,7 @@ void WebViewer::frame(double now_s, int width, int height) {
   if (session_ && session_->state() == client::ClientSession::State::streaming)
     renderer_.set_overcast(weather_.update(session_->scene().wind_speed_mps, dt));
   renderer_.draw(camera_, width, height, now_s);
+  draw_vessels(sample, width, height);
 
   fps_ = fps_meter_.tick(now_s);
   if (now_s - kbps_sampled_s_ >= kKbpsSampleS) {
@@ -205,6 +224,7 @@ void WebViewer::frame(double now_s, int width, int height) {
     std::snprintf(extra, sizeof extra, "%s  decode %.2f ms/frame  frames %llu", state_.c_str(),
                   frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, static_cast<unsigned long long>(frames_));
     stats.extra = extra;
+    stats.vessels = vessels_.in_view(hulls_in_view_);
     hud_.draw(stats, width, height);
   }
   ++rendered_;
@@ -220,6 +240,8 @@ std::string WebViewer::report() const {
   std::sort(recent.begin(), recent.end());
   json.fixed("decode_ms_median", recent.empty() ? 0.0 : recent[recent.size() / 2], 4);
   json.boolean("recording_full", recording_full_);
+  json.integer("vessels", static_cast<long long>(vessels_.hulls().size()))
+      .integer("vessels_in_view", static_cast<long long>(hulls_in_view_.size()));
   const render::DrawStats& draw = renderer_.last_stats();
   json.integer("triangles", draw.triangles).integer("draw_calls", draw.draw_calls).integer("tiles", draw.tiles_drawn);
   json.fixed("fps", fps_, 2).fixed("kbps", kbps_meter_.kbps(), 2).fixed("loss_percent", loss_percent(), 2);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,10 +19,12 @@
 #include "client/render/foam_memory.hpp"
 #include "client/render/weather_light.hpp"
 #include "client/render/hud_overlay.hpp"
+#include "client/render/hull_renderer.hpp"
 #include "client/render/renderer.hpp"
 #include "client/render/touch_controls.hpp"
 #include "client/viewer/fps_meter.hpp"
 #include "client/viewer/kbps_meter.hpp"
+#include "client/viewer/vessel_view.hpp"
 #include "client_session.hpp"
 #include "frame_timeline.hpp"
 
@@ -52,6 +55,9 @@ class WebViewer {
   render::FlyInput& keys() { return keys_; }
   void look(double dx_px, double dy_px) { look_dx_ += dx_px, look_dy_ += dy_px; }
   void touches(const std::vector<render::TouchPoint>& down);
+  // The follow camera's next vessel (the V key, a double tap).
+  void cycle_follow() { vessels_.cycle_follow(); }
+  void set_follow(std::int64_t id) { vessels_.set_follow(id); }
 
   // JSON: state, stream, counts, decode ms per frame, fps, and the recent frame hashes.
   std::string report() const;
@@ -60,6 +66,8 @@ class WebViewer {
 
  private:
   void on_welcome(const protocol::Welcome& welcome);
+  void on_scene_update(const protocol::SceneUpdate& update);
+  void draw_vessels(const client::TimelineSample& sample, int width, int height);
   void on_frame(const codec::ReconstructedFrame& frame, Tick tick);
   void on_message(std::span<const std::uint8_t> bytes);
   void end_session(const std::string& why);
@@ -70,6 +78,14 @@ class WebViewer {
   render::HudOverlay hud_;
   render::Camera camera_;
   render::TouchGesture touch_;
+  render::DoubleTap double_tap_;
+  render::HullRenderer hull_renderer_;
+  viewer::VesselView vessels_;
+  std::vector<model::VesselTrack> fleet_;          // Welcome.vessels, as SceneUpdates replace them
+  std::optional<codec::SurfaceQuery> sea_;         // the stream's lattices
+  std::vector<render::HullInstance> hulls_;
+  std::vector<std::size_t> hulls_in_view_;
+  double tick_period_s_ = 0.0;
   render::FlyInput keys_;
   double look_dx_ = 0.0, look_dy_ = 0.0;
   bool hud_on_ = true;

@@ -47,3 +47,34 @@ TEST_CASE("spreading two fingers moves forward over the water, pinching moves ba
   apply_touch_motion(c, slide);
   CHECK(c.position.x == Approx(-10.0));
 }
+
+TEST_CASE("two quick taps in one place are a double tap; a drag, a slow press or a pinch is not") {
+  using ocean::render::DoubleTap;
+  using ocean::render::TouchPoint;
+  const std::vector<TouchPoint> none, finger{{1, 100.0, 200.0}}, moved{{1, 160.0, 200.0}};
+  const std::vector<TouchPoint> two{{1, 100.0, 200.0}, {2, 300.0, 200.0}};
+  const auto tap = [&](DoubleTap& d, double at, const std::vector<TouchPoint>& where) {
+    d.update(where, at);
+    return d.update(none, at + 0.1);
+  };
+  DoubleTap d;
+  CHECK(!tap(d, 1.0, finger));
+  CHECK(tap(d, 1.3, finger));   // the second tap 0.3 s later
+  CHECK(!tap(d, 1.6, finger));  // a third starts a new pair
+  CHECK(!tap(d, 3.0, finger));
+  CHECK(!tap(d, 3.9, finger));  // too long after the first
+  DoubleTap slow;
+  CHECK(!tap(slow, 1.0, finger));
+  slow.update(finger, 1.3);
+  CHECK(!slow.update(none, 1.8));  // held half a second: a press, not a tap
+  DoubleTap drag;
+  CHECK(!tap(drag, 1.0, finger));
+  drag.update(finger, 1.2);
+  drag.update(moved, 1.25);
+  CHECK(!drag.update(none, 1.3));  // the finger moved 60 px: it turned the view
+  DoubleTap pinch;
+  CHECK(!tap(pinch, 1.0, finger));
+  pinch.update(two, 1.2);
+  pinch.update(finger, 1.25);
+  CHECK(!pinch.update(none, 1.3));
+}

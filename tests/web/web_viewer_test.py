@@ -159,6 +159,7 @@ def main():
     parser.add_argument("--scale", type=float, default=1.0, help="the page's render scale (its scale= parameter)")
     parser.add_argument("--fleet", default="", help="an ocean-server config with [[vessel]]s: the stream carries their wake")
     parser.add_argument("--screenshot", default="", help="where to keep the screenshot (PNG)")
+    parser.add_argument("--follow", type=int, default=-1, help="the camera follows this vessel of the fleet")
     args = parser.parse_args()
     for tool in (args.chromium, args.chromedriver):
         if not shutil.which(tool):
@@ -173,7 +174,7 @@ def main():
     try:
         browser = Browser(chromium, chromedriver, os.path.join(work, "chromium"))
         url = (f"http://127.0.0.1:{web_port}/index.html?connect=1&record=1&ui=0&profile={args.profile}"
-               f"&scale={args.scale}")
+               f"&scale={args.scale}" + (f"&follow={args.follow}" if args.follow >= 0 else ""))
         browser.open(url)
         want = [int(v) for v in args.size.split("x")]
         viewport = browser.set_viewport(*want)
@@ -230,6 +231,10 @@ def main():
             failures.append(f"no water at the bottom of the picture: mean rgb {water} (sky {sky})")
         if [width, height] != want:
             failures.append(f"screenshot is {width}x{height}, not {args.size}")
+        if args.fleet and report.get("vessels", 0) == 0:
+            failures.append("the page poses no vessel of the fleet")
+        if args.follow >= 0 and report.get("vessels_in_view", 0) == 0:
+            failures.append(f"following vessel {args.follow}, the page draws no hull")
         if report.get("rejected", 0) != 0:
             failures.append(f"the page rejected {report['rejected']} messages")
 
@@ -240,6 +245,7 @@ def main():
                           "decode_ms_median": report["decode_ms_median"], "kbps": report["kbps"],
                           "frames_compared_with_native": len(compared), "mismatched": len(mismatched),
                           "sky_rgb": [round(v, 3) for v in sky], "water_rgb": [round(v, 3) for v in water],
+                          "vessels": report.get("vessels"), "vessels_in_view": report.get("vessels_in_view"),
                           "fleet": args.fleet, "screenshot": args.screenshot}))
     except RuntimeError:
         pass  # the failure is in failures already

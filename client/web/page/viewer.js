@@ -3,7 +3,8 @@
 // this page's host), profile=ID, connect=1 (connect at once), record=1 (keep the received
 // messages), ui=0 (no panel or help over the sea, for screenshots), scale=S (render at S times
 // the page's pixels, 0.25..1, stretched to fit: for a device too weak for its own screen),
-// report=SECONDS (after that long, write the report into #report and stop).
+// report=SECONDS (after that long, write the report into #report and stop), follow=ID (the camera
+// follows vessel ID from behind and above, as the V key or a double tap do).
 'use strict';
 const params = new URLSearchParams(location.search);
 const canvas = document.getElementById('ocean');
@@ -84,6 +85,7 @@ var Module = {
     setInterval(showStatus, 500);
     if (params.get('record') === '1') Module.ccall('ocean_web_record', null, ['number'], [1]);
     if (params.get('connect') === '1') connect();
+    if (params.get('follow') !== null) Module.ccall('ocean_web_follow', null, ['number'], [Number(params.get('follow'))]);
     const seconds = Number(params.get('report') || 0);
     if (seconds > 0) setTimeout(finishReport, seconds * 1000);
   },

@@ -1,0 +1,86 @@
+#include "client/viewer/vessel_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ocean::viewer {
+
+render::HullInstance hull_instance(const client::HullState& h) {
+  const glm::vec3 bow(static_cast<float>(h.dir_x), 0.0f, static_cast<float>(h.dir_z));
+  const glm::vec3 starboard(-bow.z, 0.0f, bow.x), up(0.0f, 1.0f, 0.0f);
+  const float cp = std::cos(static_cast<float>(h.pitch_rad)), sp = std::sin(static_cast<float>(h.pitch_rad));
+  const float cr = std::cos(static_cast<float>(h.roll_rad)), sr = std::sin(static_cast<float>(h.roll_rad));
+  const glm::vec3 fwd = cp * bow + sp * up;             // the bow up by the pitch
+  const glm::vec3 lifted = -sp * bow + cp * up;
+  const glm::vec3 side = cr * starboard - sr * lifted;  // starboard down by the roll
+  const glm::vec3 top = sr * starboard + cr * lifted;
+  render::HullInstance hull;
+  hull.position = {h.x_m, h.heave_m, h.z_m};
+  hull.rotation = glm::mat3(fwd, top, side);
+  hull.length_m = static_cast<float>(h.hull.length_m);
+  hull.beam_m = static_cast<float>(h.hull.beam_m);
+  hull.draft_m = static_cast<float>(h.hull.draft_m);
+  return hull;
+}
+
+const std::vector<client::HullState>& VesselView::update(std::span<const model::VesselTrack> tracks,
+                                                         const codec::SurfaceQuery& sea, const codec::SurfaceFields& fields,
+                                                         double t_s, std::vector<render::HullInstance>& hulls,
+                                                         render::Renderer& renderer, render::Camera& camera) {
+  const std::vector<client::HullState>& posed = motion_.update(tracks, sea, fields, t_s);
+  hulls.clear();
+  std::vector<render::FoamTrail> trails;
+  for (const client::HullState& h : posed) {
+    hulls.push_back(hull_instance(h));
+    trails.push_back(render::foam_trail(h.x_m, h.z_m, h.dir_x, h.dir_z, h.speed_mps, h.hull.length_m, h.hull.beam_m));
+  }
+  renderer.set_trails(trails);
+  const double dt = t_s - last_t_s_;
+  last_t_s_ = t_s;
+  const auto followed = std::find_if(posed.begin(), posed.end(), [&](const client::HullState& h) { return h.id == follow_id_; });
+  if (followed != posed.end()) follow(*followed, dt, camera);
+  else eased_ = false;
+  return posed;
+}
+
+// Behind and above the hull, looking past it along its heading; eased (about a second) so a turn
+// at a waypoint swings the view round instead of snapping it.
+void VesselView::follow(const client::HullState& h, double dt_s, render::Camera& camera) {
+  const double back = 2.2 * h.hull.length_m + 15.0, up = 0.5 * h.hull.length_m + 6.0;
+  const glm::dvec3 target(h.x_m - back * h.dir_x, h.heave_m + up, h.z_m - back * h.dir_z);
+  const float yaw = static_cast<float>(std::atan2(-h.dir_x, -h.dir_z));
+  if (!eased_ || dt_s <= 0.0 || dt_s > 1.0) {
+    camera.position = target;
+    camera.yaw_rad = yaw;
+  } else {
+    const double k = 1.0 - std::exp(-dt_s / 0.8);
+    camera.position += (target - camera.position) * k;
+    const float turn = std::remainder(yaw - camera.yaw_rad, 2.0f * 3.14159265f);  // the short way round
+    camera.yaw_rad += static_cast<float>(k) * turn;
+  }
+  camera.pitch_rad = -0.8f * static_cast<float>(std::atan2(up, back));
+  eased_ = true;
+}
+
+void VesselView::cycle_follow() {
+  const std::vector<client::HullState>& hulls = motion_.hulls();
+  const auto at = std::find_if(hulls.begin(), hulls.end(), [&](const client::HullState& h) { return h.id == follow_id_; });
+  follow_id_ = at == hulls.end() ? (hulls.empty() ? -1 : hulls.front().id) : (at + 1 == hulls.end() ? -1 : (at + 1)->id);
+  eased_ = false;
+}
+
+std::string VesselView::in_view(const std::vector<std::size_t>& drawn) const {
+  std::string line;
+  char item[64];
+  const std::vector<client::HullState>& hulls = motion_.hulls();
+  for (const std::size_t i : drawn) {
+    if (i >= hulls.size() || line.size() > 160) continue;
+    std::snprintf(item, sizeof item, "%svessel %u %.1f m/s%s", line.empty() ? "" : ", ", hulls[i].id, hulls[i].speed_mps,
+                  hulls[i].id == follow_id_ ? " (following)" : "");
+    line += item;
+  }
+  return line;
+}
+
+}  // namespace ocean::viewer
