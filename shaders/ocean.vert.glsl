@@ -105,9 +105,10 @@ void main() {
   coarse_slope += wshape.yz;
   disp += wchop.xy;
   jacobian += wchop.z;
-  // A wake's crests whiten where they are about to break: slopes beyond ~0.2 (a Stokes wave
-  // breaks near 0.44), on every profile (the choppy ones fold too, through the Jacobian).
-  float wake_foam = clamp((length(wshape.yz) - 0.2) * 8.0, 0.0, 1.0);
+  // A wake's steep crests carry the foam its hull shed and whiten where they near breaking: from
+  // a slope of 0.1 (the Kelvin arms' cusps of a hull at speed), full at 0.3 (a Stokes wave breaks
+  // near 0.44), on every profile (the choppy ones fold too, through the Jacobian).
+  float wake_foam = clamp((length(wshape.yz) - 0.1) * 5.0, 0.0, 1.0) * 0.8;
 #else
   float wake_foam = 0.0;
 #endif

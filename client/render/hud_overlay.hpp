@@ -16,7 +16,7 @@ struct HudStats {
   double loss_percent = 0.0;
   std::string profile;          // stream profile name, e.g. "mobile"
   std::string extra;            // optional free text (one line), e.g. tiles drawn
-  std::string vessels;          // optional: the vessels in view, e.g. "vessel 3 7.0 m/s (following)"
+  std::string vessels;          // optional lines: the vessels in view, e.g. "vessel 3 7.0 m/s (following)"
 };
 
 class HudOverlay {

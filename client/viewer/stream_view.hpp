@@ -35,6 +35,7 @@ class StreamView {
   std::string vessels_in_view() const { return vessels_.in_view(scene_.hulls_in_view); }
 
   ViewScene& scene() { return scene_; }
+  const ViewScene& scene() const { return scene_; }
   render::Renderer& renderer() { return scene_.renderer; }
   render::HudOverlay& hud() { return scene_.hud; }
   render::Camera& camera() { return scene_.camera; }

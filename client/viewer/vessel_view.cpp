@@ -71,16 +71,23 @@ void VesselView::cycle_follow() {
 }
 
 std::string VesselView::in_view(const std::vector<std::size_t>& drawn) const {
-  std::string line;
-  char item[64];
+  // One line each, the followed one first; a HUD line of its own for each of the first four.
+  constexpr std::size_t kListed = 4;
   const std::vector<client::HullState>& hulls = motion_.hulls();
-  for (const std::size_t i : drawn) {
-    if (i >= hulls.size() || line.size() > 160) continue;
-    std::snprintf(item, sizeof item, "%svessel %u %.1f m/s%s", line.empty() ? "" : ", ", hulls[i].id, hulls[i].speed_mps,
-                  hulls[i].id == follow_id_ ? " (following)" : "");
-    line += item;
+  std::vector<std::size_t> shown;
+  for (const std::size_t i : drawn)
+    if (i < hulls.size()) shown.push_back(i);
+  std::stable_partition(shown.begin(), shown.end(), [&](std::size_t i) { return hulls[i].id == follow_id_; });
+  std::string text;
+  char line[64];
+  for (std::size_t n = 0; n < shown.size() && n < kListed; ++n) {
+    const client::HullState& h = hulls[shown[n]];
+    std::snprintf(line, sizeof line, "%svessel %u %.1f m/s%s", n ? "\n" : "", h.id, h.speed_mps,
+                  h.id == follow_id_ ? " (following)" : "");
+    text += line;
   }
-  return line;
+  if (shown.size() > kListed) text += "\n+" + std::to_string(shown.size() - kListed) + " more vessels in view";
+  return text;
 }
 
 }  // namespace ocean::viewer

@@ -108,6 +108,8 @@ void NetworkSource::fill_summary(ViewerSummary& s, const LoopResult& loop) {
   s.grid_changes = view_.grid_changes();
   s.uploads = view_.uploads();
   s.held_frames = view_.held_frames();
+  s.vessels = view_.hulls().size();
+  s.vessels_in_view = view_.scene().hulls_in_view.size();
   const client::TimelineCounters tc = net_.timeline().counters();
   s.timeline_stalls = tc.stalls;
   s.frames_late = tc.frames_late;
@@ -187,6 +189,7 @@ std::string summary_json(const ViewerSummary& s) {
   json.integer("frames_received", s.net.frames_received).fixed("latency_ms", s.latency_ms, 1);
   json.fixed("rtt_ms", s.net.rtt_ms, 2).fixed("loss_pct", s.net.loss_pct, 2).integer("uploads", s.uploads);
   json.integer("held_frames", s.held_frames).integer("timeline_stalls", s.timeline_stalls);
+  json.integer("vessels", s.vessels).integer("vessels_in_view", s.vessels_in_view);
   json.integer("frames_late", s.frames_late).integer("grid_changes", s.grid_changes).integer("connects", s.net.connects);
   json.text("transport", s.net.path).integer("frames_recorded", s.net.frames_recorded);
   json.fixed("decode_ms_per_received_frame", s.net.frames_received ? s.net.cpu_ms / s.net.frames_received : 0.0, 4);

@@ -26,6 +26,7 @@ struct ViewerSummary {
   std::uint64_t grid_changes = 0;
   std::uint64_t uploads = 0;
   std::uint64_t held_frames = 0;
+  std::uint64_t vessels = 0, vessels_in_view = 0;  // posed, and drawn, in the last frame
   std::uint64_t timeline_stalls = 0;
   std::uint64_t frames_late = 0;
   NetworkStats net;
