@@ -90,6 +90,9 @@ EMSCRIPTEN_KEEPALIVE void ocean_web_connect(const char* url, int profile_id) {
 EMSCRIPTEN_KEEPALIVE void ocean_web_disconnect() {
   if (viewer) viewer->disconnect();
 }
+EMSCRIPTEN_KEEPALIVE void ocean_web_camera(double x, double y, double z, double pitch_deg, double yaw_deg) {
+  if (viewer) viewer->place_camera(x, y, z, pitch_deg, yaw_deg);
+}
 EMSCRIPTEN_KEEPALIVE void ocean_web_follow(double id) {
   if (viewer) viewer->set_follow(static_cast<std::int64_t>(id));
 }

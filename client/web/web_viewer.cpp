@@ -40,6 +40,13 @@ bool WebViewer::init(std::string& error) {
   return true;
 }
 
+void WebViewer::place_camera(double x, double y, double z, double pitch_deg, double yaw_deg) {
+  constexpr double kRadPerDeg = 3.14159265358979 / 180.0;
+  camera_.position = {x, std::max(1.0, y), z};
+  camera_.pitch_rad = static_cast<float>(std::clamp(pitch_deg, -89.0, 89.0) * kRadPerDeg);
+  camera_.yaw_rad = static_cast<float>(yaw_deg * kRadPerDeg);
+}
+
 void WebViewer::connect(const std::string& url, std::uint8_t profile_id) {
   disconnect();
   client::ClientSessionConfig config;

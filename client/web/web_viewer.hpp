@@ -58,6 +58,8 @@ class WebViewer {
   // The follow camera's next vessel (the V key, a double tap).
   void cycle_follow() { vessels_.cycle_follow(); }
   void set_follow(std::int64_t id) { vessels_.set_follow(id); }
+  // Puts the eye at (x, y, z) world metres, turned as the native viewers' --pitch and --yaw.
+  void place_camera(double x, double y, double z, double pitch_deg, double yaw_deg);
 
   // JSON: state, stream, counts, decode ms per frame, fps, and the recent frame hashes.
   std::string report() const;

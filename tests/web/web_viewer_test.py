@@ -160,6 +160,7 @@ def main():
     parser.add_argument("--fleet", default="", help="an ocean-server config with [[vessel]]s: the stream carries their wake")
     parser.add_argument("--screenshot", default="", help="where to keep the screenshot (PNG)")
     parser.add_argument("--follow", type=int, default=-1, help="the camera follows this vessel of the fleet")
+    parser.add_argument("--camera", default="", help="X,Y,Z,PITCH,YAW: where the page's eye is (its camera= parameter)")
     args = parser.parse_args()
     for tool in (args.chromium, args.chromedriver):
         if not shutil.which(tool):
@@ -174,7 +175,8 @@ def main():
     try:
         browser = Browser(chromium, chromedriver, os.path.join(work, "chromium"))
         url = (f"http://127.0.0.1:{web_port}/index.html?connect=1&record=1&ui=0&profile={args.profile}"
-               f"&scale={args.scale}" + (f"&follow={args.follow}" if args.follow >= 0 else ""))
+               f"&scale={args.scale}" + (f"&follow={args.follow}" if args.follow >= 0 else "")
+               + (f"&camera={args.camera}" if args.camera else ""))
         browser.open(url)
         want = [int(v) for v in args.size.split("x")]
         viewport = browser.set_viewport(*want)

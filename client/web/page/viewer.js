@@ -4,7 +4,8 @@
 // messages), ui=0 (no panel or help over the sea, for screenshots), scale=S (render at S times
 // the page's pixels, 0.25..1, stretched to fit: for a device too weak for its own screen),
 // report=SECONDS (after that long, write the report into #report and stop), follow=ID (the camera
-// follows vessel ID from behind and above, as the V key or a double tap do).
+// follows vessel ID from behind and above, as the V key or a double tap do), camera=X,Y,Z,PITCH,YAW
+// (the eye's place in world metres and its turn in degrees, as ocean-viewer's flags).
 'use strict';
 const params = new URLSearchParams(location.search);
 const canvas = document.getElementById('ocean');
@@ -85,6 +86,8 @@ var Module = {
     setInterval(showStatus, 500);
     if (params.get('record') === '1') Module.ccall('ocean_web_record', null, ['number'], [1]);
     if (params.get('connect') === '1') connect();
+    const eye = (params.get('camera') || '').split(',').map(Number);
+    if (eye.length === 5 && eye.every(Number.isFinite)) Module.ccall('ocean_web_camera', null, Array(5).fill('number'), eye);
     if (params.get('follow') !== null) Module.ccall('ocean_web_follow', null, ['number'], [Number(params.get('follow'))]);
     const seconds = Number(params.get('report') || 0);
     if (seconds > 0) setTimeout(finishReport, seconds * 1000);
