@@ -7,7 +7,7 @@ if(NOT OCEAN_EMCMAKE)
   message(WARNING "OCEAN_BUILD_WEB: emcmake not found (apt install emscripten); the web viewer is not built")
   return()
 endif()
-if(NOT TARGET ocean_protocol_schema OR NOT TARGET ocean_render_shaders OR NOT TARGET ocean_sky_assets)
+if(NOT TARGET ocean_protocol_schema OR NOT TARGET ocean_render_shaders OR NOT TARGET ocean_sky_web_assets)
   message(WARNING "OCEAN_BUILD_WEB: needs the protocol, client/render and assets folders; the web viewer is not built")
   return()
 endif()
@@ -41,10 +41,10 @@ ExternalProject_Add(ocean_web
     -DOCEAN_SOURCE_DIR=${PROJECT_SOURCE_DIR}
     -DOCEAN_PROTOCOL_GENERATED_DIR=${OCEAN_PROTOCOL_GENERATED_DIR}
     -DOCEAN_RENDER_GENERATED_DIR=${OCEAN_RENDER_GENERATED_DIR}
-    -DOCEAN_SKY_DIR=${CMAKE_BINARY_DIR}/assets/sky
+    -DOCEAN_SKY_DIR=${CMAKE_BINARY_DIR}/assets/sky-web
     -DOCEAN_WEB_OUTPUT_DIR=${OCEAN_WEB_DIR}
   BUILD_COMMAND ${ocean_web_env} ${CMAKE_COMMAND} --build <BINARY_DIR> -j ${ocean_web_jobs}
   INSTALL_COMMAND ""
   BUILD_ALWAYS ON  # its own build decides what changed in the shared sources
-  DEPENDS ocean_protocol_schema ocean_render_shaders ocean_sky_assets)
+  DEPENDS ocean_protocol_schema ocean_render_shaders ocean_sky_web_assets)
 install(DIRECTORY ${OCEAN_WEB_DIR}/ DESTINATION ${CMAKE_INSTALL_DATADIR}/ocean/web)

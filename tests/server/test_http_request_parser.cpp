@@ -34,3 +34,15 @@ TEST_CASE("malformed or oversized requests are bad", "[http]") {
   CHECK(flood.consume("a") == Result::bad);
   CHECK(flood.consume("\r\n\r\n") == Result::bad);  // stays bad
 }
+
+TEST_CASE("Accept-Encoding and If-None-Match are read, whatever their names' case", "[http]") {
+  HttpRequestParser parser;
+  REQUIRE(parser.consume("GET /ocean-web.wasm HTTP/1.1\r\nHost: a\r\naccept-ENCODING:  gzip, deflate, br \r\n"
+                         "If-None-Match: \"00ff\"\r\nX-Other: gzip\r\n\r\n") == Result::good);
+  CHECK(parser.request().accept_encoding == "gzip, deflate, br");
+  CHECK(parser.request().if_none_match == "\"00ff\"");
+  HttpRequestParser none;
+  REQUIRE(none.consume("GET / HTTP/1.0\r\nX-Accept-Encoding: gzip\r\nbroken line\r\n\r\n") == Result::good);
+  CHECK(none.request().accept_encoding.empty());
+  CHECK(none.request().if_none_match.empty());
+}

@@ -21,7 +21,17 @@ std::filesystem::path web_root_with(const std::vector<std::string>& names) {
   return dir;
 }
 
-HttpRequest get(const std::string& target) { return {"GET", target, "HTTP/1.1"}; }
+HttpRequest get(const std::string& target, const std::string& accept = "", const std::string& etag = "") {
+  return {"GET", target, "HTTP/1.1", accept, etag};
+}
+
+// A header line's value in a reply's headers, empty when absent.
+std::string header(const HttpReply& reply, const std::string& name) {
+  const std::size_t at = reply.headers.find(name + ": ");
+  if (at == std::string::npos) return "";
+  const std::size_t from = at + name.size() + 2;
+  return reply.headers.substr(from, reply.headers.find("\r\n", from) - from);
+}
 
 }  // namespace
 
@@ -40,6 +50,40 @@ TEST_CASE("WebFiles serves the page, its script and module with their types, and
   std::ofstream(root / "secret.txt") << "not served";
   for (const char* target : {"/secret.txt", "/../index.html", "/web/index.html", "index.html", "/INDEX.HTML"})
     CHECK(files->reply(get(target)).status == 404);
+  std::filesystem::remove_all(root);
+}
+
+TEST_CASE("WebFiles sends the gzipped copy to a client that takes gzip, and a 304 for the copy a client holds") {
+  auto root = web_root_with(WebFiles::names());
+  std::ofstream(root / "ocean-web.wasm.gz") << "gzipped module";  // what the build writes beside it
+  std::string error;
+  const auto files = WebFiles::load(root.string(), 7701, error);
+  REQUIRE(files);
+  const HttpReply plain = files->reply(get("/ocean-web.wasm"));
+  CHECK(plain.content() == "contents of ocean-web.wasm");
+  CHECK(header(plain, "Content-Encoding").empty());
+  CHECK(header(plain, "Vary") == "Accept-Encoding");
+  CHECK(header(plain, "Cache-Control") == "no-cache");  // revalidate: the names carry no version
+  for (const char* accept : {"gzip, deflate, br", "br;q=1.0, gzip;q=0.8", "*"}) {
+    const HttpReply gz = files->reply(get("/ocean-web.wasm", accept));
+    INFO(accept);
+    CHECK(gz.content() == "gzipped module");
+    CHECK(header(gz, "Content-Encoding") == "gzip");
+    CHECK(gz.content_type == "application/wasm");
+    CHECK(header(gz, "ETag") != header(plain, "ETag"));  // two representations, two tags
+  }
+  CHECK(files->reply(get("/ocean-web.wasm", "gzip;q=0, br")).content() == "contents of ocean-web.wasm");
+  CHECK(files->reply(get("/ocean-web.wasm", "deflate")).content() == "contents of ocean-web.wasm");
+  CHECK(header(files->reply(get("/viewer.js", "gzip")), "Content-Encoding").empty());  // no viewer.js.gz here
+  // Revalidation: the tag the client holds gives a 304 with no body; another tag, the file.
+  const std::string tag = header(files->reply(get("/ocean-web.wasm", "gzip")), "ETag");
+  REQUIRE(tag.size() > 4);
+  const HttpReply again = files->reply(get("/ocean-web.wasm", "gzip", tag));
+  CHECK(again.status == 304);
+  CHECK(again.content().empty());
+  CHECK(header(again, "ETag") == tag);
+  CHECK(files->reply(get("/ocean-web.wasm", "gzip", "\"0000000000000000\"")).status == 200);
+  CHECK(files->reply(get("/ocean-web.wasm", "", tag)).status == 200);  // the tag of the other representation
   std::filesystem::remove_all(root);
 }
 

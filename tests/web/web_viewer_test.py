@@ -136,6 +136,13 @@ class Browser:
 REPORT = ("return (typeof Module !== 'undefined' && Module.calledRun) ? "
           "Module.UTF8ToString(Module.ccall('ocean_web_report', 'number', [], [])) : null;")
 MESSAGES = "return Module.UTF8ToString(Module.ccall('ocean_web_recorded_messages', 'number', [], []));"
+# What crossed the wire for the page and everything it loaded (headers included, as the browser
+# counts them), by file: the Resource Timing of a same-origin page.
+PAGE_BYTES = ("return [performance.getEntriesByType('navigation')[0]]"
+              ".concat(performance.getEntriesByType('resource'))"
+              ".map(e => [new URL(e.name).pathname, e.transferSize, e.decodedBodySize]);")
+# issue 38: the whole page within 350 KB on the wire (a phone's first load).
+MAX_PAGE_BYTES = 350_000
 
 
 def mean_rgb(rows, channels, first, last):
@@ -203,6 +210,12 @@ def main():
             with open(args.screenshot, "wb") as f:
                 f.write(png)
         messages = browser.run(MESSAGES)
+        loaded = browser.run(PAGE_BYTES)
+        page_bytes = sum(entry[1] for entry in loaded)
+        if page_bytes > MAX_PAGE_BYTES:
+            failures.append(f"the page took {page_bytes} bytes on the wire, over {MAX_PAGE_BYTES}: {loaded}")
+        if not any(path.endswith(".wasm") for path, _, _ in loaded):
+            failures.append(f"the page's transfers list no module: {loaded}")
 
         # The WebAssembly decoder against the native one, on the same bytes.
         stream = b"".join(base64.b64decode(line) for line in messages.split("\n") if line)
@@ -248,6 +261,7 @@ def main():
                           "frames_compared_with_native": len(compared), "mismatched": len(mismatched),
                           "sky_rgb": [round(v, 3) for v in sky], "water_rgb": [round(v, 3) for v in water],
                           "vessels": report.get("vessels"), "vessels_in_view": report.get("vessels_in_view"),
+                          "page_bytes": page_bytes, "page_files": loaded,
                           "fleet": args.fleet, "screenshot": args.screenshot}))
     except RuntimeError:
         pass  # the failure is in failures already

@@ -15,6 +15,7 @@ constexpr double kSlowestReplyBytesPerS = 16 * 1024;
 const char* reason_phrase(int status) {
   switch (status) {
     case 200: return "OK";
+    case 304: return "Not Modified";
     case 400: return "Bad Request";
     case 404: return "Not Found";
     case 405: return "Method Not Allowed";
@@ -29,6 +30,7 @@ std::string HttpReply::to_wire(bool include_body) const {
   std::string out = "HTTP/1.1 " + std::to_string(status) + " " + reason_phrase(status) + "\r\n";
   out += "Content-Type: " + content_type + "\r\n";
   out += "Content-Length: " + std::to_string(content().size()) + "\r\n";
+  out += headers;
   out += "Connection: close\r\n\r\n";
   if (include_body && !shared_body) out += body;
   return out;

@@ -18,12 +18,22 @@
 namespace ocean::server {
 
 struct HttpReply {
+  HttpReply() = default;
+  HttpReply(int status_code, std::string type, std::string text, std::shared_ptr<const std::string> shared = nullptr,
+            std::string more_headers = {})
+      : status(status_code),
+        content_type(std::move(type)),
+        body(std::move(text)),
+        shared_body(std::move(shared)),
+        headers(std::move(more_headers)) {}
+
   int status = 200;
   std::string content_type = "text/plain; charset=utf-8";
   std::string body;
   // A large body every reply shares instead of `body` (the web viewer's files): a connection then
   // holds a pointer to it, not a copy, so many slow downloads cost little memory.
   std::shared_ptr<const std::string> shared_body = nullptr;
+  std::string headers;  // more header lines, each ending in \r\n (Content-Encoding, ETag, ...)
 
   std::string_view content() const { return shared_body ? std::string_view(*shared_body) : std::string_view(body); }
   // The status line and headers, then `body` when include_body and the body is not shared.

@@ -1,5 +1,6 @@
 #include "web_files.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -25,33 +26,79 @@ const std::vector<std::string>& WebFiles::names() {
   return kNames;
 }
 
+namespace {
+
+std::shared_ptr<const std::string> read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return nullptr;
+  return std::make_shared<const std::string>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// FNV-1a 64 of the content, quoted: strong enough to tell two builds' files apart.
+std::string etag_of(std::string_view content) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const char c : content) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+  char text[24];
+  std::snprintf(text, sizeof text, "\"%016llx\"", static_cast<unsigned long long>(h));
+  return text;
+}
+
+// "gzip" among the codings the client takes, not refused with q=0 (RFC 9110 12.5.3).
+bool takes_gzip(std::string_view accept) {
+  while (!accept.empty()) {
+    const std::size_t comma = accept.find(',');
+    std::string_view item = accept.substr(0, comma);
+    accept = comma == std::string_view::npos ? std::string_view() : accept.substr(comma + 1);
+    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+    const std::string_view coding = item.substr(0, item.find(';'));
+    const bool refused = item.find("q=0") != std::string_view::npos && item.find("q=0.") == std::string_view::npos;
+    if ((coding == "gzip" || coding == "x-gzip" || coding == "*") && !refused) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 std::optional<WebFiles> WebFiles::load(const std::string& root, std::uint16_t ws_port, std::string& error) {
   WebFiles files;
   for (const std::string& name : names()) {
     const std::filesystem::path path = std::filesystem::path(root) / name;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    const auto content = read_file(path);
+    if (!content) {
       error = "--web-root '" + root + "' has no " + name + " (build the web viewer with -DOCEAN_BUILD_WEB=ON)";
       return std::nullopt;
     }
-    HttpReply reply{200, content_type(name), {},
-                    std::make_shared<const std::string>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>())};
-    files.replies_["/" + name] = std::move(reply);
+    const std::string etag = etag_of(*content);
+    const std::string cache = "Cache-Control: no-cache\r\nVary: Accept-Encoding\r\n";
+    Variants v{{200, content_type(name), {}, content, cache + "ETag: " + etag + "\r\n"}, std::nullopt};
+    if (const auto gz = read_file(path.string() + ".gz"))
+      v.gzip = HttpReply{200, content_type(name), {}, gz,
+                         cache + "Content-Encoding: gzip\r\nETag: " + etag.substr(0, etag.size() - 1) + "-gz\"\r\n"};
+    files.replies_["/" + name] = std::move(v);
   }
   files.replies_["/"] = files.replies_["/index.html"];
-  files.replies_["/ocean-web.json"] = {200, "application/json", "{\"ws_port\": " + std::to_string(ws_port) + "}\n"};
+  files.replies_["/ocean-web.json"] = {{200, "application/json", "{\"ws_port\": " + std::to_string(ws_port) + "}\n"}, std::nullopt};
   return files;
 }
 
 HttpReply WebFiles::reply(const HttpRequest& request) const {
   const auto found = replies_.find(request.target);
   if (found == replies_.end()) return {404, "text/plain; charset=utf-8", "not found\n"};
-  return found->second;
+  const Variants& v = found->second;
+  const HttpReply& chosen = v.gzip && takes_gzip(request.accept_encoding) ? *v.gzip : v.identity;
+  // The copy the client holds is this one: only the headers again.
+  const std::size_t etag_at = chosen.headers.find("ETag: ");
+  if (!request.if_none_match.empty() && etag_at != std::string::npos) {
+    const std::string etag = chosen.headers.substr(etag_at + 6, chosen.headers.find("\r\n", etag_at) - etag_at - 6);
+    if (request.if_none_match == "*" || request.if_none_match.find(etag) != std::string::npos)
+      return {304, chosen.content_type, {}, nullptr, chosen.headers};
+  }
+  return chosen;
 }
 
 std::size_t WebFiles::total_bytes() const {
   std::size_t n = 0;
-  for (const auto& [target, reply] : replies_) n += reply.content().size();
+  for (const auto& [target, v] : replies_) n += v.identity.content().size() + (v.gzip ? v.gzip->content().size() : 0);
   return n;
 }
 

@@ -1,7 +1,9 @@
 // WebFiles: the browser viewer's files as --web-listen serves them - the page, its script and the
 // WebAssembly module, read once at startup from --web-root, plus /ocean-web.json telling the page
 // which port the WebSocket listener has. Only these names are served: no path from a request
-// ever reaches the file system.
+// ever reaches the file system. Each file is sent gzipped to a client that takes gzip (the build
+// writes NAME.gz beside NAME; without it, as is), with an ETag of its content so a page loaded
+// again costs a 304 per file, not the module again.
 #pragma once
 
 #include "http_connection.hpp"
@@ -31,7 +33,11 @@ class WebFiles {
   std::size_t total_bytes() const;
 
  private:
-  std::map<std::string, HttpReply> replies_;  // by request target
+  struct Variants {
+    HttpReply identity;
+    std::optional<HttpReply> gzip;
+  };
+  std::map<std::string, Variants> replies_;  // by request target
 };
 
 // The first folder among --web-root's defaults (the build tree's web/, then the installed

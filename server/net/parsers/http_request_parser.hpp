@@ -12,6 +12,10 @@ struct HttpRequest {
   std::string method;  // "GET"
   std::string target;  // "/metrics" (a query string is dropped)
   std::string version; // "HTTP/1.1"
+  // The two headers the page server reads (values as sent, empty when absent): which encodings
+  // the client takes, and the ETag of the copy it holds.
+  std::string accept_encoding;
+  std::string if_none_match;
 };
 
 class HttpRequestParser {
@@ -25,6 +29,7 @@ class HttpRequestParser {
 
  private:
   Result parse_request_line(std::string_view line);
+  void parse_headers(std::string_view headers);
 
   std::string buffer_;
   Result result_ = Result::need_more;
