@@ -48,6 +48,22 @@ def check_queries(addr, token, work, admin, expect, failures, sanitized):
     expect("query with no point", admin(addr, token, "query"), 2, "1 to 2048 points")
     expect("query of a profile not offered", admin(addr, token, "query", "--at", "0,0", "--profile", "lite"), 3,
            "profile_unavailable")
+    # The flags' corners: one point, the largest grid, the range ends of --repeat and --rate.
+    out = expect("query a 1 x 1 grid", admin(addr, token, "query", "--grid", "5,5,9,9,1,1", "--repeat", "1", "--rate",
+                                             "0.1"), 0)
+    if out and len(json.loads(out.strip().splitlines()[-1])["points"]) != 1:
+        failures.append(f"a 1 x 1 grid is not one point: {out.strip()[:200]}")
+    out = expect("query 2048 points", admin(addr, token, "query", "--grid", "-1e6,-1e6,1e6,1e6,64,32", "--at", "1,1"), 2,
+                 "1 to 2048 points")  # 2049 with the --at
+    out = expect("query the largest grid", admin(addr, token, "query", "--grid", "-1e6,-1e6,1e6,1e6,64,32", "--repeat",
+                                                 "3", "--rate", "1000"), 0)
+    if out and json.loads(out.strip().splitlines()[-1]).get("points") != 2048:
+        failures.append(f"the largest grid is not 2048 points: {out.strip()[:200]}")
+    for flags, says in ((["--grid", "0,0,1,1,65,32"], "NX * NZ <= 2048"), (["--grid", "0,0,1,1,0,4"], "NX, NZ >= 1"),
+                        (["--grid", "0,0,1,1,2.5,4"], "whole NX"), (["--at", "inf,0"], "--at"), (["--at", "1"], "--at"),
+                        (["--at", "0,0", "--repeat", "0"], "--repeat"), (["--at", "0,0", "--rate", "1001"], "--rate"),
+                        (["--at", "0,0", "--profile", "nope"], "not a profile")):
+        expect(f"query {' '.join(flags)}", admin(addr, token, "query", *flags), 2, says)
 
 
 def main():

@@ -6,6 +6,9 @@
 #include "surface_query.hpp"
 
 #include <cmath>
+#include <iterator>
+#include <limits>
+#include <thread>
 
 using namespace ocean::server;
 using namespace ocean::server::test;
@@ -86,6 +89,30 @@ TEST_CASE("a HeightQuery's answer is the viewer's height_at within the stream's 
   }
 }
 
+TEST_CASE("the points budget of every connection together holds two admins to it, with the wait") {
+  SessionCoreOptions options;
+  options.query_points_per_s = 500.0;  // a second of it is a 400-point batch and a bit
+  options.query_point_burst = 500.0;
+  SessionHarness harness(wake_config(), options);
+  auto first = harness.client(), second = harness.client();
+  first->hello(proto::Hello{1, 0, ocean::wire::Transport::tcp, "admin-1"});
+  second->hello(proto::Hello{1, 0, ocean::wire::Transport::tcp, "admin-2"});
+  const std::vector<SessionTestClient*> all{first.get(), second.get()};
+  REQUIRE(pump_until(all, [&] { return first->completed_heights.size() > 3 && second->completed_heights.size() > 3; }));
+  first->send_tcp(proto::encode(query_of(1, 1)));
+  REQUIRE(pump_until(all, [&] { return first->height_answers.size() == 1; }));
+  second->send_tcp(proto::encode(query_of(1, 2)));  // 400 more points within the same second
+  REQUIRE(pump_until(all, [&] { return !second->errors.empty() || !second->height_answers.empty(); }));
+  REQUIRE(second->errors.size() == 1);
+  CHECK(second->errors[0].code == proto::Reason::rate_limited);
+  CHECK(second->errors[0].text.find("query points a second over every connection") != std::string::npos);
+  CHECK(second->errors[0].text.find("retry in") != std::string::npos);
+  std::this_thread::sleep_for(std::chrono::milliseconds(900));  // the budget refills
+  second->send_tcp(proto::encode(query_of(1, 3)));
+  REQUIRE(pump_until(all, [&] { return !second->height_answers.empty(); }));
+  CHECK(!second->closed());
+}
+
 TEST_CASE("HeightQuery abuse is refused with reasons while viewers keep streaming") {
   SessionHarness harness(wake_config());
   auto viewer = harness.client();
@@ -158,6 +185,42 @@ TEST_CASE("HeightQuery abuse is refused with reasons while viewers keep streamin
     CHECK(admin->errors.front().code == proto::Reason::rate_limited);
     CHECK(admin->errors.front().text.find("retry in") != std::string::npos);
     CHECK(admin->errors.back().text.find("closing") != std::string::npos);
+  }
+  SECTION("the corners of a batch: 1 point, 2048 points anywhere in the doubles, every profile id") {
+    proto::HeightQuery q = query_of(0, 20);
+    q.points = {ocean::wire::QueryPoint(0.0, 0.0)};
+    admin->send_tcp(proto::encode(q));
+    REQUIRE(pump_until(all, [&] { return admin->height_answers.size() == 1; }));
+    CHECK(admin->height_answers[0].samples.size() == 1);
+    // The full batch, from the largest doubles to the wake square's edges and one ulp past them.
+    const double big = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
+    const double edges[] = {-big, -1e300, -1e15, -256.0, std::nextafter(-256.0, -300.0), -tiny, 0.0, tiny,
+                            std::nextafter(256.0, 0.0), 256.0, 1e15, 1e300, big};
+    q.points.clear();
+    for (std::size_t i = 0; q.points.size() < proto::kMaxQueryPoints; ++i)
+      q.points.emplace_back(edges[i % std::size(edges)], edges[(i / std::size(edges)) % std::size(edges)]);
+    q.request_id = 21;
+    admin->send_tcp(proto::encode(q));
+    REQUIRE(pump_until(all, [&] { return admin->height_answers.size() == 2; }));
+    REQUIRE(admin->height_answers[1].samples.size() == proto::kMaxQueryPoints);
+    for (const ocean::wire::SurfaceSample& sample : admin->height_answers[1].samples) {
+      CHECK(std::isfinite(sample.height_m()));
+      CHECK(std::abs(sample.height_m()) < 50.0f);  // a 9 m/s sea and one hull's wake
+      CHECK(std::isfinite(sample.vertical_velocity_mps()));
+      CHECK(sample.normal_y() > 0.0f);
+    }
+    for (const int profile : {5, 2, 255}) {  // offered; a profile not offered; no profile at all
+      q.profile_id = static_cast<std::uint8_t>(profile);
+      q.request_id = 30 + profile;
+      const std::size_t seen = admin->errors.size() + admin->height_answers.size();
+      admin->send_tcp(proto::encode(q));
+      REQUIRE(pump_until(all, [&] { return admin->errors.size() + admin->height_answers.size() > seen; }));
+    }
+    REQUIRE(admin->height_answers.size() == 3);
+    CHECK(admin->height_answers[2].profile_id == 5);
+    REQUIRE(admin->errors.size() == 2);
+    CHECK(admin->errors[0].code == proto::Reason::profile_unavailable);
+    CHECK(admin->errors[1].code == proto::Reason::unknown_profile);
   }
   SECTION("a flood that reads nothing is closed") {
     proto::HeightQuery q = query_of(0, 10);

@@ -1,4 +1,4 @@
-# Runs ocean-viewer three ways and checks each exit status against README's table.
+# Runs ocean-viewer several ways and checks each exit status against README's table.
 function(expect_status want)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE got OUTPUT_QUIET ERROR_VARIABLE err TIMEOUT 60)
   if(NOT got EQUAL want)
@@ -11,6 +11,14 @@ endfunction()
 
 expect_status(2 ${VIEWER} --server 127.0.0.1:1 --frames banana)
 expect_status(3 ${VIEWER} --server 127.0.0.1:1 --headless --first-frame-timeout 1)
+# The vessel flags at and past their ranges: a bad value is 2, a record nobody can write is 1.
+expect_status(2 ${VIEWER} --server 127.0.0.1:1 --camera-x 2e6)
+expect_status(2 ${VIEWER} --server 127.0.0.1:1 --camera-z -1000001)
+expect_status(2 ${VIEWER} --server 127.0.0.1:1 --follow -1)
+expect_status(2 ${VIEWER} --server 127.0.0.1:1 --follow 4294967296)
+expect_status(1 ${VIEWER} --server 127.0.0.1:1 --headless --record-hulls /nonexistent/dir/hulls.csv)
+expect_status(3 ${VIEWER} --server 127.0.0.1:1 --headless --first-frame-timeout 1 --camera-x 1e6 --camera-z -1e6
+              --follow 4294967295)
 
 # A server that offers only lite, on a port the kernel picks: its log names the port.
 set(log ${CMAKE_CURRENT_BINARY_DIR}/viewer_exit_server.log)
