@@ -76,7 +76,9 @@ float trail_foam(vec2 xz) {
     float edge = clamp((half_width - across) / max(0.35 * half_width, 0.01), 0.0, 1.0);
     foam = max(foam, b.z * along * edge);
   }
-  vec2 cell = floor((xz + u_eye_xz) * 0.7);
+  if (foam <= 0.0) return 0.0;
+  // 0.75 cells a metre: the eye's 1024 m wrap is a whole number of cells, so the grain never jumps.
+  vec2 cell = floor((xz + u_eye_xz) * 0.75);
   float grain = fract(sin(dot(cell, vec2(12.9898, 78.233))) * 43758.5453);
   return foam * (0.55 + 0.45 * grain);
 }

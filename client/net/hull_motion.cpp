@@ -23,7 +23,7 @@ const std::vector<HullState>& HullMotion::update(std::span<const model::VesselTr
   last_t_s_ = t_s;
   hulls_.clear();
   for (const model::VesselTrack& track : tracks) {
-    if (!model::present_at(track.presence, t_s)) continue;
+    if (!model::present_at(track.presence, t_s) || is_dropped_object(track.hull)) continue;
     const model::HullPose pose = model::pose_at(track, t_s);
     const model::HullPose later = model::pose_at(track, t_s + 0.5), earlier = model::pose_at(track, t_s - 0.5);
     HullState s;
@@ -36,10 +36,11 @@ const std::vector<HullState>& HullMotion::update(std::span<const model::VesselTr
     s.speed_mps = std::hypot(later.x_m - earlier.x_m, later.z_m - earlier.z_m);
     // Starboard: the heading turned a right angle (a heading along +x has starboard along +z).
     const double side_x = -pose.dir_z, side_z = pose.dir_x;
-    std::array<double, 5> whole{};
+    std::array<double, 5> whole{}, along{}, across{};
     for (std::size_t i = 0; i < kPoints.size(); ++i) {
-      const double along = kPoints[i][0] * track.hull.length_m, across = kPoints[i][1] * track.hull.beam_m;
-      const double x = s.x_m + along * pose.dir_x + across * side_x, z = s.z_m + along * pose.dir_z + across * side_z;
+      along[i] = kPoints[i][0] * track.hull.length_m, across[i] = kPoints[i][1] * track.hull.beam_m;
+      const double x = s.x_m + along[i] * pose.dir_x + across[i] * side_x;
+      const double z = s.z_m + along[i] * pose.dir_z + across[i] * side_z;
       s.surface_m[i] = sea.height_at(fields, x, z, codec::SurfaceQuery::Lattices::sea);
       whole[i] = sea.height_at(fields, x, z);
     }
@@ -60,8 +61,7 @@ const std::vector<HullState>& HullMotion::update(std::span<const model::VesselTr
     // The keel under each point: the waterline's plane through the pose, less the draft.
     s.keel_above_m = -1e9;
     for (std::size_t i = 0; i < kPoints.size(); ++i) {
-      const double along = kPoints[i][0] * track.hull.length_m, across = kPoints[i][1] * track.hull.beam_m;
-      const double waterline = s.heave_m + along * std::tan(s.pitch_rad) - across * std::tan(s.roll_rad);
+      const double waterline = s.heave_m + along[i] * std::tan(s.pitch_rad) - across[i] * std::tan(s.roll_rad);
       s.keel_above_m = std::max(s.keel_above_m, waterline - track.hull.draft_m - whole[i]);
     }
     hulls_.push_back(s);

@@ -37,9 +37,14 @@ struct HullState {
   double keel_above_m = 0.0;
 };
 
+// A dropped object presses on the water as a round hull (length = beam, PROTOCOL.md 8, drop): its
+// rings are the wake's, but it is no vessel to draw, pose or follow.
+inline bool is_dropped_object(const model::Hull& hull) { return hull.length_m == hull.beam_m; }
+
 class HullMotion {
  public:
-  // Every vessel present at t_s (track time: the server's tick / tick rate), posed on `fields`,
+  // Every vessel present at t_s (track time: the server's tick / tick rate; dropped objects left
+  // out), posed on `fields`,
   // the frame shown at t_s. A vessel first seen, or a jump in time, takes the surface's pose at once.
   const std::vector<HullState>& update(std::span<const model::VesselTrack> tracks, const codec::SurfaceQuery& sea,
                                        const codec::SurfaceFields& fields, double t_s);

@@ -20,9 +20,8 @@ bool sphere_visible(const Frustum& frustum, const glm::vec3& centre, float radiu
 }  // namespace
 
 HullLight hull_light(const Renderer& renderer) {
-  const RendererDesc& d = renderer.desc();
   const glm::vec3 horizon = renderer.horizon_colour();
-  return {d.sun_direction, d.sun_colour * (1.0f - 0.9f * renderer.overcast()), horizon, horizon, d.fog_density};
+  return {renderer.desc().sun_direction, renderer.sun_colour(), horizon, horizon, renderer.fog()};
 }
 
 bool HullRenderer::init(std::string& error) {
@@ -37,7 +36,7 @@ bool HullRenderer::init(std::string& error) {
   u_sun_colour_ = glGetUniformLocation(program_, "u_sun_colour");
   u_sky_light_ = glGetUniformLocation(program_, "u_sky_light");
   u_fog_colour_ = glGetUniformLocation(program_, "u_fog_colour");
-  u_fog_density_ = glGetUniformLocation(program_, "u_fog_density");
+  u_fog_ = glGetUniformLocation(program_, "u_fog");
   return true;
 }
 
@@ -52,7 +51,7 @@ const HullRenderer::Buffers& HullRenderer::buffers_for(const HullInstance& hull)
                GL_STATIC_DRAW);
   glGenBuffers(1, &b.indices);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * 2), mesh.indices.data(),
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint16_t)), mesh.indices.data(),
                GL_STATIC_DRAW);
   b.count = static_cast<GLsizei>(mesh.indices.size());
   b.radius_m = mesh.radius_m;
@@ -75,8 +74,10 @@ const std::vector<std::size_t>& HullRenderer::draw(const Camera& camera, int wid
   glUniform3fv(u_sun_colour_, 1, glm::value_ptr(light.sun_colour));
   glUniform3fv(u_sky_light_, 1, glm::value_ptr(light.sky_light));
   glUniform3fv(u_fog_colour_, 1, glm::value_ptr(light.fog_colour));
-  glUniform1f(u_fog_density_, light.fog_density);
+  glUniform2fv(u_fog_, 1, glm::value_ptr(light.fog));
   for (auto& [size, b] : meshes_) b.used = false;
+  for (GLuint slot = 0; slot < 3; ++slot) glEnableVertexAttribArray(slot);
+  const Buffers* bound = nullptr;
   for (std::size_t i = 0; i < hulls.size(); ++i) {
     const HullInstance& hull = hulls[i];
     const Buffers& b = buffers_for(hull);
@@ -84,20 +85,22 @@ const std::vector<std::size_t>& HullRenderer::draw(const Camera& camera, int wid
     if (!sphere_visible(frustum, offset, b.radius_m)) continue;
     glUniformMatrix3fv(u_rotation_, 1, GL_FALSE, glm::value_ptr(hull.rotation));
     glUniform3fv(u_offset_, 1, glm::value_ptr(offset));
-    glBindBuffer(GL_ARRAY_BUFFER, b.vertices);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices);
-    const auto stride = static_cast<GLsizei>(sizeof(HullVertex));
-    glEnableVertexAttribArray(0);
-    glEnableVertexAttribArray(1);
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(HullVertex, position)));
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(HullVertex, normal)));
-    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(HullVertex, colour)));
+    if (bound != &b) {  // hulls of one size share their buffers (a fleet of a few designs)
+      bound = &b;
+      glBindBuffer(GL_ARRAY_BUFFER, b.vertices);
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.indices);
+      const auto stride = static_cast<GLsizei>(sizeof(HullVertex));
+      const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
+      glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(HullVertex, position)));
+      glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(HullVertex, normal)));
+      glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, at(offsetof(HullVertex, colour)));
+    }
     glDrawElements(GL_TRIANGLES, b.count, GL_UNSIGNED_SHORT, nullptr);
     drawn_.push_back(i);
   }
-  glDisableVertexAttribArray(1);
-  glDisableVertexAttribArray(2);
+  for (GLuint slot = 0; slot < 3; ++slot) glDisableVertexAttribArray(slot);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
   // Sizes no vessel has any more give their buffers back.
   for (auto it = meshes_.begin(); it != meshes_.end();) {
     if (it->second.used) {

@@ -26,7 +26,7 @@ struct HullLight {
   glm::vec3 sun_colour{1.0f};
   glm::vec3 sky_light{0.5f};
   glm::vec3 fog_colour{0.6f};
-  float fog_density = 0.0f;
+  glm::vec2 fog{0.0f, 1.0f};  // as the water's (Renderer::fog): density per metre, normaliser
 };
 
 class Renderer;
@@ -58,7 +58,7 @@ class HullRenderer {
 
   GLuint program_ = 0;
   GLint u_clip_from_rel_ = -1, u_rotation_ = -1, u_offset_ = -1, u_sun_dir_ = -1, u_sun_colour_ = -1;
-  GLint u_sky_light_ = -1, u_fog_colour_ = -1, u_fog_density_ = -1;
+  GLint u_sky_light_ = -1, u_fog_colour_ = -1, u_fog_ = -1;
   std::map<std::tuple<float, float, float>, Buffers> meshes_;
   std::vector<std::size_t> drawn_;
 };

@@ -268,7 +268,7 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
   glUniform1i(u.sky, 0);
   glUniform3fv(u.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
   // Under a cloud deck the sun barely shows and the water turns a darker grey-green.
-  const glm::vec3 sun = desc_.sun_colour * (1.0f - 0.9f * overcast_);
+  const glm::vec3 sun = sun_colour();
   const glm::vec3 deep = desc_.deep_colour * (1.0f - 0.3f * overcast_);
   const glm::vec3 scatter = desc_.scatter_colour * (1.0f - 0.3f * overcast_);
   glUniform3fv(u.sun_colour, 1, glm::value_ptr(sun));
@@ -276,7 +276,7 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
   glUniform3fv(u.scatter_colour, 1, glm::value_ptr(scatter));
   glUniform4f(u.overcast, kOvercastDeck.r, kOvercastDeck.g, kOvercastDeck.b, overcast_);
   glUniform1f(u.shininess, desc_.shininess);
-  glUniform2f(u.fog, desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m)));
+  glUniform2fv(u.fog, 1, glm::value_ptr(fog()));
   glUniform3f(u.foam_colour, 0.92f, 0.95f, 0.97f);
   glUniform3fv(u.horizon, static_cast<GLsizei>(weathered_ring_.size()), glm::value_ptr(weathered_ring_[0]));
   if (coarse_.active()) {

@@ -3,8 +3,8 @@
 // No windowing and no networking: the caller owns the context and the frame data.
 #pragma once
 
-#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -61,22 +61,6 @@ struct FoamTrail {
   float length_m = 0.0f, half_width_m = 0.0f, spread = 0.0f, strength = 0.0f;
 };
 
-// A hull's trail from its pose: churned white at the stern for a fast hull, none below 1 m/s,
-// as long as ten seconds of its run (at most 150 m), a little narrower than the hull at first.
-inline FoamTrail foam_trail(double x_m, double z_m, double dir_x, double dir_z, double speed_mps, double length_m,
-                            double beam_m) {
-  FoamTrail t;
-  t.stern_x_m = x_m - 0.5 * length_m * dir_x;
-  t.stern_z_m = z_m - 0.5 * length_m * dir_z;
-  t.dir_x = static_cast<float>(dir_x);
-  t.dir_z = static_cast<float>(dir_z);
-  t.length_m = static_cast<float>(std::min(10.0 * speed_mps, 150.0));
-  t.half_width_m = static_cast<float>(0.4 * beam_m);
-  t.spread = 0.06f;
-  t.strength = static_cast<float>(std::clamp((speed_mps - 1.0) / 6.0, 0.0, 1.0));
-  return t;
-}
-
 struct DrawStats {
   int tiles_drawn = 0;    // tiles and chunks drawn (a far block counts all its tiles)
   int far_blocks = 0;     // of which drawn as far blocks
@@ -119,6 +103,13 @@ class Renderer {
   // sun and greys the sky, its reflection and the water.
   void set_overcast(float overcast);
   float overcast() const { return overcast_; }
+  // The sun's colour under the weather: a cloud deck lets a tenth of it through.
+  glm::vec3 sun_colour() const { return desc_.sun_colour * (1.0f - 0.9f * overcast_); }
+  // The distance fog of a point d metres away horizontally: min((1 - exp(-x d)) y, 1), normalised
+  // to be full at the view distance, where the tiles end: (x, y).
+  glm::vec2 fog() const {
+    return {desc_.fog_density, 1.0f / (1.0f - std::exp(-desc_.fog_density * desc_.view_distance_m))};
+  }
   // The sky's colour just above the horizon, averaged round it, under the weather: what the water
   // fades into with distance, and the light the sky sheds on things above the water.
   glm::vec3 horizon_colour() const;

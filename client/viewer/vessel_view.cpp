@@ -5,6 +5,24 @@
 #include <cstdio>
 
 namespace ocean::viewer {
+namespace {
+
+// A hull's trail from its pose: churned white at the stern for a fast hull, none below 1 m/s, as
+// long as ten seconds of its run (at most 150 m), a little narrower than the hull at first.
+render::FoamTrail foam_trail(const client::HullState& h) {
+  render::FoamTrail t;
+  t.stern_x_m = h.x_m - 0.5 * h.hull.length_m * h.dir_x;
+  t.stern_z_m = h.z_m - 0.5 * h.hull.length_m * h.dir_z;
+  t.dir_x = static_cast<float>(h.dir_x);
+  t.dir_z = static_cast<float>(h.dir_z);
+  t.length_m = static_cast<float>(std::min(10.0 * h.speed_mps, 150.0));
+  t.half_width_m = static_cast<float>(0.4 * h.hull.beam_m);
+  t.spread = 0.06f;
+  t.strength = static_cast<float>(std::clamp((h.speed_mps - 1.0) / 6.0, 0.0, 1.0));
+  return t;
+}
+
+}  // namespace
 
 render::HullInstance hull_instance(const client::HullState& h) {
   const glm::vec3 bow(static_cast<float>(h.dir_x), 0.0f, static_cast<float>(h.dir_z));
@@ -33,7 +51,7 @@ const std::vector<client::HullState>& VesselView::update(std::span<const model::
   std::vector<render::FoamTrail> trails;
   for (const client::HullState& h : posed) {
     hulls.push_back(hull_instance(h));
-    trails.push_back(render::foam_trail(h.x_m, h.z_m, h.dir_x, h.dir_z, h.speed_mps, h.hull.length_m, h.hull.beam_m));
+    trails.push_back(foam_trail(h));
   }
   renderer.set_trails(trails);
   const double dt = t_s - last_t_s_;

@@ -157,12 +157,12 @@ void WebViewer::on_scene_update(const protocol::SceneUpdate& update) {
   if (update.vessels) fleet_ = *update.vessels;  // right for earlier ticks too (PROTOCOL.md 8)
 }
 
-// The hulls on the frame just blended, at its place on the server's tick axis, as natively.
-void WebViewer::draw_vessels(const client::TimelineSample& sample, int width, int height) {
-  if (sea_ && tick_period_s_ > 0.0 && channels_.height.size() == layout_.samples())
+// The hulls on the frame just blended, at its place on the server's tick axis, as natively: before
+// the water is drawn, so water, trails and hulls share the follow camera's pose of this frame.
+void WebViewer::pose_vessels(const client::TimelineSample& sample) {
+  if (sea_ && tick_period_s_ > 0.0)
     vessels_.update(fleet_, *sea_, codec::surface_fields(channels_), sample.render_tick * tick_period_s_, hulls_, renderer_,
                     camera_);
-  hulls_in_view_ = hull_renderer_.draw(camera_, width, height, hulls_, render::hull_light(renderer_));
 }
 
 void WebViewer::on_frame(const codec::ReconstructedFrame& frame, Tick tick) {
@@ -206,13 +206,14 @@ void WebViewer::frame(double now_s, int width, int height) {
     client::FrameTimeline::blend(sample, channels_);
     if (channels_.height.size() == samples) {
       render::upload_channels(renderer_, channels_, layout_, foam_, dt);
+      pose_vessels(sample);
       ++uploads_;
     }
   }
   if (session_ && session_->state() == client::ClientSession::State::streaming)
     renderer_.set_overcast(weather_.update(session_->scene().wind_speed_mps, dt));
   renderer_.draw(camera_, width, height, now_s);
-  draw_vessels(sample, width, height);
+  hulls_in_view_ = hull_renderer_.draw(camera_, width, height, hulls_, render::hull_light(renderer_));
 
   fps_ = fps_meter_.tick(now_s);
   if (now_s - kbps_sampled_s_ >= kKbpsSampleS) {

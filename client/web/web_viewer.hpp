@@ -69,7 +69,7 @@ class WebViewer {
  private:
   void on_welcome(const protocol::Welcome& welcome);
   void on_scene_update(const protocol::SceneUpdate& update);
-  void draw_vessels(const client::TimelineSample& sample, int width, int height);
+  void pose_vessels(const client::TimelineSample& sample);
   void on_frame(const codec::ReconstructedFrame& frame, Tick tick);
   void on_message(std::span<const std::uint8_t> bytes);
   void end_session(const std::string& why);

@@ -115,3 +115,19 @@ TEST_CASE("a hull is posed only while present, at its track's place, heading and
   CHECK(hulls[0].speed_mps == Approx(std::sqrt(8.0)).epsilon(1e-6));
   CHECK(motion.update(fleet, query, codec::surface_fields(flat), 25.5).empty());
 }
+
+TEST_CASE("a dropped object (a round hull) makes rings but is no vessel to pose") {
+  const codec::StreamConfig c = config();
+  const codec::SurfaceQuery query(c);
+  model::VesselTrack object = moored();
+  object.id = 60;
+  object.hull = {4.0, 4.0, 2.0};  // what ocean-server makes of a drop of 4 m
+  const std::vector<model::VesselTrack> fleet{moored(), object};
+  const FrameChannels flat = sea(c, 0.0, 0.0, 0.0);
+  HullMotion motion;
+  const auto& hulls = motion.update(fleet, query, codec::surface_fields(flat), 1.0);
+  REQUIRE(hulls.size() == 1);
+  CHECK(hulls[0].id == 4);
+  CHECK(client::is_dropped_object(object.hull));
+  CHECK_FALSE(client::is_dropped_object(moored().hull));
+}

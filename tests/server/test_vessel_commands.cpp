@@ -167,3 +167,46 @@ TEST_CASE("the fleet keeps to 32 tracks: old ones are forgotten, then commands a
   REQUIRE(r.error == "");
   CHECK(r.fleet.size() == 3);  // the two from the config and the new splash
 }
+
+TEST_CASE("20 m/s is a speed a vessel is given, at any tick of the day", "[vessels]") {
+  // The leg's end time rounds near 1e5..1e7 s: it must never come out a hair above 20 m/s.
+  int refused = 0;
+  std::string why;
+  for (int i = 0; i < 500; ++i) {
+    protocol::VesselCommand add = command(wire::VesselAction::add, 40);
+    add.x_m = -200.0 + 0.77 * i, add.z_m = 13.0 - 0.31 * i, add.heading_deg = 7.3 * i, add.speed_mps = 20.0;
+    const Tick from = kToday * (1 + i % 97) + static_cast<Tick>(i) * 7919;
+    const FleetChange r = apply_vessel_command(harbour(), add, from, from - 30, kRules);
+    refused += !r.error.empty();
+    if (!r.error.empty()) why += std::to_string(i) + ": " + r.error + "\n";
+    if (r.error.empty()) {
+      const VesselTrack& v = r.fleet.back();
+      REQUIRE(v.points.size() == 3);
+      const double leg = std::hypot(v.points[2].x_m - v.points[1].x_m, v.points[2].z_m - v.points[1].z_m) /
+                         (v.points[2].t_s - v.points[1].t_s);
+      CHECK(leg <= 20.0);
+      CHECK(leg > 20.0 * (1.0 - 1e-9));  // as asked, not slower than rounding needs
+    }
+  }
+  INFO(why);
+  CHECK(refused == 0);
+}
+
+TEST_CASE("an object's id is its own: it cannot be steered, removed or taken while its splash is due", "[vessels]") {
+  protocol::VesselCommand drop = command(wire::VesselAction::drop, 70);
+  drop.x_m = 10.0, drop.z_m = -20.0;
+  const FleetChange dropped = apply_vessel_command(harbour(), drop, kAt, kToday, kRules);
+  REQUIRE(dropped.error == "");
+  const auto during = [&](protocol::VesselCommand c) { return apply_vessel_command(dropped.fleet, c, kAt + 10, kToday + 10, kRules); };
+  CHECK(during(command(wire::VesselAction::course, 70)).error.find("cannot be steered") != std::string::npos);
+  CHECK(during(command(wire::VesselAction::remove, 70)).error.find("ends by itself") != std::string::npos);
+  protocol::VesselCommand again = command(wire::VesselAction::add, 70);
+  CHECK(during(again).error.find("already at sea or due") != std::string::npos);
+  // Once its splash is over, the id is free again.
+  CHECK(apply_vessel_command(dropped.fleet, again, kAt + 60, kToday + 60, kRules).error == "");
+  // A config's repeating object between two splashes (the buoy, 3 s into every 10): still its id.
+  protocol::VesselCommand buoy = command(wire::VesselAction::drop, 9);
+  const Tick between = 30 * 6;  // 6 s: after the first splash, before the second
+  CHECK(apply_vessel_command(harbour(), buoy, between, between - 30, kRules).error.find("already at sea or due") !=
+        std::string::npos);
+}

@@ -18,6 +18,10 @@ std::string named(std::uint32_t id) { return "vessel " + std::to_string(id); }
 
 bool repeats(const model::Presence& p) { return p.every_s > 0.0; }
 
+// A dropped object presses for a splash (once or again and again); a vessel until it is steered
+// or removed (its current track is open-ended).
+bool is_object(const model::Presence& p) { return repeats(p) || std::isfinite(p.for_s); }
+
 // When a track stops pressing for good (infinity: never).
 double end_of(const model::Presence& p) {
   if (repeats(p) || p.for_s == std::numeric_limits<double>::infinity()) return std::numeric_limits<double>::infinity();
@@ -29,6 +33,11 @@ const model::VesselTrack* present(const std::vector<model::VesselTrack>& fleet, 
   for (const model::VesselTrack& v : fleet)
     if (v.id == id && model::present_at(v.presence, mid_s)) return &v;
   return nullptr;
+}
+
+// Whether a track of `id` still presses at or after from_s (or has yet to): the id is taken.
+bool id_taken(const std::vector<model::VesselTrack>& fleet, std::uint32_t id, double from_s) {
+  return std::any_of(fleet.begin(), fleet.end(), [&](const model::VesselTrack& v) { return v.id == id && end_of(v.presence) > from_s; });
 }
 
 // Ends `track` at from_s (a track that has not begun by then is dropped: false).
@@ -57,8 +66,20 @@ model::VesselTrack sailing(std::uint32_t id, const model::Hull& hull, double x, 
   limit(x, dx, rules.square_x_m, rules.square_x_m + rules.square_size_m);
   limit(z, dz, rules.square_z_m, rules.square_z_m + rules.square_size_m);
   if (speed > 0.0 && reach > 1.0 && std::isfinite(reach)) {
-    v.points.push_back({from_s, x, z});
-    v.points.push_back({from_s + reach / speed, x + reach * dx, z + reach * dz});
+    const model::Waypoint start{from_s, x, z};
+    // On the square's edge exactly: x + reach dx may round a hair outside it.
+    model::Waypoint end{from_s + reach / speed,
+                        std::clamp(x + reach * dx, rules.square_x_m, rules.square_x_m + rules.square_size_m),
+                        std::clamp(z + reach * dz, rules.square_z_m, rules.square_z_m + rules.square_size_m)};
+    // Times near 1e7 s round too: the leg, as validate_fleet measures it (in the square's own
+    // coordinates), must not come out a hair faster than asked (20 m/s would be refused).
+    const auto leg_speed = [&] {
+      return std::hypot((end.x_m - rules.square_x_m) - (start.x_m - rules.square_x_m),
+                        (end.z_m - rules.square_z_m) - (start.z_m - rules.square_z_m)) / (end.t_s - start.t_s);
+    };
+    while (leg_speed() > speed) end.t_s = std::nextafter(end.t_s, std::numeric_limits<double>::infinity());
+    v.points.push_back(start);
+    v.points.push_back(end);
   }
   return v;
 }
@@ -118,14 +139,15 @@ FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, c
   };
   switch (c.action) {
     case wire::VesselAction::add:
-      if (current) return {{}, named(c.id) + " is already at sea (give another id, or set its course)"};
+      if (id_taken(out.fleet, c.id, from_s))
+        return {{}, named(c.id) + " is already at sea or due (give another id, or set its course)"};
       if (!(c.speed_mps >= 0.0 && c.speed_mps <= 20.0))
         return {{}, "speed " + model::format_value(c.speed_mps) + " m/s: must be in [0, 20]"};
       out.fleet.push_back(sailing(c.id, c.hull, c.x_m, c.z_m, c.heading_deg, c.speed_mps, from_s, rules));
       break;
     case wire::VesselAction::course: {
       if (!current) return {{}, named(c.id) + " is not at sea"};
-      if (repeats(current->presence)) return {{}, named(c.id) + " is a dropped object; it cannot be steered"};
+      if (is_object(current->presence)) return {{}, named(c.id) + " is a dropped object; it cannot be steered"};
       if (!(c.speed_mps >= 0.0 && c.speed_mps <= 20.0))
         return {{}, "speed " + model::format_value(c.speed_mps) + " m/s: must be in [0, 20]"};
       const model::HullPose pose = model::pose_at(*current, from_s);
@@ -139,6 +161,7 @@ FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, c
       if (!current) return {{}, named(c.id) + " is not at sea"};
       if (repeats(current->presence))
         return {{}, named(c.id) + " splashes again and again (a config's [[drop]]); change the config to remove it"};
+      if (is_object(current->presence)) return {{}, named(c.id) + " is a dropped object; its splash ends by itself"};
       auto it = find(current);
       if (!end_at(*it, from_s)) out.fleet.erase(it);
       break;
@@ -146,7 +169,8 @@ FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, c
     case wire::VesselAction::drop: {
       if (!(c.size_m > 0.0 && c.size_m <= kMaxDropSizeM))
         return {{}, "size " + model::format_value(c.size_m) + " m: must be in (0, " + model::format_value(kMaxDropSizeM) + "]"};
-      if (current) return {{}, named(c.id) + " is already at sea (give the object an id of its own)"};
+      if (id_taken(out.fleet, c.id, from_s))
+        return {{}, named(c.id) + " is already at sea or due (give the object an id of its own)"};
       out.fleet.push_back(dropped(c, from_s));
       break;
     }
