@@ -1,6 +1,8 @@
 // FNV-1a over n_x, n_z and each field's length and bytes, in declaration order.
 #include "frame_hash.hpp"
 
+#include "common/fnv1a.hpp"
+
 #include <cstddef>
 #include <cstring>
 #include <vector>
@@ -8,14 +10,7 @@
 namespace ocean::sim {
 namespace {
 
-constexpr std::uint64_t fnv_offset = 0xcbf29ce484222325ULL;
-constexpr std::uint64_t fnv_prime = 0x100000001b3ULL;
-
-std::uint64_t mix_bytes(std::uint64_t h, const void* data, std::size_t size) {
-  const auto* bytes = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) h = (h ^ bytes[i]) * fnv_prime;
-  return h;
-}
+std::uint64_t mix_bytes(std::uint64_t h, const void* data, std::size_t size) { return common::fnv1a(data, size, h); }
 
 std::uint64_t mix_field(std::uint64_t h, const std::vector<float>& field) {
   const std::uint64_t count = field.size();
@@ -26,7 +21,7 @@ std::uint64_t mix_field(std::uint64_t h, const std::vector<float>& field) {
 }  // namespace
 
 std::uint64_t frame_hash(const Frame& f) {
-  std::uint64_t h = fnv_offset;
+  std::uint64_t h = common::kFnvOffset;
   const std::int32_t dims[2] = {f.n_x, f.n_z};
   h = mix_bytes(h, dims, sizeof dims);
   for (const std::vector<float>* field : {&f.height, &f.slope_x, &f.slope_z, &f.disp_x, &f.disp_z, &f.jacobian})

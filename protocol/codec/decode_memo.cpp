@@ -1,24 +1,22 @@
 #include "decode_memo.hpp"
 
+#include "common/fnv1a.hpp"
+
 #include <algorithm>
 
 namespace ocean::codec {
 namespace {
 
-std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (const std::uint8_t b : bytes) h = (h ^ b) * 1099511628211ull;
-  return h;
-}
+std::uint64_t fnv1a(std::span<const std::uint8_t> bytes) { return common::fnv1a(bytes.data(), bytes.size()); }
 
 std::uint64_t key_hash(Tick tick, const DecodeMemo::Payloads& chunks) {
   std::uint64_t h = fnv1a({}) ^ tick;
-  for (const auto& c : chunks) h = (h * 1099511628211ull) ^ fnv1a(c);
+  for (const auto& c : chunks) h = (h * common::kFnvPrime) ^ fnv1a(c);
   return h;
 }
 
 std::uint64_t key_hash(Tick tick, std::span<const std::uint8_t> single) {
-  return ((fnv1a({}) ^ tick) * 1099511628211ull) ^ fnv1a(single);
+  return ((fnv1a({}) ^ tick) * common::kFnvPrime) ^ fnv1a(single);
 }
 
 // Interning only needs equal states to collide: a word at a time (hash_state, the documented

@@ -72,7 +72,11 @@ TEST_CASE("WebFiles sends the gzipped copy to a client that takes gzip, and a 30
     CHECK(gz.content_type == "application/wasm");
     CHECK(header(gz, "ETag") != header(plain, "ETag"));  // two representations, two tags
   }
-  CHECK(files->reply(get("/ocean-web.wasm", "gzip;q=0, br")).content() == "contents of ocean-web.wasm");
+  for (const char* accept : {"GZIP", "x-gzip", "br, gzip ; q=0.5", "gzip;q=1"})
+    CHECK(files->reply(get("/ocean-web.wasm", accept)).content() == "gzipped module");
+  // Refused by name (q=0 in any spelling) even where "*" would take it, or not taken at all.
+  for (const char* accept : {"gzip;q=0, br", "gzip;q=0.0", "gzip; q=0.000, *", "*;q=0", "identity", ""})
+    CHECK(files->reply(get("/ocean-web.wasm", accept)).content() == "contents of ocean-web.wasm");
   CHECK(files->reply(get("/ocean-web.wasm", "deflate")).content() == "contents of ocean-web.wasm");
   CHECK(header(files->reply(get("/viewer.js", "gzip")), "Content-Encoding").empty());  // no viewer.js.gz here
   // Revalidation: the tag the client holds gives a 304 with no body; another tag, the file.
@@ -82,6 +86,8 @@ TEST_CASE("WebFiles sends the gzipped copy to a client that takes gzip, and a 30
   CHECK(again.status == 304);
   CHECK(again.content().empty());
   CHECK(header(again, "ETag") == tag);
+  CHECK(again.to_wire(true).find("Content-Length") == std::string::npos);  // a 304 tells no length (RFC 9110 8.6)
+  CHECK(files->reply(get("/ocean-web.wasm", "gzip", "\"x\", " + tag)).status == 304);  // one of a list
   CHECK(files->reply(get("/ocean-web.wasm", "gzip", "\"0000000000000000\"")).status == 200);
   CHECK(files->reply(get("/ocean-web.wasm", "", tag)).status == 200);  // the tag of the other representation
   std::filesystem::remove_all(root);

@@ -1,6 +1,7 @@
 #include "admin_options.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -71,7 +72,14 @@ struct VesselFlags {
     app.add_option("--hull", hull, "LENGTH,BEAM,DRAFT in metres (default 24,6,1.5)");
     app.add_option("--heading", heading, "degrees from +x towards +z (default 0)")->check(CLI::Range(-1e6, 1e6));
     app.add_option("--speed", speed, "m/s, [0, 20] (default 0)")->check(CLI::Range(0.0, 20.0));
-    app.add_option("--size", size, "a dropped object's size, metres, (0, 50] (default 2)")->check(CLI::Range(0.0, 50.0));
+    app.add_option("--size", size, "a dropped object's size, metres, (0, 50] (default 2)")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+              char* end = nullptr;
+              const double v = std::strtod(text.c_str(), &end);
+              return *end == '\0' && v > 0.0 && v <= 50.0 ? "" : "must be a size in (0, 50] metres, got " + text;
+            },
+            "(0, 50]"));
     return app.add_option("--vessel", action, "a vessel command, one second ahead: add (--id, --at, --hull, --heading, "
                                               "--speed), course (--id, --heading, --speed), remove (--id), drop (an "
                                               "object: --id, --at, --size)")

@@ -22,8 +22,9 @@ std::string answer_json(const protocol::HeightQuery& q, const protocol::HeightAn
     const wire::SurfaceSample& s = a.samples[i];
     common::JsonWriter p(common::JsonWriter::Style::compact);
     p.number("x_m", q.points[i].x_m(), 9).number("z_m", q.points[i].z_m(), 9).number("height_m", s.height_m(), 9);
-    p.raw("normal", "[" + std::to_string(s.normal_x()) + "," + std::to_string(s.normal_y()) + "," +
-                        std::to_string(s.normal_z()) + "]");
+    char normal[96];  // as number() writes each: %.7g, a float's digits
+    std::snprintf(normal, sizeof normal, "[%.7g,%.7g,%.7g]", s.normal_x(), s.normal_y(), s.normal_z());
+    p.raw("normal", normal);
     p.number("vertical_velocity_mps", s.vertical_velocity_mps(), 6);
     points += (i ? "," : "") + p.str();
   }

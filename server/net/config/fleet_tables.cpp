@@ -19,7 +19,6 @@ std::optional<double> toml_number(const toml::node* node) {
 namespace {
 
 // An object larger than this is a vessel (its hull presses half its size deep: at most 25 m).
-constexpr double kMaxDropSizeM = 50.0;
 
 }  // namespace
 
@@ -95,14 +94,9 @@ std::string apply_drop_tables(const toml::node& node, std::string_view source, s
     if (!size || !at || !splash || !every) return where + ": size, at, splash and every are numbers (metres, seconds)";
     if (!(*size > 0.0 && *size <= kMaxDropSizeM))
       return where + ": size " + model::format_value(*size) + ": must be in (0, " + model::format_value(kMaxDropSizeM) + "] metres";
-    model::VesselTrack drop;
-    drop.id = static_cast<std::uint32_t>(id->as_integer()->get());
-    drop.hull = {*size, *size, 0.5 * *size};
-    drop.points = {{0.0, *x, *z}};
-    drop.presence = {*at, *splash, *every};
     if (drops.size() == protocol::kMaxVessels)
       return where + ": more than " + std::to_string(protocol::kMaxVessels) + " objects";
-    drops.push_back(std::move(drop));
+    drops.push_back(dropped_object(static_cast<std::uint32_t>(id->as_integer()->get()), *size, *x, *z, {*at, *splash, *every}));
   }
   return {};
 }

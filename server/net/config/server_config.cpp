@@ -73,23 +73,14 @@ std::string validate_vessels(const ServerConfig& config) {
     return "--wake-decay " + model::format_value(config.wake_decay_per_s) + ": must be in [0.01, 10] per second";
   if (config.vessels.size() > protocol::kMaxVessels)
     return "[[vessel]]: " + std::to_string(config.vessels.size()) + " vessels; at most " + std::to_string(protocol::kMaxVessels);
-  model::TrackLimits limits;
-  limits.world_min_m = 0.0;
-  limits.world_max_m = config.wake_size_m;
   for (const model::VesselTrack& v : config.vessels) {
     if (v.points.size() > protocol::kMaxWaypoints)
       return "[[vessel]] " + std::to_string(v.id) + ": " + std::to_string(v.points.size()) + " waypoints; at most " +
              std::to_string(protocol::kMaxWaypoints);
-    // Inside the wake's square: checked in its own coordinates.
-    model::VesselTrack local = v;
-    for (model::Waypoint& p : local.points) {
-      p.x_m -= config.wake_origin_x_m;
-      p.z_m -= config.wake_origin_z_m;
-    }
     const std::string table = v.presence == model::Presence{} ? "[[vessel]] " : "[[drop]] ";
-    if (std::string error = model::validate(local, limits); !error.empty())
-      return table + error + " (in the wake's square, corner (" + model::format_value(config.wake_origin_x_m) +
-             ", " + model::format_value(config.wake_origin_z_m) + "), side " + model::format_value(config.wake_size_m) + " m)";
+    if (std::string error = validate_in_square(v, config.wake_origin_x_m, config.wake_origin_z_m, config.wake_size_m);
+        !error.empty())
+      return table + error;
     for (const model::VesselTrack& other : config.vessels)
       if (&other != &v && other.id == v.id) return table + std::to_string(v.id) + ": two vessels or objects share this id";
   }
@@ -97,6 +88,30 @@ std::string validate_vessels(const ServerConfig& config) {
 }
 
 }  // namespace
+
+model::VesselTrack dropped_object(std::uint32_t id, double size_m, double x_m, double z_m, model::Presence presence) {
+  model::VesselTrack object;
+  object.id = id;
+  object.hull = {size_m, size_m, 0.5 * size_m};
+  object.points = {{0.0, x_m, z_m}};
+  object.presence = presence;
+  return object;
+}
+
+std::string validate_in_square(const model::VesselTrack& track, double origin_x_m, double origin_z_m, double size_m) {
+  model::TrackLimits limits;
+  limits.world_min_m = 0.0;
+  limits.world_max_m = size_m;
+  model::VesselTrack local = track;
+  for (model::Waypoint& p : local.points) {
+    p.x_m -= origin_x_m;
+    p.z_m -= origin_z_m;
+  }
+  if (std::string error = model::validate(local, limits); !error.empty())
+    return error + " (in the wake's square, corner (" + model::format_value(origin_x_m) + ", " +
+           model::format_value(origin_z_m) + "), side " + model::format_value(size_m) + " m)";
+  return {};
+}
 
 std::string validate_server_config(const ServerConfig& config) {
   if (std::string error = model::validate(config.scene); !error.empty()) return name_scene_flag(error);

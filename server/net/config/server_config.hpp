@@ -93,6 +93,14 @@ inline constexpr int kMaxTickRateHz = 240;
 inline constexpr int kMaxClientsLimit = 100000;
 inline constexpr int kMaxUdpRedundancy = 7;  // a FrameBundle holds at most 8 chunks
 
+// A dropped object as the wake sees it, from a config's [[drop]] or an admin's drop alike: a round
+// hull `size_m` across (at most kMaxDropSizeM) pressing half its size deep at (x_m, z_m) while present.
+inline constexpr double kMaxDropSizeM = 50.0;
+model::VesselTrack dropped_object(std::uint32_t id, double size_m, double x_m, double z_m, model::Presence presence);
+// Empty when `track` is a valid track inside the wake's square (corner origin, side size_m: checked
+// in the square's own coordinates); else what is wrong, naming the square.
+std::string validate_in_square(const model::VesselTrack& track, double origin_x_m, double origin_z_m, double size_m);
+
 // Empty when the configuration is usable; otherwise one message naming the option (as a flag) and
 // what is allowed. Checks the scene (model::validate), the schedule, and the server-level options.
 std::string validate_server_config(const ServerConfig& config);

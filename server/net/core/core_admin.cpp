@@ -45,25 +45,24 @@ void SessionCore::check_admin_changes(const Instant& now) {
     if (const auto* change = std::get_if<protocol::ParamChange>(&request)) {
       if (!token_refused(*session, change->admin_token, "ParamChange")) apply_param_change(*session, *change, now);
     } else if (const auto* query = std::get_if<protocol::HeightQuery>(&request)) {
-      if (!token_refused(*session, query->admin_token, "HeightQuery")) answer_height_query(*session, *query, now);
+      if (!token_refused(*session, query->admin_token, "HeightQuery")) answer_height_query(*session, *query);
     }
   }
 }
 
 // True when the token is refused (answered, and the connection closed after a few guesses).
 bool SessionCore::token_refused(Session& session, const std::string& token, std::string_view message) {
-  if (same_token(token, host_.config.admin_token)) return !(session.admin_proven = true);
+  if (same_token(token, host_.config.admin_token)) {
+    session.admin_proven = true;
+    return false;
+  }
   if (++session.token_failures >= options_.token_failures_per_connection) {
     refuse(session, protocol::Reason::unauthorized,
            fmt::format("unauthorized in {}.admin_token: too many wrong tokens; closing", message), "token_guessing");
     return true;
   }
-  log_limited(spdlog::level::warn, "unauthorized", session.peer(), "{} refused session={} peer={} reason=unauthorized",
-              message, session.id, session.peer());
-  host_.metrics.rejects("unauthorized").inc();
-  send_control(session, protocol::encode(protocol::Error{
-                            protocol::Reason::unauthorized,
-                            fmt::format("unauthorized in {}.admin_token: expected the server's admin token", message)}));
+  answer_error(session, protocol::Reason::unauthorized,
+               fmt::format("unauthorized in {}.admin_token: expected the server's admin token", message), message);
   return true;
 }
 
@@ -71,11 +70,7 @@ bool SessionCore::token_refused(Session& session, const std::string& token, std:
 std::optional<std::vector<model::VesselTrack>> SessionCore::fleet_after(Session& session, const protocol::VesselCommand& command,
                                                                         Tick from) {
   const auto refused = [&](const std::string& text) {
-    log_limited(spdlog::level::warn, "vessel_command_refused", session.peer(),
-                "vessel command refused session={} peer={} reason=out_of_range: {}", session.id, session.peer(), text);
-    host_.metrics.rejects("out_of_range").inc();
-    send_control(session, protocol::encode(protocol::Error{protocol::Reason::out_of_range,
-                                                           text.substr(0, protocol::kMaxTextBytes)}));
+    answer_error(session, protocol::Reason::out_of_range, text, "vessel command");
     return std::nullopt;
   };
   if (streams_.empty() || !streams_.front()->config().has_wake())
@@ -107,20 +102,13 @@ void SessionCore::apply_param_change(Session& session, const protocol::ParamChan
   std::vector<const Profile*> offered;
   for (const auto& stream : streams_) offered.push_back(&stream->profile());
   if (const std::string error = servable_scene(scene, offered); !error.empty()) {
-    log_limited(spdlog::level::warn, "param_change_refused", session.peer(),
-                "param_change refused session={} peer={} reason=out_of_range: {}", session.id, session.peer(), error);
-    host_.metrics.rejects("out_of_range").inc();
-    return send_control(session, protocol::encode(protocol::Error{protocol::Reason::out_of_range,
-                                                                  error.substr(0, protocol::kMaxTextBytes)}));
+    return answer_error(session, protocol::Reason::out_of_range, error, "param_change");
   }
   if (!scene_changes_.try_take(1, now.monotonic_s)) {
     const double wait_s = scene_changes_.wait_s(1, now.monotonic_s);
-    host_.metrics.rejects("rate_limited").inc();
-    return send_control(session, protocol::encode(protocol::Error{
-                                     protocol::Reason::rate_limited,
-                                     fmt::format("rate_limited: at most {:g} scene changes a second (a burst of {:g}); "
-                                                 "retry in {:.1f} s",
-                                                 options_.scene_changes_per_s, options_.scene_change_burst, wait_s + 0.05)}));
+    return answer_error(session, protocol::Reason::rate_limited,
+                        fmt::format("rate_limited: at most {:g} scene changes a second (a burst of {:g}); retry in {:.1f} s",
+                                    options_.scene_changes_per_s, options_.scene_change_burst, wait_s + 0.05));
   }
   if (host_.request_scene) host_.request_scene(scene, static_cast<std::int64_t>(from));
   const std::size_t vessels = fleet ? fleet->size() : 0;

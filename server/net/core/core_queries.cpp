@@ -9,11 +9,9 @@
 #include "message_builders.hpp"
 #include "message_readers.hpp"
 #include "admin_token.hpp"
-#include "server_log.hpp"
 #include "surface_query.hpp"
 
 #include <spdlog/fmt/fmt.h>
-#include <spdlog/spdlog.h>
 
 namespace ocean::server {
 namespace {
@@ -37,7 +35,7 @@ void SessionCore::on_height_query(const std::shared_ptr<Session>& session, const
   // A proven connection's right token needs no turn in the admin queue: the guessing it bounds
   // is over for this connection. A wrong one takes the queue's path (and counts as a guess).
   if (session->admin_proven && same_token(query.admin_token, host_.config.admin_token))
-    return answer_height_query(*session, query, now);
+    return answer_height_query(*session, query);
   session->change_waiting = true;
   admin_queue_.push_back({session, std::move(query)});
   check_admin_changes(now);
@@ -51,40 +49,38 @@ bool SessionCore::query_rate_refused(Session& session, std::size_t points, const
   }
   const bool mine = session.height_queries.try_take(1, now.monotonic_s);
   if (mine && query_points_.try_take(points, now.monotonic_s)) return false;
-  host_.metrics.rejects("rate_limited").inc();
   if (!session.query_refusals.try_take(1, now.monotonic_s)) {
     refuse(session, protocol::Reason::rate_limited,
            "rate_limited: HeightQueries beyond the rate without waiting for the answers; closing", "query_flood");
     return true;
   }
   const double wait_s = mine ? query_points_.wait_s(points, now.monotonic_s) : session.height_queries.wait_s(1, now.monotonic_s);
-  send_control(session, protocol::encode(protocol::Error{
-                            protocol::Reason::rate_limited,
-                            mine ? fmt::format("rate_limited: at most {:g} query points a second over every connection; "
-                                               "retry in {:.2f} s",
-                                               options_.query_points_per_s, wait_s + 0.01)
-                                 : fmt::format("rate_limited: at most {:g} HeightQueries a second per connection (a burst "
-                                               "of {:g}); retry in {:.2f} s",
-                                               options_.height_queries_per_s, options_.height_query_burst, wait_s + 0.01)}));
+  answer_error(session, protocol::Reason::rate_limited,
+               mine ? fmt::format("rate_limited: at most {:g} query points a second over every connection; retry in {:.2f} s",
+                                  options_.query_points_per_s, wait_s + 0.01)
+                    : fmt::format("rate_limited: at most {:g} HeightQueries a second per connection (a burst of {:g}); "
+                                  "retry in {:.2f} s",
+                                  options_.height_queries_per_s, options_.height_query_burst, wait_s + 0.01));
   return true;
 }
 
-void SessionCore::answer_height_query(Session& session, const protocol::HeightQuery& query, const Instant&) {
-  const auto refused = [&](protocol::Reason reason, const std::string& text) {
-    host_.metrics.rejects(protocol::to_string(reason)).inc();
-    send_control(session, protocol::encode(protocol::Error{reason, text}));
-  };
+void SessionCore::answer_height_query(Session& session, const protocol::HeightQuery& query) {
   const ProfileStream* stream = query.profile_id == 0 ? streams_.front().get() : nullptr;
   for (const auto& s : streams_)
     if (s->profile().id == query.profile_id) stream = s.get();
-  if (!stream)
-    return refused(find_profile(query.profile_id) ? protocol::Reason::profile_unavailable : protocol::Reason::unknown_profile,
-                   fmt::format("{} in HeightQuery.profile_id: {} is not offered by this server",
-                               find_profile(query.profile_id) ? "profile_unavailable" : "unknown_profile", query.profile_id));
+  if (!stream) {
+    if (find_profile(query.profile_id))
+      return answer_error(session, protocol::Reason::profile_unavailable,
+                          fmt::format("profile_unavailable in HeightQuery.profile_id: {} is not offered by this server",
+                                      query.profile_id));
+    return answer_error(session, protocol::Reason::unknown_profile,
+                        fmt::format("unknown_profile in HeightQuery.profile_id: {} is no profile (PROTOCOL.md 8)",
+                                    query.profile_id));
+  }
   const ProfileFrame* now = frame_of(newest_frames_.get(), stream->profile());
   if (!now)
-    return refused(protocol::Reason::profile_unavailable,
-                   "profile_unavailable in HeightQuery: the server has no frame yet; retry after a tick");
+    return answer_error(session, protocol::Reason::profile_unavailable,
+                        "profile_unavailable in HeightQuery: the server has no frame yet; retry after a tick");
   // The rate of change at the point, over the last tick (0 at the first frame, or across a jump).
   const ProfileFrame* before = frame_of(previous_frames_.get(), stream->profile());
   const double dt = before ? newest_frames_->time_s - previous_frames_->time_s : 0.0;

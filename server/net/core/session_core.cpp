@@ -171,6 +171,15 @@ void SessionCore::refuse(Session& session, protocol::Reason reason, const std::s
   session.link->close_after_flush(1.0);
 }
 
+void SessionCore::answer_error(Session& session, protocol::Reason reason, const std::string& text, std::string_view what) {
+  const std::string_view name = protocol::to_string(reason);
+  if (!what.empty())
+    log_limited(spdlog::level::warn, name, session.peer(), "{} refused session={} peer={} reason={}: {}", what, session.id,
+                session.peer(), name, text);
+  host_.metrics.rejects(name).inc();
+  send_control(session, protocol::encode(protocol::Error{reason, text.substr(0, protocol::kMaxTextBytes)}));
+}
+
 void SessionCore::end(Session& session, wire::ByeReason reason, const std::string& text) {
   session.ending = true;
   send_control(session, protocol::encode(protocol::Bye{reason, text}));

@@ -165,7 +165,7 @@ class SessionCore {
   // Admin HeightQuery (core_queries.cpp): a connection's first right token passes the admin queue,
   // later queries with it are answered at once, at the query rate, from the newest tick's frames.
   void on_height_query(const std::shared_ptr<Session>& session, const wire::HeightQuery& query, const Instant& now);
-  void answer_height_query(Session& session, const protocol::HeightQuery& query, const Instant& now);
+  void answer_height_query(Session& session, const protocol::HeightQuery& query);
   bool query_rate_refused(Session& session, std::size_t points, const Instant& now);
   // Ack, KeyframeRequest and Ping mean the same on any transport; `reply` carries the Pong.
   void on_session_message(Session& session, const wire::Message& message, Link& reply, const Instant& now);
@@ -201,6 +201,9 @@ class SessionCore {
   protocol::Welcome welcome(const Session& session) const;
   // Error{reason, text}, then close; counted as ocean_rejects_total{reason=label or the reason}.
   void refuse(Session& session, protocol::Reason reason, const std::string& text, std::string_view label = {});
+  // Error{reason, text}, the connection kept (a request refused, not the client); counted as
+  // refuse() counts, and logged at most a few times a second per address as "{what} refused ...".
+  void answer_error(Session& session, protocol::Reason reason, const std::string& text, std::string_view what = {});
   void end(Session& session, wire::ByeReason reason, const std::string& text);
   void send_control(Session& session, protocol::Bytes bytes);
   void drop_datagram(protocol::Reason reason, const asio::ip::udp::endpoint& sender);

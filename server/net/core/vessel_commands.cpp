@@ -1,6 +1,7 @@
 #include "vessel_commands.hpp"
 
 #include "param_message.hpp"
+#include "server_config.hpp"
 #include "wire_limits.hpp"
 
 #include <algorithm>
@@ -11,8 +12,8 @@
 namespace ocean::server {
 namespace {
 
-constexpr double kMaxDropSizeM = 50.0;  // as a config's [[drop]]
 constexpr double kDropSplashS = 1.0;
+const double kMaxSpeedMps = model::TrackLimits{}.max_speed_mps;
 
 std::string named(std::uint32_t id) { return "vessel " + std::to_string(id); }
 
@@ -96,35 +97,15 @@ std::vector<model::VesselTrack> remembered(const std::vector<model::VesselTrack>
   return out;
 }
 
-// A dropped object: a round hull pressing half its size deep for a splash, from from_s.
-model::VesselTrack dropped(const protocol::VesselCommand& c, double from_s) {
-  model::VesselTrack object;
-  object.id = c.id;
-  object.hull = {c.size_m, c.size_m, 0.5 * c.size_m};
-  object.points = {{0.0, c.x_m, c.z_m}};
-  object.presence = {from_s, kDropSplashS, 0.0};
-  return object;
-}
-
 }  // namespace
 
 std::string validate_fleet(const std::vector<model::VesselTrack>& fleet, const FleetRules& rules) {
   if (fleet.size() > protocol::kMaxVessels)
     return "at most " + std::to_string(protocol::kMaxVessels) +
            " vessels and objects (counting the tracks of the last two minutes): remove one, or wait";
-  model::TrackLimits limits;
-  limits.world_min_m = 0.0;
-  limits.world_max_m = rules.square_size_m;
-  for (const model::VesselTrack& v : fleet) {
-    model::VesselTrack local = v;  // checked in the square's own coordinates
-    for (model::Waypoint& p : local.points) {
-      p.x_m -= rules.square_x_m;
-      p.z_m -= rules.square_z_m;
-    }
-    if (std::string error = model::validate(local, limits); !error.empty())
-      return error + " (in the wake's square, corner (" + model::format_value(rules.square_x_m) + ", " +
-             model::format_value(rules.square_z_m) + "), side " + model::format_value(rules.square_size_m) + " m)";
-  }
+  for (const model::VesselTrack& v : fleet)
+    if (std::string error = validate_in_square(v, rules.square_x_m, rules.square_z_m, rules.square_size_m); !error.empty())
+      return error;
   return {};
 }
 
@@ -137,19 +118,18 @@ FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, c
   const auto find = [&](const model::VesselTrack* track) {
     return std::find_if(out.fleet.begin(), out.fleet.end(), [&](const model::VesselTrack& v) { return &v == track; });
   };
+  const bool sails = c.action == wire::VesselAction::add || c.action == wire::VesselAction::course;
+  if (sails && !(c.speed_mps >= 0.0 && c.speed_mps <= kMaxSpeedMps))
+    return {{}, "speed " + model::format_value(c.speed_mps) + " m/s: must be in [0, " + model::format_value(kMaxSpeedMps) + "]"};
   switch (c.action) {
     case wire::VesselAction::add:
       if (id_taken(out.fleet, c.id, from_s))
         return {{}, named(c.id) + " is already at sea or due (give another id, or set its course)"};
-      if (!(c.speed_mps >= 0.0 && c.speed_mps <= 20.0))
-        return {{}, "speed " + model::format_value(c.speed_mps) + " m/s: must be in [0, 20]"};
       out.fleet.push_back(sailing(c.id, c.hull, c.x_m, c.z_m, c.heading_deg, c.speed_mps, from_s, rules));
       break;
     case wire::VesselAction::course: {
       if (!current) return {{}, named(c.id) + " is not at sea"};
       if (is_object(current->presence)) return {{}, named(c.id) + " is a dropped object; it cannot be steered"};
-      if (!(c.speed_mps >= 0.0 && c.speed_mps <= 20.0))
-        return {{}, "speed " + model::format_value(c.speed_mps) + " m/s: must be in [0, 20]"};
       const model::HullPose pose = model::pose_at(*current, from_s);
       const model::Hull hull = current->hull;
       auto it = find(current);
@@ -171,7 +151,7 @@ FleetChange apply_vessel_command(const std::vector<model::VesselTrack>& fleet, c
         return {{}, "size " + model::format_value(c.size_m) + " m: must be in (0, " + model::format_value(kMaxDropSizeM) + "]"};
       if (id_taken(out.fleet, c.id, from_s))
         return {{}, named(c.id) + " is already at sea or due (give the object an id of its own)"};
-      out.fleet.push_back(dropped(c, from_s));
+      out.fleet.push_back(dropped_object(c.id, c.size_m, c.x_m, c.z_m, {from_s, kDropSplashS, 0.0}));
       break;
     }
     default:

@@ -29,7 +29,8 @@ const char* reason_phrase(int status) {
 std::string HttpReply::to_wire(bool include_body) const {
   std::string out = "HTTP/1.1 " + std::to_string(status) + " " + reason_phrase(status) + "\r\n";
   out += "Content-Type: " + content_type + "\r\n";
-  out += "Content-Length: " + std::to_string(content().size()) + "\r\n";
+  // A 304 says nothing of the length: its headers stand for the copy the client holds (RFC 9110 8.6).
+  if (status != 304) out += "Content-Length: " + std::to_string(content().size()) + "\r\n";
   out += headers;
   out += "Connection: close\r\n\r\n";
   if (include_body && !shared_body) out += body;

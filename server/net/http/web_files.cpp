@@ -1,6 +1,11 @@
 #include "web_files.hpp"
 
+#include "common/fnv1a.hpp"
+
 #include <cstdio>
+#include <string>
+#include <cstdlib>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -36,25 +41,34 @@ std::shared_ptr<const std::string> read_file(const std::filesystem::path& path) 
 
 // FNV-1a 64 of the content, quoted: strong enough to tell two builds' files apart.
 std::string etag_of(std::string_view content) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (const char c : content) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+  const std::uint64_t h = common::fnv1a(content.data(), content.size());
   char text[24];
   std::snprintf(text, sizeof text, "\"%016llx\"", static_cast<unsigned long long>(h));
   return text;
 }
 
-// "gzip" among the codings the client takes, not refused with q=0 (RFC 9110 12.5.3).
+// "gzip" among the codings the client takes (RFC 9110 12.5.3): names are case-insensitive, and
+// q=0 (or 0.0, 0.000) refuses one; "*" stands for any coding not named.
 bool takes_gzip(std::string_view accept) {
+  std::optional<bool> gzip, any;
   while (!accept.empty()) {
     const std::size_t comma = accept.find(',');
     std::string_view item = accept.substr(0, comma);
     accept = comma == std::string_view::npos ? std::string_view() : accept.substr(comma + 1);
-    while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
-    const std::string_view coding = item.substr(0, item.find(';'));
-    const bool refused = item.find("q=0") != std::string_view::npos && item.find("q=0.") == std::string_view::npos;
-    if ((coding == "gzip" || coding == "x-gzip" || coding == "*") && !refused) return true;
+    const std::size_t semicolon = item.find(';');
+    std::string coding(item.substr(0, semicolon));
+    std::erase_if(coding, [](char c) { return c == ' ' || c == '\t'; });
+    for (char& c : coding) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    bool wanted = true;
+    if (semicolon != std::string_view::npos) {
+      const std::string_view params = item.substr(semicolon + 1);
+      if (const std::size_t q = params.find("q="); q != std::string_view::npos)
+        wanted = std::strtod(std::string(params.substr(q + 2)).c_str(), nullptr) > 0.0;
+    }
+    if (coding == "gzip" || coding == "x-gzip") gzip = wanted;
+    else if (coding == "*") any = wanted;
   }
-  return false;
+  return gzip.value_or(any.value_or(false));
 }
 
 }  // namespace
@@ -68,16 +82,17 @@ std::optional<WebFiles> WebFiles::load(const std::string& root, std::uint16_t ws
       error = "--web-root '" + root + "' has no " + name + " (build the web viewer with -DOCEAN_BUILD_WEB=ON)";
       return std::nullopt;
     }
-    const std::string etag = etag_of(*content);
+    const std::string etag = etag_of(*content), gz_etag = etag.substr(0, etag.size() - 1) + "-gz\"";
     const std::string cache = "Cache-Control: no-cache\r\nVary: Accept-Encoding\r\n";
-    Variants v{{200, content_type(name), {}, content, cache + "ETag: " + etag + "\r\n"}, std::nullopt};
+    Variants v{{{200, content_type(name), {}, content, cache + "ETag: " + etag + "\r\n"}, etag}, std::nullopt};
     if (const auto gz = read_file(path.string() + ".gz"))
-      v.gzip = HttpReply{200, content_type(name), {}, gz,
-                         cache + "Content-Encoding: gzip\r\nETag: " + etag.substr(0, etag.size() - 1) + "-gz\"\r\n"};
+      v.gzip = Variant{{200, content_type(name), {}, gz, cache + "Content-Encoding: gzip\r\nETag: " + gz_etag + "\r\n"},
+                       gz_etag};
     files.replies_["/" + name] = std::move(v);
   }
   files.replies_["/"] = files.replies_["/index.html"];
-  files.replies_["/ocean-web.json"] = {{200, "application/json", "{\"ws_port\": " + std::to_string(ws_port) + "}\n"}, std::nullopt};
+  files.replies_["/ocean-web.json"] = {{{200, "application/json", "{\"ws_port\": " + std::to_string(ws_port) + "}\n"}, {}},
+                                      std::nullopt};
   return files;
 }
 
@@ -85,20 +100,18 @@ HttpReply WebFiles::reply(const HttpRequest& request) const {
   const auto found = replies_.find(request.target);
   if (found == replies_.end()) return {404, "text/plain; charset=utf-8", "not found\n"};
   const Variants& v = found->second;
-  const HttpReply& chosen = v.gzip && takes_gzip(request.accept_encoding) ? *v.gzip : v.identity;
+  const Variant& chosen = v.gzip && takes_gzip(request.accept_encoding) ? *v.gzip : v.identity;
   // The copy the client holds is this one: only the headers again.
-  const std::size_t etag_at = chosen.headers.find("ETag: ");
-  if (!request.if_none_match.empty() && etag_at != std::string::npos) {
-    const std::string etag = chosen.headers.substr(etag_at + 6, chosen.headers.find("\r\n", etag_at) - etag_at - 6);
-    if (request.if_none_match == "*" || request.if_none_match.find(etag) != std::string::npos)
-      return {304, chosen.content_type, {}, nullptr, chosen.headers};
-  }
-  return chosen;
+  if (!chosen.etag.empty() && !request.if_none_match.empty() &&
+      (request.if_none_match == "*" || request.if_none_match.find(chosen.etag) != std::string::npos))
+    return {304, chosen.reply.content_type, {}, nullptr, chosen.reply.headers};
+  return chosen.reply;
 }
 
 std::size_t WebFiles::total_bytes() const {
   std::size_t n = 0;
-  for (const auto& [target, v] : replies_) n += v.identity.content().size() + (v.gzip ? v.gzip->content().size() : 0);
+  for (const auto& [target, v] : replies_)
+    n += v.identity.reply.content().size() + (v.gzip ? v.gzip->reply.content().size() : 0);
   return n;
 }
 

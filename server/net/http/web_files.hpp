@@ -33,9 +33,13 @@ class WebFiles {
   std::size_t total_bytes() const;
 
  private:
+  struct Variant {
+    HttpReply reply;
+    std::string etag;  // quoted, as in the reply's ETag header; empty for generated replies
+  };
   struct Variants {
-    HttpReply identity;
-    std::optional<HttpReply> gzip;
+    Variant identity;
+    std::optional<Variant> gzip;
   };
   std::map<std::string, Variants> replies_;  // by request target
 };
