@@ -1,9 +1,16 @@
 #include "client/render/camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace ocean::render {
+
+void Camera::place(const glm::dvec3& at, double pitch_deg, double yaw_deg) {
+  position = at;
+  pitch_rad = static_cast<float>(glm::radians(std::clamp(pitch_deg, -89.0, 89.0)));
+  yaw_rad = static_cast<float>(glm::radians(yaw_deg));
+}
 
 glm::vec3 Camera::forward() const {
   const float cp = std::cos(pitch_rad);

@@ -15,6 +15,9 @@ struct Camera {
   float near_m = 0.5f;
   float far_m = 4000.0f;
 
+  // At `position`, turned as the viewers' --pitch and --yaw say (degrees; pitch within +-89).
+  void place(const glm::dvec3& at, double pitch_deg, double yaw_deg);
+
   glm::vec3 forward() const;  // unit view direction
   glm::vec3 right() const;    // unit, horizontal
   // World-to-eye rotation with the eye at the origin (camera-relative space).

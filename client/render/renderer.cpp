@@ -296,23 +296,26 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
 
 void Renderer::set_trail_uniforms(const Camera& camera) {
   const OceanUniforms& u = ocean_program().u;
-  std::vector<const FoamTrail*> near;
+  // The nearest kMaxTrails of those with foam, by their squared distance from the eye.
+  std::array<std::pair<double, const FoamTrail*>, 32> near{};  // a fleet has at most 32 tracks (PROTOCOL.md 8)
+  std::size_t count = 0;
   for (const FoamTrail& t : trails_)
-    if (t.strength > 0.0f && t.length_m > 0.0f) near.push_back(&t);
-  const auto distance = [&](const FoamTrail* t) {
-    return std::hypot(t->stern_x_m - camera.position.x, t->stern_z_m - camera.position.z);
-  };
-  std::sort(near.begin(), near.end(), [&](const FoamTrail* a, const FoamTrail* b) { return distance(a) < distance(b); });
-  if (near.size() > kMaxTrails) near.resize(kMaxTrails);
+    if (t.strength > 0.0f && t.length_m > 0.0f && count < near.size()) {
+      const double dx = t.stern_x_m - camera.position.x, dz = t.stern_z_m - camera.position.z;
+      near[count++] = {dx * dx + dz * dz, &t};
+    }
+  const std::size_t kept = std::min(count, kMaxTrails);
+  std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(kept), near.begin() + static_cast<std::ptrdiff_t>(count),
+                    [](const auto& a, const auto& b) { return a.first < b.first; });
   std::array<glm::vec4, 2 * kMaxTrails> packed{};
-  for (std::size_t i = 0; i < near.size(); ++i) {
-    const FoamTrail& t = *near[i];
+  for (std::size_t i = 0; i < kept; ++i) {
+    const FoamTrail& t = *near[i].second;
     packed[2 * i] = {static_cast<float>(t.stern_x_m - camera.position.x), static_cast<float>(t.stern_z_m - camera.position.z),
                      -t.dir_x * t.length_m, -t.dir_z * t.length_m};
     packed[2 * i + 1] = {t.half_width_m, t.spread, t.strength, 0.0f};
   }
   glUniform4fv(u.trail, static_cast<GLsizei>(packed.size()), glm::value_ptr(packed[0]));
-  glUniform1f(u.trails, static_cast<float>(near.size()));
+  glUniform1f(u.trails, static_cast<float>(kept));
   glUniform2f(u.eye_xz, static_cast<float>(std::fmod(camera.position.x, 1024.0)),
               static_cast<float>(std::fmod(camera.position.z, 1024.0)));
 }

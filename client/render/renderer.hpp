@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -115,7 +116,7 @@ class Renderer {
   glm::vec3 horizon_colour() const;
   // The foam trails of this frame (the nearest kMaxTrails to the camera are drawn).
   static constexpr std::size_t kMaxTrails = 8;
-  void set_trails(const std::vector<FoamTrail>& trails) { trails_ = trails; }
+  void set_trails(std::span<const FoamTrail> trails) { trails_.assign(trails.begin(), trails.end()); }
   // Uploads only the attribute streams of one frame (sizes from set_grid).
   bool upload_frame(const FrameStreams& frame);
   bool upload_frame(const float* height, const float* slope_x, const float* slope_z,

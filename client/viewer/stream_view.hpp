@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,6 @@
 #include "client/viewer/network_thread.hpp"
 #include "client/viewer/view_scene.hpp"
 #include "client/viewer/vessel_view.hpp"
-
-#include <optional>
 
 namespace ocean::viewer {
 
@@ -52,9 +51,6 @@ class StreamView {
   // The vessels present at the render time, posed on the frame just blended, as the scene's hulls.
   void pose_hulls();
 
- public:
-
- private:
   ViewScene scene_;
   StreamShape shape_;
   client::RenderedFrame last_;

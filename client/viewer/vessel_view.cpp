@@ -48,12 +48,12 @@ const std::vector<client::HullState>& VesselView::update(std::span<const model::
                                                          render::Renderer& renderer, render::Camera& camera) {
   const std::vector<client::HullState>& posed = motion_.update(tracks, sea, fields, t_s);
   hulls.clear();
-  std::vector<render::FoamTrail> trails;
+  trails_.clear();
   for (const client::HullState& h : posed) {
     hulls.push_back(hull_instance(h));
-    trails.push_back(foam_trail(h));
+    trails_.push_back(foam_trail(h));
   }
-  renderer.set_trails(trails);
+  renderer.set_trails(trails_);
   const double dt = t_s - last_t_s_;
   last_t_s_ = t_s;
   const auto followed = std::find_if(posed.begin(), posed.end(), [&](const client::HullState& h) { return h.id == follow_id_; });

@@ -37,6 +37,7 @@ class VesselView {
   void follow(const client::HullState& hull, double dt_s, render::Camera& camera);
 
   client::HullMotion motion_;
+  std::vector<render::FoamTrail> trails_;  // this frame's, kept for its capacity
   std::int64_t follow_id_ = -1;
   bool eased_ = false;  // the follow camera has a previous pose to ease from
   double last_t_s_ = 0.0;

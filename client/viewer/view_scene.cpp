@@ -11,10 +11,7 @@ bool ViewScene::init(const render::RendererDesc& desc, const CameraPose& pose, s
     return false;
   }
   if (!hud.init(error) || !hull_renderer.init(error)) return false;
-  constexpr float kRadPerDeg = 3.14159265f / 180.0f;
-  camera.position = {pose.x_m, pose.eye_height_m, pose.z_m};
-  camera.pitch_rad = pose.pitch_deg * kRadPerDeg;
-  camera.yaw_rad = pose.yaw_deg * kRadPerDeg;
+  camera.place({pose.x_m, pose.eye_height_m, pose.z_m}, pose.pitch_deg, pose.yaw_deg);
   camera.far_m = std::max(camera.far_m, renderer.desc().view_distance_m * 1.6f);
   return true;
 }

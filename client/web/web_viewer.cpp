@@ -34,17 +34,13 @@ bool WebViewer::init(std::string& error) {
     return false;
   }
   if (!hud_.init(error) || !hull_renderer_.init(error)) return false;
-  camera_.position = {0.0, kEyeHeightM, 0.0};
-  camera_.pitch_rad = static_cast<float>(kPitchDeg * 3.14159265358979 / 180.0);
+  camera_.place({0.0, kEyeHeightM, 0.0}, kPitchDeg, 0.0);
   camera_.far_m = std::max(camera_.far_m, renderer_.desc().view_distance_m * 1.6f);
   return true;
 }
 
 void WebViewer::place_camera(double x, double y, double z, double pitch_deg, double yaw_deg) {
-  constexpr double kRadPerDeg = 3.14159265358979 / 180.0;
-  camera_.position = {x, std::max(1.0, y), z};
-  camera_.pitch_rad = static_cast<float>(std::clamp(pitch_deg, -89.0, 89.0) * kRadPerDeg);
-  camera_.yaw_rad = static_cast<float>(yaw_deg * kRadPerDeg);
+  camera_.place({x, std::max(1.0, y), z}, pitch_deg, yaw_deg);
 }
 
 void WebViewer::connect(const std::string& url, std::uint8_t profile_id) {

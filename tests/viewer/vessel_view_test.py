@@ -74,18 +74,20 @@ def render(build, work, name, fleet, server_args, viewer_args, frames, sea_time_
         viewer = subprocess.run([os.path.join(build, "client", "viewer", "ocean-viewer"), "--server", f"127.0.0.1:{port}",
                                  "--headless", "--size", f"{WIDTH}x{HEIGHT}", "--frames", str(frames), "--screenshot", png,
                                  "--record-hulls", hulls, "--first-frame-timeout", "60"] + viewer_args,
-                                capture_output=True, text=True, timeout=300)
+                                capture_output=True, text=True, timeout=90)
     finally:
         server.terminate()
         server.wait(timeout=30)
     if viewer.returncode != 0:
         sys.exit(f"FAIL: ocean-viewer exited {viewer.returncode} ({name}):\n{viewer.stderr[-2000:]}")
-    return png, list(csv.DictReader(open(hulls)))
+    with open(hulls) as f:
+        return png, list(csv.DictReader(f))
 
 
 def load_rgb(path):
-    w, h, c, rows = decode_png(open(path, "rb").read())
-    return np.array([list(r) for r in rows], dtype=np.int32).reshape(h, w, c)[:, :, :3]
+    with open(path, "rb") as f:
+        w, h, c, rows = decode_png(f.read())
+    return np.frombuffer(b"".join(bytes(r) for r in rows), np.uint8).reshape(h, w, c)[:, :, :3].astype(np.int32)
 
 
 def ground_points(plane_y=0.0):

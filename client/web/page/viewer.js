@@ -88,7 +88,9 @@ var Module = {
     if (params.get('connect') === '1') connect();
     const eye = (params.get('camera') || '').split(',').map(Number);
     if (eye.length === 5 && eye.every(Number.isFinite)) Module.ccall('ocean_web_camera', null, Array(5).fill('number'), eye);
-    if (params.get('follow') !== null) Module.ccall('ocean_web_follow', null, ['number'], [Number(params.get('follow'))]);
+    const follow = Number(params.get('follow'));
+    if (params.get('follow') !== null && Number.isInteger(follow) && follow >= 0)
+      Module.ccall('ocean_web_follow', null, ['number'], [follow]);
     const seconds = Number(params.get('report') || 0);
     if (seconds > 0) setTimeout(finishReport, seconds * 1000);
   },
