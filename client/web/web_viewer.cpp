@@ -22,6 +22,11 @@ constexpr std::size_t kRecentDecodes = 600;                // the median of the 
 constexpr std::size_t kRecordLimitBytes = 8u << 20;        // a test records seconds, not hours
 constexpr double kEyeHeightM = 10.0, kPitchDeg = -6.0;      // the native viewers' default pose
 constexpr double kKbpsSampleS = 0.2;                        // KbpsMeter's five samples a second
+double median(const std::deque<double>& values) {
+  std::vector<double> sorted(values.begin(), values.end());
+  std::sort(sorted.begin(), sorted.end());
+  return sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+}
 }  // namespace
 
 double WebViewer::now() const { return emscripten_get_now() / 1000.0; }
@@ -59,8 +64,11 @@ void WebViewer::connect(const std::string& url, std::uint8_t profile_id) {
   state_ = "connecting";
   close_reason_.clear();
   ++connects_;
+  connect_ms_ = emscripten_get_now();
+  open_ms_ = welcome_ms_ = first_frame_ms_ = -1.0;
   BrowserSocketEvents socket_events;
   socket_events.on_open = [this] {
+    open_ms_ = emscripten_get_now();
     if (session_) session_->start(now());
   };
   socket_events.on_message = [this](std::span<const std::uint8_t> bytes) { on_message(bytes); };
@@ -102,7 +110,9 @@ void WebViewer::on_message(std::span<const std::uint8_t> bytes) {
   const double t0 = emscripten_get_now();
   session_->on_tcp_message(bytes, now());
   // Verification and decoding; not what on_frame does with the result (jitter buffer, hash).
-  const double spent_ms = emscripten_get_now() - t0 - frame_callback_ms_;
+  const double handled_ms = emscripten_get_now() - t0;
+  messages_ms_ += handled_ms;
+  const double spent_ms = handled_ms - frame_callback_ms_;
   if (!session_) return;
   const std::uint64_t completed = session_->stats().frames_complete - before;
   if (completed > 0) {  // handling of messages that carry no frame is not decode
@@ -147,6 +157,7 @@ void WebViewer::on_welcome(const protocol::Welcome& welcome) {
   fleet_ = welcome.vessels;
   tick_period_s_ = welcome.tick_period_s;
   state_ = "streaming";
+  welcome_ms_ = emscripten_get_now();
 }
 
 void WebViewer::on_scene_update(const protocol::SceneUpdate& update) {
@@ -184,6 +195,15 @@ void WebViewer::touches(const std::vector<render::TouchPoint>& down) {
 }
 
 void WebViewer::frame(double now_s, int width, int height) {
+  const double started_ms = emscripten_get_now();
+  // Time inside the calls that issue GL: with a software rasterizer in the browser's GPU process
+  // they wait for it, which a phone's GPU does not make them do.
+  double gl_ms = 0.0;
+  const auto in_gl = [&gl_ms](auto&& call) {
+    const double t0 = emscripten_get_now();
+    call();
+    gl_ms += emscripten_get_now() - t0;
+  };
   const double dt = last_frame_s_ > 0.0 ? std::min(now_s - last_frame_s_, 0.25) : 0.0;
   last_frame_s_ = now_s;
   if (session_ && session_->next_due() <= now_s) {
@@ -201,15 +221,18 @@ void WebViewer::frame(double now_s, int width, int height) {
   if (sample.status != client::TimelineSample::Status::empty && samples > 0) {
     client::FrameTimeline::blend(sample, channels_);
     if (channels_.height.size() == samples) {
-      render::upload_channels(renderer_, channels_, layout_, foam_, dt);
+      in_gl([&] { render::upload_channels(renderer_, channels_, layout_, foam_, dt); });
       pose_vessels(sample);
+      if (first_frame_ms_ < 0.0) first_frame_ms_ = started_ms;  // drawn below, in this animation frame
       ++uploads_;
     }
   }
   if (session_ && session_->state() == client::ClientSession::State::streaming)
     renderer_.set_overcast(weather_.update(session_->scene().wind_speed_mps, dt));
-  renderer_.draw(camera_, width, height, now_s);
-  hulls_in_view_ = hull_renderer_.draw(camera_, width, height, hulls_, render::hull_light(renderer_));
+  in_gl([&] {
+    renderer_.draw(camera_, width, height, now_s);
+    hulls_in_view_ = hull_renderer_.draw(camera_, width, height, hulls_, render::hull_light(renderer_));
+  });
 
   fps_ = fps_meter_.tick(now_s);
   if (now_s - kbps_sampled_s_ >= kKbpsSampleS) {
@@ -229,9 +252,14 @@ void WebViewer::frame(double now_s, int width, int height) {
                   frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, static_cast<unsigned long long>(frames_));
     stats.extra = extra;
     stats.vessels = vessels_.in_view(hulls_in_view_);
-    hud_.draw(stats, width, height);
+    in_gl([&] { hud_.draw(stats, width, height); });
   }
   ++rendered_;
+  recent_page_ms_.push_back(emscripten_get_now() - started_ms - gl_ms + messages_ms_);
+  if (recent_page_ms_.size() > kRecentDecodes) recent_page_ms_.pop_front();
+  recent_gl_ms_.push_back(gl_ms);
+  if (recent_gl_ms_.size() > kRecentDecodes) recent_gl_ms_.pop_front();
+  messages_ms_ = 0.0;
 }
 
 std::string WebViewer::report() const {
@@ -240,9 +268,10 @@ std::string WebViewer::report() const {
   json.integer("connects", connects_).integer("messages", messages_in_).integer("bytes", bytes_in_);
   json.integer("frames", frames_).integer("uploads", uploads_).integer("rendered", rendered_);
   json.fixed("decode_ms_per_frame", frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, 4);
-  std::vector<double> recent(recent_decode_ms_.begin(), recent_decode_ms_.end());
-  std::sort(recent.begin(), recent.end());
-  json.fixed("decode_ms_median", recent.empty() ? 0.0 : recent[recent.size() / 2], 4);
+  json.fixed("decode_ms_median", median(recent_decode_ms_), 4).fixed("page_ms_median", median(recent_page_ms_), 4);
+  json.fixed("gl_ms_median", median(recent_gl_ms_), 4);
+  json.fixed("connect_ms", connect_ms_, 1).fixed("open_ms", open_ms_, 1).fixed("welcome_ms", welcome_ms_, 1);
+  json.fixed("first_frame_ms", first_frame_ms_, 1);
   json.boolean("recording_full", recording_full_);
   json.integer("vessels", static_cast<long long>(vessels_.hulls().size()))
       .integer("vessels_in_view", static_cast<long long>(hulls_in_view_.size()));

@@ -113,6 +113,14 @@ class WebViewer {
   // a decode budget is held to (a joining key, which may compute a wake's history, is one of them).
   std::deque<double> recent_decode_ms_;
   double frame_callback_ms_ = 0.0;  // on_frame's own time within the message being handled
+  // The page's own cost per animation frame (issue 38: what transfers to a phone, whose GPU
+  // rasterizes): frame()'s JavaScript and WebAssembly outside the calls that issue GL, plus every
+  // message handled since the last one; and apart, the time inside those GL calls, which here
+  // includes waiting for the browser's software rasterizer.
+  double messages_ms_ = 0.0;
+  std::deque<double> recent_page_ms_, recent_gl_ms_;
+  // Startup, in the page's milliseconds from navigation (performance.now()); -1 until it happens.
+  double connect_ms_ = -1.0, open_ms_ = -1.0, welcome_ms_ = -1.0, first_frame_ms_ = -1.0;
   double last_frame_s_ = 0.0, fps_ = 0.0, kbps_sampled_s_ = 0.0;
   viewer::FpsMeter fps_meter_;    // the native viewers' meters, so the HUDs read alike
   viewer::KbpsMeter kbps_meter_;

@@ -45,7 +45,8 @@ TEST_CASE("WebFiles serves the page, its script and module with their types, and
   CHECK(files->reply(get("/index.html")).content() == "contents of index.html");
   CHECK(files->reply(get("/ocean-web.js")).content_type == "text/javascript; charset=utf-8");
   CHECK(files->reply(get("/ocean-web.wasm")).content_type == "application/wasm");
-  CHECK(files->reply(get("/ocean-web.json")).content() == "{\"ws_port\": 7701}\n");
+  // The WebSocket's port, and the module's size for the page's progress ("contents of ocean-web.wasm").
+  CHECK(files->reply(get("/ocean-web.json")).content() == "{\"ws_port\": 7701, \"wasm_bytes\": 26}\n");
   // Any other name - a file that exists in the folder, a path out of it - is 404.
   std::ofstream(root / "secret.txt") << "not served";
   for (const char* target : {"/secret.txt", "/../index.html", "/web/index.html", "index.html", "/INDEX.HTML"})

@@ -166,7 +166,7 @@ TEST_CASE("the page server (--web-listen) serves the page, names the WebSocket p
   const std::string page = raw_http_get(web, "/?connect=1");
   CHECK(page.rfind("HTTP/1.1 200", 0) == 0);
   CHECK(page.find("<!-- index.html -->") != std::string::npos);
-  CHECK(raw_http_get(web, "/ocean-web.json").find("{\"ws_port\": " + std::to_string(*harness.server().ws_port()) + "}") !=
+  CHECK(raw_http_get(web, "/ocean-web.json").find("{\"ws_port\": " + std::to_string(*harness.server().ws_port()) + ", ") !=
         std::string::npos);
   CHECK(raw_http_get(web, "/../server.cpp").rfind("HTTP/1.1 404", 0) == 0);
   // The page's origin as the browser names it (the host it reached the WebSocket by, the page's

@@ -1,4 +1,6 @@
-// The page around ocean-web.wasm: the connect box, the canvas size, and a report a test can read.
+// The page around ocean-web.wasm: the connect box, the canvas size, the progress line over the sea
+// until its first frame (the module's download, the connection, the first frame), and a report a
+// test can read.
 // Query parameters: ws=URL (the server's WebSocket; default: the port /ocean-web.json names, on
 // this page's host), profile=ID, connect=1 (connect at once), record=1 (keep the received
 // messages), ui=0 (no panel or help over the sea, for screenshots), scale=S (render at S times
@@ -10,6 +12,13 @@
 const params = new URLSearchParams(location.search);
 const canvas = document.getElementById('ocean');
 const statusLine = document.getElementById('status');
+const progress = document.getElementById('progress');
+// Asked for at once, beside the module's download: the WebSocket's port and the module's size.
+const pageConfig = fetch('ocean-web.json').then((r) => r.json()).catch(() => ({}));
+let wasmBytes = 0;
+pageConfig.then((config) => { wasmBytes = Number(config.wasm_bytes) || 0; });
+// When the module arrived and the runtime was ready, in ms from navigation (for the first-frame test).
+window.oceanStages = {};
 
 const scale = Math.min(1, Math.max(0.25, Number(params.get('scale')) || 1));  // not a number: 1
 
@@ -25,11 +34,14 @@ if (params.get('ui') === '0')
 
 async function defaultServer() {
   if (params.get('ws')) return params.get('ws');
-  try {
-    const config = await (await fetch('ocean-web.json')).json();
-    if (config.ws_port) return `ws://${location.hostname}:${config.ws_port}/`;
-  } catch (e) { /* opened from a file or another server: the user types the address */ }
-  return '';
+  const config = await pageConfig;  // {} when opened from a file or another server: the user types it
+  return config.ws_port ? `ws://${location.hostname}:${config.ws_port}/` : '';
+}
+
+// The line over the sea until its first frame: what the page is waiting for.
+function showProgress(text) {
+  progress.textContent = text;
+  progress.hidden = !text;
 }
 
 function report() {
@@ -47,6 +59,7 @@ function connect() {
   }
   try {
     Module.ccall('ocean_web_connect', null, ['string', 'number'], [url, profile]);
+    showStatus();
   } catch (e) {
     Module.ccall('ocean_web_disconnect', null, [], []);
     statusLine.textContent = `cannot connect to ${url}: ${e.message}`;
@@ -61,6 +74,11 @@ function showStatus() {
   if (r.profile) text += ` · ${r.profile} ${r.grid}² · ${r.frames} frames · ${r.decode_ms_per_frame.toFixed(2)} ms decode`;
   if (r.state === 'closed' && r.close_reason) text += ` · ${r.close_reason}`;
   statusLine.textContent = text;
+  const waiting = r.first_frame_ms < 0;
+  if (r.state === 'connecting') showProgress(`connecting to ${document.getElementById('server').value.trim()}...`);
+  else if (r.state === 'streaming') showProgress(waiting ? `${r.profile}: waiting for the first frame...` : '');
+  else if ((r.state === 'closed' || r.state === 'failed') && waiting) showProgress(`no stream: ${r.close_reason}`);
+  else showProgress('');
 }
 
 function finishReport() {
@@ -74,16 +92,43 @@ function finishReport() {
   document.title = 'ocean-web report ready';
 }
 
+// The module's download with its progress, compiled as it arrives (as Emscripten's own loader does).
+function instantiateWasm(imports, receiveInstance) {
+  fetch('ocean-web.wasm').then((response) => {
+    if (!response.ok) throw new Error(`HTTP ${response.status}`);
+    let received = 0;
+    const counting = new TransformStream({
+      transform(chunk, out) {
+        received += chunk.byteLength;
+        const kb = (n) => Math.round(n / 1024);
+        showProgress(wasmBytes ? `loading the viewer: ${Math.min(100, Math.round(100 * received / wasmBytes))} % of ${kb(wasmBytes)} KB`
+                               : `loading the viewer: ${kb(received)} KB`);
+        out.enqueue(chunk);
+      },
+    });
+    const body = new Response(response.body.pipeThrough(counting), { headers: { 'Content-Type': 'application/wasm' } });
+    return WebAssembly.instantiateStreaming(body, imports);
+  }).then((result) => {
+    window.oceanStages.module = performance.now();
+    showProgress('starting the viewer...');
+    receiveInstance(result.instance, result.module);
+  }).catch((e) => showProgress(`cannot load the viewer (ocean-web.wasm): ${e.message}`));
+  return {};  // the exports arrive through receiveInstance
+}
+
 var Module = {
   canvas,
+  instantiateWasm,
   print: (text) => console.log(text),
   printErr: (text) => console.warn(text),
   onRuntimeInitialized: async () => {
+    window.oceanStages.ready = performance.now();
+    showProgress('');
     document.getElementById('server').value = await defaultServer();
     if (params.get('profile') !== null) document.getElementById('profile').value = params.get('profile');
     document.getElementById('connect').addEventListener('submit', (e) => { e.preventDefault(); connect(); });
     statusLine.textContent = 'ready';
-    setInterval(showStatus, 500);
+    setInterval(showStatus, 250);
     if (params.get('record') === '1') Module.ccall('ocean_web_record', null, ['number'], [1]);
     if (params.get('connect') === '1') connect();
     const eye = (params.get('camera') || '').split(',').map(Number);

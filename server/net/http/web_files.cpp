@@ -91,8 +91,13 @@ std::optional<WebFiles> WebFiles::load(const std::string& root, std::uint16_t ws
     files.replies_["/" + name] = std::move(v);
   }
   files.replies_["/"] = files.replies_["/index.html"];
-  files.replies_["/ocean-web.json"] = {{{200, "application/json", "{\"ws_port\": " + std::to_string(ws_port) + "}\n"}, {}},
-                                      std::nullopt};
+  // The module's size as the page's script reads it (decompressed), for its loading progress.
+  const std::size_t wasm_bytes = files.replies_["/ocean-web.wasm"].identity.reply.content().size();
+  files.replies_["/ocean-web.json"] = {{{200, "application/json",
+                                         "{\"ws_port\": " + std::to_string(ws_port) +
+                                             ", \"wasm_bytes\": " + std::to_string(wasm_bytes) + "}\n"},
+                                        {}},
+                                       std::nullopt};
   return files;
 }
 
