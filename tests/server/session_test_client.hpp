@@ -27,6 +27,8 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -70,11 +72,14 @@ class SessionTestClient {
   }
   void hello(const proto::Hello& hello) { send_tcp(proto::encode(hello)); }
 
-  // Reads whatever arrived (TCP and UDP) without blocking; false once TCP is closed.
+  // Reads what arrived (TCP and UDP) without blocking; false once TCP is closed. Each socket for
+  // about 20 ms a call at most: a client that decodes slower than the server sends (a sanitizer
+  // build on a busy machine) would otherwise never return to its caller's condition.
   bool pump() {
     if (reading_paused) return !tcp_closed_;
     std::array<std::uint8_t, 8192> buffer;
-    while (!tcp_closed_) {
+    const auto tcp_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(20);
+    while (!tcp_closed_ && std::chrono::steady_clock::now() < tcp_until) {
       std::error_code error;
       const std::size_t n = tcp_.read_some(asio::buffer(buffer), error);
       if (error == asio::error::would_block) break;
@@ -97,7 +102,8 @@ class SessionTestClient {
         if (result.status == proto::TcpFramer::Status::good) on_message(framer_.message(), wire::Transport::tcp);
       }
     }
-    for (;;) {
+    const auto udp_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(20);
+    while (std::chrono::steady_clock::now() < udp_until) {
       alignas(8) std::array<std::uint8_t, 2048> datagram;
       asio::ip::udp::endpoint from;
       std::error_code error;
@@ -142,8 +148,20 @@ class SessionTestClient {
   bool send_acks = true;
   std::size_t drop_udp_every = 0;  // > 0: every n-th datagram is dropped unread
   std::size_t udp_datagrams_seen = 0;
+  std::string first_rejection, last_rejection;  // the decoder's reasons for chunks it refused
   std::size_t udp_frame_chunks = 0, tcp_frame_chunks = 0, udp_bytes_in = 0, rejected_chunks = 0, udp_bundles = 0;
   bool closed() const { return tcp_closed_; }
+  // What the stream has done so far, for a failed wait's message.
+  std::string progress() const {
+    std::ostringstream out;
+    out << "welcome " << (welcome ? "yes" : "no") << ", udp_ready " << udp_ready << ", chunks tcp " << tcp_frame_chunks
+        << " udp " << udp_frame_chunks << " rejected " << rejected_chunks << " (first: " << first_rejection
+        << "; last: " << last_rejection << "), keyframes " << key_ticks.size()
+        << ", completed " << completed_heights.size();
+    if (decoder_) out << " (decoder complete " << decoder_->complete_ticks().size() << ")";
+    out << ", errors " << errors.size() << ", closed " << tcp_closed_;
+    return out.str();
+  }
   int ws_status = 0;                      // the WebSocket upgrade's HTTP status
   std::optional<std::uint16_t> ws_close_code;  // the server's close frame
 
@@ -162,6 +180,9 @@ class SessionTestClient {
       config_ = codec::decoder_config(*w);
       codec::DecoderOptions options;
       options.max_payload = proto::kMaxChunkPayloadUdp;
+      // As ClientSession keeps them: a server may base a delta on any acked frame this old
+      // (PROTOCOL.md 7), as a busy one does when it rebases to a state it has encoded already.
+      options.history_ticks = proto::kMaxBaselineGap;
       decoder_ = std::make_unique<codec::Decoder>(config_, options);
       decoder_->add_scene(0, static_cast<std::uint8_t>(w->scene_serial), w->scene);
       if (config_.has_wake()) decoder_->set_vessels(w->vessels);
@@ -199,8 +220,13 @@ class SessionTestClient {
     (transport == wire::Transport::udp ? udp_frame_chunks : tcp_frame_chunks)++;
     if (!decoder_) return;
     const codec::ChunkView view{record.tick, record.baseline, record.key, record.index, record.count, record.payload};
-    if (decoder_->accept(view) != codec::ChunkError::ok) {
+    if (const codec::ChunkError error = decoder_->accept(view); error != codec::ChunkError::ok) {
       ++rejected_chunks;
+      const std::string why = std::string(codec::to_string(error)) + " (tick " + std::to_string(record.tick) + " on " +
+                              std::to_string(record.baseline) + ", newest complete " +
+                              std::to_string(decoder_->newest_complete().value_or(0)) + ")";
+      if (first_rejection.empty()) first_rejection = why;
+      last_rejection = why;
       return;
     }
     const Tick tick = record.tick;

@@ -52,7 +52,9 @@ TEST_CASE("a HeightQuery's answer is the viewer's height_at within the stream's 
     viewer->keep_frames = true;
     viewer->hello(proto::Hello{profile, 0, ocean::wire::Transport::tcp, "viewer"});
     // A few frames in (a sanitizer build decodes a choppy stream with a wake at a few a second).
-    REQUIRE(pump_until({viewer.get()}, [&] { return viewer->completed_heights.size() > 3; }, std::chrono::seconds(60)));
+    const bool started = pump_until({viewer.get()}, [&] { return viewer->completed_heights.size() > 3; }, std::chrono::seconds(60));
+    INFO("profile " << int(profile) << ": " << viewer->progress());
+    REQUIRE(started);
     REQUIRE(viewer->stream_config().has_wake());
     const proto::HeightQuery query = query_of(profile, 40 + profile);
     viewer->send_tcp(proto::encode(query));
@@ -98,23 +100,28 @@ TEST_CASE("a HeightQuery's answer is the viewer's height_at within the stream's 
 
 TEST_CASE("the points budget of every connection together holds two admins to it, with the wait") {
   SessionCoreOptions options;
-  options.query_points_per_s = 500.0;  // a second of it is a 400-point batch and a bit
+  // A 400-point batch leaves 100 of the burst, and 400 more are 3 s of refill away: far more than
+  // a sanitizer build on a busy machine takes between the two admins' batches.
+  options.query_points_per_s = 100.0;
   options.query_point_burst = 500.0;
   SessionHarness harness(wake_config(), options);
   auto first = harness.client(), second = harness.client();
   first->hello(proto::Hello{1, 0, ocean::wire::Transport::tcp, "admin-1"});
   second->hello(proto::Hello{1, 0, ocean::wire::Transport::tcp, "admin-2"});
   const std::vector<SessionTestClient*> all{first.get(), second.get()};
-  REQUIRE(pump_until(all, [&] { return first->completed_heights.size() > 3 && second->completed_heights.size() > 3; }));
+  const bool started = pump_until(
+      all, [&] { return first->completed_heights.size() > 3 && second->completed_heights.size() > 3; }, std::chrono::seconds(60));
+  INFO("first: " << first->progress() << "; second: " << second->progress());
+  REQUIRE(started);
   first->send_tcp(proto::encode(query_of(1, 1)));
   REQUIRE(pump_until(all, [&] { return first->height_answers.size() == 1; }));
-  second->send_tcp(proto::encode(query_of(1, 2)));  // 400 more points within the same second
+  second->send_tcp(proto::encode(query_of(1, 2)));  // 400 more points within the same 3 s
   REQUIRE(pump_until(all, [&] { return !second->errors.empty() || !second->height_answers.empty(); }));
   REQUIRE(second->errors.size() == 1);
   CHECK(second->errors[0].code == proto::Reason::rate_limited);
   CHECK(second->errors[0].text.find("query points a second over every connection") != std::string::npos);
   CHECK(second->errors[0].text.find("retry in") != std::string::npos);
-  std::this_thread::sleep_for(std::chrono::milliseconds(900));  // the budget refills
+  std::this_thread::sleep_for(std::chrono::milliseconds(3100));  // the budget refills
   second->send_tcp(proto::encode(query_of(1, 3)));
   REQUIRE(pump_until(all, [&] { return !second->height_answers.empty(); }));
   CHECK(!second->closed());
@@ -128,8 +135,10 @@ TEST_CASE("HeightQuery abuse is refused with reasons while viewers keep streamin
   admin->hello(proto::Hello{1, 0, ocean::wire::Transport::tcp, "admin"});
   const std::vector<SessionTestClient*> all{viewer.get(), admin.get()};
   // A sanitizer build decodes two streams with a wake at a few frames a second.
-  REQUIRE(pump_until(all, [&] { return viewer->completed_heights.size() > 3 && admin->completed_heights.size() > 3; },
-                     std::chrono::seconds(60)));
+  const bool started = pump_until(
+      all, [&] { return viewer->completed_heights.size() > 3 && admin->completed_heights.size() > 3; }, std::chrono::seconds(60));
+  INFO("viewer: " << viewer->progress() << "; admin: " << admin->progress());
+  REQUIRE(started);
 
   SECTION("a wrong token, an unoffered or unknown profile, no token: each refused by name") {
     proto::HeightQuery q = query_of(1, 1);
