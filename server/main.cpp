@@ -1,5 +1,5 @@
 // ocean-server: loads the configuration, then runs the Server until SIGINT or SIGTERM (SIGHUP is
-// logged and ignored, SIGPIPE ignored).
+// logged and reads the TLS certificate again, SIGPIPE ignored).
 // The one place exceptions are caught. Exit status (README-server.md): 0 stopped by a signal,
 // 2 a bad option or configuration (also those found only when the server is built: an epoch too
 // far from now, no streamable profile), 1 a failure at run time (an address in use...). Every

@@ -220,7 +220,7 @@ TEST_CASE("every stream transport opens links that carry its name, and the prima
     asio::ip::tcp::socket client(context);
     client.connect(acceptor.local_endpoint());
     asio::ip::tcp::socket accepted = acceptor.accept();
-    const TransportContext transport_context{config, 1 << 16, 0, {}};
+    const TransportContext transport_context{config, 1 << 16, 0, nullptr, {}};
     const std::shared_ptr<StreamLink> link = transport.open(std::move(accepted), transport_context);
     REQUIRE(link);
     CHECK(link->transport() == transport.name);

@@ -34,7 +34,7 @@ def http(method, url, body=None, timeout=60):
         raise OSError(f"{method} {url}: HTTP {e.code}: {e.read().decode(errors='replace')[:500]}") from None
 
 
-def start_server(build, log_path, profile, fleet):
+def start_server(build, log_path, profile, fleet, extra=()):
     # mobile-choppy (with a choppy sea) only when asked for: its sim and encoder would cost the
     # others' frame rate.
     choppy = ["--profiles", "mobile,lite,mobile-choppy", "--choppiness", "1.2"] if profile == 5 else []
@@ -42,6 +42,7 @@ def start_server(build, log_path, profile, fleet):
             "--web-listen", "127.0.0.1:0", "--metrics-listen", "127.0.0.1:0"] + (choppy or ["--profiles", "mobile,lite"])
     if fleet:
         args += ["--config", fleet]
+    args += list(extra)
     log = open(log_path, "w")
     server = subprocess.Popen(args, stdout=log, stderr=subprocess.STDOUT)
     deadline = time.time() + 30
@@ -60,8 +61,9 @@ def start_server(build, log_path, profile, fleet):
 class Browser:
     """One headless Chromium session over chromedriver's WebDriver HTTP API."""
 
-    def __init__(self, chromium, chromedriver, profile_dir):
+    def __init__(self, chromium, chromedriver, profile_dir, insecure_certs=False):
         self.profile_dir = profile_dir
+        self.insecure_certs = insecure_certs  # a self-signed test certificate is let in
         self.port = free_port()
         self.driver = subprocess.Popen([chromedriver, f"--port={self.port}"], stdout=subprocess.DEVNULL,
                                        stderr=subprocess.DEVNULL)
@@ -89,8 +91,11 @@ class Browser:
                    "args": ["--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                             "--window-size=1280,720", "--disable-dev-shm-usage", f"--user-data-dir={profile_dir}",
                             "--autoplay-policy=no-user-gesture-required"]}
+        if self.insecure_certs:
+            options["args"].append("--ignore-certificate-errors")
         reply = http("POST", self.base + "/session",
-                     {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": options}}})
+                     {"capabilities": {"alwaysMatch": {"browserName": "chrome", "goog:chromeOptions": options,
+                                                       "acceptInsecureCerts": self.insecure_certs}}})
         return f"{self.base}/session/{reply['value']['sessionId']}"
 
     def emulate_network(self, down_kbps, up_kbps, rtt_ms):
@@ -148,3 +153,12 @@ def verdict(failures, work):
         print("FAIL:", failure)
     print(open(os.path.join(work, "server.log")).read()[-3000:])
     return 1
+
+
+def self_signed_certificate(work):
+    """A certificate for 127.0.0.1 and its key, made by openssl: (cert, key) paths."""
+    cert, key = os.path.join(work, "cert.pem"), os.path.join(work, "key.pem")
+    subprocess.run(["openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", key, "-out", cert, "-days", "2",
+                    "-subj", "/CN=127.0.0.1", "-addext", "subjectAltName=IP:127.0.0.1,DNS:localhost"],
+                   check=True, capture_output=True)
+    return cert, key

@@ -23,7 +23,7 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from chromium_driver import REPORT, Browser, start_server, stop_server, verdict  # noqa: E402
+from chromium_driver import REPORT, Browser, self_signed_certificate, start_server, stop_server, verdict  # noqa: E402
 from png_decode import decode_png  # noqa: E402
 
 
@@ -61,6 +61,8 @@ def main():
     parser.add_argument("--screenshot", default="", help="where to keep the screenshot (PNG)")
     parser.add_argument("--follow", type=int, default=-1, help="the camera follows this vessel of the fleet")
     parser.add_argument("--camera", default="", help="X,Y,Z,PITCH,YAW: where the page's eye is (its camera= parameter)")
+    parser.add_argument("--tls", action="store_true",
+                        help="https and wss: the server gets a self-signed certificate (--tls-cert), Chromium takes it")
     args = parser.parse_args()
     for tool in (args.chromium, args.chromedriver):
         if not shutil.which(tool):
@@ -70,11 +72,15 @@ def main():
 
     work = tempfile.mkdtemp(prefix="ocean-web-test-")
     failures = []
-    server, ws_port, web_port = start_server(args.build, os.path.join(work, "server.log"), args.profile, args.fleet)
+    tls = ["--tls-cert", "--tls-key"] if args.tls else []
+    if tls:
+        tls = [v for pair in zip(tls, self_signed_certificate(work)) for v in pair]
+    server, ws_port, web_port = start_server(args.build, os.path.join(work, "server.log"), args.profile, args.fleet, tls)
     browser = None
     try:
-        browser = Browser(chromium, chromedriver, os.path.join(work, "chromium"))
-        url = (f"http://127.0.0.1:{web_port}/index.html?connect=1&record=1&ui=0&profile={args.profile}"
+        browser = Browser(chromium, chromedriver, os.path.join(work, "chromium"), insecure_certs=args.tls)
+        scheme = "https" if args.tls else "http"
+        url = (f"{scheme}://127.0.0.1:{web_port}/index.html?connect=1&record=1&ui=0&profile={args.profile}"
                f"&scale={args.scale}" + (f"&follow={args.follow}" if args.follow >= 0 else "")
                + (f"&camera={args.camera}" if args.camera else ""))
         browser.open(url)
@@ -147,6 +153,9 @@ def main():
         # messages it handled), which a phone's CPU pays whatever its GPU; not SwiftShader's raster.
         if report["page_ms_median"] > MAX_PAGE_MS:
             failures.append(f"the page's own cost is {report['page_ms_median']} ms a frame (median), over {MAX_PAGE_MS}")
+        socket_url = browser.run("return document.getElementById('server').value;")
+        if not socket_url.startswith("wss://" if args.tls else "ws://"):
+            failures.append(f"the page connected to {socket_url!r}, not over {'wss' if args.tls else 'ws'}")
         if report.get("rejected", 0) != 0:
             failures.append(f"the page rejected {report['rejected']} messages")
 
@@ -160,7 +169,7 @@ def main():
                           "sky_rgb": [round(v, 3) for v in sky], "water_rgb": [round(v, 3) for v in water],
                           "vessels": report.get("vessels"), "vessels_in_view": report.get("vessels_in_view"),
                           "page_bytes": page_bytes, "page_files": loaded,
-                          "fleet": args.fleet, "screenshot": args.screenshot}))
+                          "fleet": args.fleet, "screenshot": args.screenshot, "socket": socket_url}))
     except RuntimeError:
         pass  # the failure is in failures already
     except Exception as e:  # WebDriver refused something, the page threw: say what, with the server's log

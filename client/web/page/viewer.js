@@ -35,7 +35,9 @@ if (params.get('ui') === '0')
 async function defaultServer() {
   if (params.get('ws')) return params.get('ws');
   const config = await pageConfig;  // {} when opened from a file or another server: the user types it
-  return config.ws_port ? `ws://${location.hostname}:${config.ws_port}/` : '';
+  if (!config.ws_port) return '';
+  // An https page may open only wss (the server serves both with --tls-cert).
+  return `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.hostname}:${config.ws_port}/`;
 }
 
 // The line over the sea until its first frame: what the page is waiting for.

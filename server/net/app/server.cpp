@@ -67,10 +67,21 @@ ListenAddress udp_address(const ServerConfig& config, std::uint16_t tcp_port) {
   return config.udp_listen ? *config.udp_listen : ListenAddress{config.listen.host, tcp_port};
 }
 
+// --tls-cert and --tls-key, read now: a missing file or a key that is not the certificate's is a
+// bad option (exit 2), found before any listener opens.
+std::optional<TlsCredentials> tls_from(const ServerConfig& config) {
+  if (config.tls_cert.empty()) return std::nullopt;
+  std::string error;
+  auto credentials = TlsCredentials::load(config.tls_cert, config.tls_key, error);
+  if (!credentials) throw std::invalid_argument(error);
+  return credentials;
+}
+
 }  // namespace
 
 Server::Server(ServerConfig config)
     : config_(std::move(config)),
+      tls_(tls_from(config_)),
       signals_(context_, SIGINT, SIGTERM, SIGHUP),
       metrics_(registry_),
       cookie_key_(cookie_key_from(config_)),
@@ -118,6 +129,7 @@ Server::Server(ServerConfig config)
     web_http_ = std::make_unique<HttpServer>(
         http_context_, *config_.web_listen, [this](const HttpRequest& r) { return web_files_->reply(r); },
         WebFiles::kMaxConnections, "web page");
+    if (tls_) web_http_->set_tls([this] { return tls_->current(); });
     web_port_ = web_http_->local_endpoint().port();
     web_http_->set_refused_callback([this](std::string_view reason, const std::string& peer) {
       metrics_.rejects(reason).inc();
@@ -161,7 +173,7 @@ std::optional<std::uint16_t> Server::port_of(std::string_view transport) const {
   return std::nullopt;
 }
 
-// "listening tcp=H:P udp=H:P ws=H:P|off metrics=... web=...": tests and scripts read the ports here.
+// "listening tcp=H:P udp=H:P ws=H:P|off metrics=... web=...[ tls=on]": tests and scripts read the ports here.
 std::string Server::listening_line() const {
   const auto at = [](const ListenAddress* address, std::optional<std::uint16_t> port) {
     return address && port ? address->host + ":" + std::to_string(*port) : std::string("off");
@@ -169,9 +181,15 @@ std::string Server::listening_line() const {
   const std::span<const StreamTransport> transports = stream_transports();
   std::string line = "listening " + std::string(transports.front().name) + "=" + at(&config_.listen, tcp_port());
   line += " udp=" + udp_address(config_, tcp_port()).host + ":" + std::to_string(udp_port_);
-  for (const StreamTransport& t : transports.subspan(1)) line += " " + std::string(t.name) + "=" + at(t.address(config_), port_of(t.name));
+  for (const StreamTransport& t : transports.subspan(1)) {
+    line += ' ';
+    line += t.name;
+    line += '=';
+    line += at(t.address(config_), port_of(t.name));
+  }
   line += " metrics=" + at(config_.metrics_listen ? &*config_.metrics_listen : nullptr, metrics_port_);
   line += " web=" + at(config_.web_listen ? &*config_.web_listen : nullptr, web_http_ ? std::optional(web_port_) : std::nullopt);
+  if (tls_) line += " tls=on";  // the page is https and the WebSocket wss
   return line;
 }
 
@@ -216,10 +234,18 @@ void Server::do_await_stop() {
     if (error) return;  // cancelled by do_stop
     if (signal_number == SIGHUP) {
       // Tools and operators send it expecting a reload, or nothing; it must never stop a server.
-      // Every setting is read at start, so there is nothing to reload: say so, go on serving.
+      // The TLS certificate is read again (a renewal); every other setting is read at start only.
       metrics_.sighups.inc();
-      spdlog::info("signal SIGHUP received: nothing to reload (the configuration is read at start; restart the "
-                   "server to change it); still serving");
+      if (!tls_) {
+        spdlog::info("signal SIGHUP received: nothing to reload (the configuration is read at start; restart the "
+                     "server to change it); still serving");
+      } else if (const std::string error = tls_->reload(); error.empty()) {
+        spdlog::info("signal SIGHUP received: --tls-cert '{}' read again, in force for new connections; the rest "
+                     "of the configuration is read at start only; still serving", tls_->cert_file());
+      } else {
+        metrics_.tls_reload_failures.inc();
+        spdlog::error("signal SIGHUP received: {}; the certificate in force stays; still serving", error);
+      }
       return do_await_stop();
     }
     spdlog::info("signal {} received, shutting down", signal_number == SIGINT ? "SIGINT" : "SIGTERM");

@@ -15,6 +15,7 @@
 #include "server_metrics.hpp"
 #include "stream_transport.hpp"
 #include "tick_loop.hpp"
+#include "tls_credentials.hpp"
 #include "udp_cookie.hpp"
 #include "web_files.hpp"
 
@@ -97,6 +98,8 @@ class Server : public DatagramSocket {
   std::uint16_t udp_port() const { return udp_port_; }
   std::optional<std::uint16_t> metrics_port() const { return metrics_port_; }
   std::optional<std::uint16_t> web_port() const { return web_http_ ? std::optional(web_port_) : std::nullopt; }
+  // The browser listeners' TLS context in force (--tls-cert, reloaded on SIGHUP); null in the clear.
+  std::shared_ptr<asio::ssl::context> tls_context() const { return tls_ ? tls_->current() : nullptr; }
   bool ready() const { return ready_.load(); }  // a first frame reached the network side
 
  private:
@@ -125,6 +128,7 @@ class Server : public DatagramSocket {
   HttpReply handle_http(const HttpRequest& request);
 
   ServerConfig config_;
+  std::optional<TlsCredentials> tls_;  // --tls-cert and --tls-key, read before any listener opens
   asio::io_context context_{1};
   // /metrics, /healthz and /readyz run on their own thread, so a probe is answered however busy
   // the network thread is; /healthz reports that thread stalled from its heartbeat instead.

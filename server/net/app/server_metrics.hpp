@@ -49,7 +49,8 @@ class ServerMetrics {
   Counter& udp_rebinds;             // proven UDP addresses moved to a new port (NAT rebinding)
   Counter& udp_rebinds_refused;     // UdpHellos that would move a live proven address (replays)
   Counter& udp_rebinds_reclaimed;   // moves undone because the old address spoke again
-  Counter& sighups;                 // SIGHUPs received (logged and ignored: nothing is reloadable)
+  Counter& sighups;                 // SIGHUPs received (the TLS certificate is read again; nothing else)
+  Counter& tls_reload_failures;     // SIGHUPs whose certificate could not be read (the old one stays)
   Counter& log_write_failures;      // log lines that could not be written (a reader gone, a full disk)
 
   Counter& frames_computed(std::string_view profile);

@@ -70,6 +70,7 @@ void SessionHub::on_connection(asio::ip::tcp::socket socket, const StreamTranspo
   }
   // A connection refused before its Hello (a failed handshake) never reaches the core: counted here.
   const TransportContext context{server_.config(), core_.options().send_queue_bytes, server_.web_port().value_or(0),
+                                 server_.tls_context(),
                                  [this, name = transport.name](const std::string& reason, const std::string& peer) {
                                    server_.metrics().rejects(reason).inc();
                                    log_reject(name, peer, reason);

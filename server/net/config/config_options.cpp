@@ -181,6 +181,19 @@ const ConfigOption kOptions[] = {
        return std::string();
      },
      [](const ServerConfig& c) { return c.web_root.empty() ? std::string("the build tree's or installed web viewer") : c.web_root; }},
+    {"tls-cert", "FILE", "PEM certificate chain: the page (--web-listen) is then https and the WebSocket wss; read again on SIGHUP",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) {
+       c.tls_cert = std::string(v);
+       return c.tls_cert.empty() ? std::string("must name a file") : std::string();
+     },
+     [](const ServerConfig& c) { return c.tls_cert.empty() ? std::string("off") : c.tls_cert; }},
+    {"tls-key", "FILE", "PEM private key of --tls-cert", ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) {
+       c.tls_key = std::string(v);
+       return c.tls_key.empty() ? std::string("must name a file") : std::string();
+     },
+     [](const ServerConfig& c) { return c.tls_key.empty() ? std::string("off") : c.tls_key; }},
     {"size", "N", "simulation grid N x N samples: a power of two in 16..2048", ValueKind::integer, false,
      [](ServerConfig& c, std::string_view v) {
        int n = 0;

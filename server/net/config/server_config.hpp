@@ -43,6 +43,9 @@ struct ServerConfig {
   // build tree's web/ or the installed share/ocean/web.
   std::optional<ListenAddress> web_listen;
   std::string web_root;
+  // PEM certificate chain and private key: the page (--web-listen) is https and the WebSocket
+  // (--ws-listen) wss. Both or neither; read again on SIGHUP.
+  std::string tls_cert, tls_key;
 
   model::SceneParams scene;                         // the scene at the epoch (tick 0 onward)
   std::vector<ScheduleEntry> schedule;            // later scene changes, by tick

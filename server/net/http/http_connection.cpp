@@ -38,9 +38,9 @@ std::string HttpReply::to_wire(bool include_body) const {
 }
 
 HttpConnection::HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done,
-                               RefusedCallback on_refused)
-    : socket_(std::move(socket)),
-      deadline_(socket_.get_executor()),
+                               RefusedCallback on_refused, const std::shared_ptr<asio::ssl::context>& tls)
+    : stream_(std::move(socket), tls),
+      deadline_(stream_.socket().get_executor()),
       handler_(std::move(handler)),
       on_done_(std::move(on_done)),
       on_refused_(std::move(on_refused)) {}
@@ -48,13 +48,17 @@ HttpConnection::HttpConnection(asio::ip::tcp::socket socket, Handler handler, Do
 void HttpConnection::refused(std::string_view reason) {
   if (!on_refused_) return;
   std::error_code ignored;
-  const auto peer = socket_.remote_endpoint(ignored);
+  const auto peer = stream_.socket().remote_endpoint(ignored);
   on_refused_(reason, peer.address().to_string());
 }
 
 void HttpConnection::start() {
-  arm_deadline(kRequestDeadline);
-  do_read();
+  arm_deadline(kRequestDeadline);  // the TLS handshake's too
+  stream_.handshake([self = shared_from_this()](std::error_code error) {
+    if (!error) return self->do_read();
+    self->refused("tls_handshake_failed");
+    self->finish();
+  });
 }
 
 void HttpConnection::arm_deadline(std::chrono::steady_clock::duration limit) {
@@ -74,11 +78,11 @@ void HttpConnection::evict() {
 void HttpConnection::stop() {
   std::error_code ignored;
   deadline_.cancel();
-  socket_.close(ignored);
+  stream_.socket().close(ignored);
 }
 
 void HttpConnection::do_read() {
-  socket_.async_read_some(asio::buffer(read_buffer_), [self = shared_from_this()](std::error_code error, std::size_t n) {
+  stream_.read_some(asio::buffer(read_buffer_), [self = shared_from_this()](std::error_code error, std::size_t n) {
     if (error) return self->finish();
     switch (self->parser_.consume(std::string_view(self->read_buffer_.data(), n))) {
       case HttpRequestParser::Result::need_more: return self->do_read();
@@ -106,10 +110,10 @@ void HttpConnection::do_write(const HttpReply& reply, bool include_body) {
                                       std::chrono::duration<double>(static_cast<double>(size) / kSlowestReplyBytesPerS)));
   const std::array<asio::const_buffer, 2> buffers{asio::buffer(reply_bytes_),
                                                   reply_body_ ? asio::buffer(*reply_body_) : asio::const_buffer()};
-  asio::async_write(socket_, buffers, [self = shared_from_this()](std::error_code error, std::size_t) {
+  stream_.write(buffers, [self = shared_from_this()](std::error_code error, std::size_t) {
     if (!error) {
       std::error_code ignored;
-      self->socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+      self->stream_.socket().shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
     }
     self->finish();
   });

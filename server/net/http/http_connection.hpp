@@ -2,6 +2,7 @@
 // Enough for Prometheus scrapes and Kubernetes probes; a silent client is cut off after a deadline.
 #pragma once
 
+#include "byte_stream.hpp"
 #include "http_request_parser.hpp"
 
 #include <asio/ip/tcp.hpp>
@@ -48,7 +49,9 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   // "http_evicted" (HttpServer made room for a newcomer).
   using RefusedCallback = std::function<void(std::string_view reason, const std::string& peer)>;
 
-  HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done, RefusedCallback on_refused = {});
+  // tls: the page's context (--tls-cert: https), null in the clear.
+  HttpConnection(asio::ip::tcp::socket socket, Handler handler, DoneCallback on_done, RefusedCallback on_refused = {},
+                 const std::shared_ptr<asio::ssl::context>& tls = nullptr);
 
   void start();
   void stop();  // closes the socket; pending operations complete with an error
@@ -64,7 +67,7 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   void finish();
   void refused(std::string_view reason);
 
-  asio::ip::tcp::socket socket_;
+  ByteStream stream_;
   asio::steady_timer deadline_;
   Handler handler_;
   DoneCallback on_done_;

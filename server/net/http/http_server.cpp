@@ -84,7 +84,7 @@ void HttpServer::admit(asio::ip::tcp::socket socket) {
         connections_.erase(done);
         if (limited && --per_host_[peer] == 0) per_host_.erase(peer);
       },
-      on_refused_);
+      on_refused_, tls_ ? tls_() : nullptr);
   connections_.insert(connection);
   connection->start();
 }

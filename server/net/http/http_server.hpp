@@ -10,6 +10,7 @@
 #include <asio/ip/tcp.hpp>
 #include <asio/steady_timer.hpp>
 
+#include <functional>
 #include <memory>
 #include <map>
 #include <set>
@@ -27,6 +28,8 @@ class HttpServer {
                     std::size_t max_connections = 0, std::string_view purpose = "metrics");
 
   void set_refused_callback(HttpConnection::RefusedCallback callback) { on_refused_ = std::move(callback); }
+  // Serves https: each accepted connection takes the context this gives then (TlsCredentials).
+  void set_tls(std::function<std::shared_ptr<asio::ssl::context>()> tls) { tls_ = std::move(tls); }
   void start();
   void stop();  // closes the acceptor and every open connection
   asio::ip::tcp::endpoint local_endpoint() const { return acceptor_.local_endpoint(); }
@@ -40,6 +43,7 @@ class HttpServer {
   asio::steady_timer backoff_;  // after EMFILE
   HttpConnection::Handler handler_;
   HttpConnection::RefusedCallback on_refused_;
+  std::function<std::shared_ptr<asio::ssl::context>()> tls_;
   std::set<std::shared_ptr<HttpConnection>> connections_;
   std::size_t max_connections_ = 0;
   std::map<asio::ip::address, std::size_t> per_host_;  // open connections by peer address, when limited

@@ -9,21 +9,33 @@ namespace ocean::server {
 
 double monotonic_s() { return now_instant().monotonic_s; }
 
-SocketStreamLink::SocketStreamLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes)
-    : socket_(std::move(socket)),
-      pace_timer_(socket_.get_executor()),
-      close_timer_(socket_.get_executor()),
+SocketStreamLink::SocketStreamLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes,
+                                   const std::shared_ptr<asio::ssl::context>& tls)
+    : stream_(std::move(socket), tls),
+      pace_timer_(stream_.socket().get_executor()),
+      close_timer_(stream_.socket().get_executor()),
       max_queue_bytes_(max_queue_bytes) {
   std::error_code ignored;
-  peer_ = socket_.remote_endpoint(ignored);
+  peer_ = stream_.socket().remote_endpoint(ignored);
   peer_text_ = endpoint_text(peer_.address(), peer_.port());
-  socket_.set_option(asio::ip::tcp::no_delay(true), ignored);
+  stream_.socket().set_option(asio::ip::tcp::no_delay(true), ignored);
 }
 
 void SocketStreamLink::start(MessageHandler on_message, CloseHandler on_close) {
   on_message_ = std::move(on_message);
   on_close_ = std::move(on_close);
-  do_read();
+  if (!stream_.is_tls()) return do_read();
+  // Writes wait for the handshake too: do_write() sees writing_ until it is done.
+  writing_ = true;
+  close_within(kTlsHandshakeS, "tls_handshake_timeout");
+  stream_.handshake([self = shared_from_this()](std::error_code error) {
+    if (self->closed_) return;
+    if (error) return self->close("tls_handshake_failed");
+    self->close_timer_.cancel();
+    self->writing_ = false;
+    self->do_read();
+    self->do_write();
+  });
 }
 
 void SocketStreamLink::send(SharedBytes message) {
@@ -75,11 +87,11 @@ void SocketStreamLink::close_after_flush(double grace_s) {
   do_write();
 }
 
-void SocketStreamLink::close_within(double grace_s) {
+void SocketStreamLink::close_within(double grace_s, const char* reason) {
   close_timer_.expires_after(std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(grace_s)));
-  close_timer_.async_wait([self = shared_from_this()](std::error_code error) {
-    if (!error) self->close("flush_timeout");
+  close_timer_.async_wait([self = shared_from_this(), reason](std::error_code error) {
+    if (!error) self->close(reason);
   });
 }
 
@@ -89,8 +101,8 @@ void SocketStreamLink::close(const std::string& reason) {
   std::error_code ignored;
   pace_timer_.cancel();
   close_timer_.cancel();
-  socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
-  socket_.close(ignored);
+  stream_.socket().shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+  stream_.socket().close(ignored);
   drop_queue();
   if (on_close_) {
     CloseHandler handler = std::move(on_close_);

@@ -3,9 +3,11 @@
 // bytes (frames up to the bound, control messages into the headroom above it), its accounting
 // (written_through), the pacing bucket, and closing (now, or once the queue is written, within a
 // grace time). A subclass reads and writes: do_read() once started, do_write() whenever there may
-// be something to write.
+// be something to write. Over TLS (a wss listener with --tls-cert) the handshake comes first,
+// within kTlsHandshakeS.
 #pragma once
 
+#include "byte_stream.hpp"
 #include "link.hpp"
 #include "token_bucket.hpp"
 
@@ -42,11 +44,13 @@ class SocketStreamLink : public StreamLink, public std::enable_shared_from_this<
   protocol::Reason framing_failure() const override { return framing_failure_; }
 
   std::size_t max_queue_bytes() const { return max_queue_bytes_; }
+  static constexpr double kTlsHandshakeS = 10.0;  // a client that opens and says nothing is closed
 
  protected:
   // max_queue_bytes bounds the frames waiting to be written; control messages may use
-  // kControlHeadroomBytes more, and nothing ever goes beyond that.
-  SocketStreamLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes);
+  // kControlHeadroomBytes more, and nothing ever goes beyond that. tls: null in the clear.
+  SocketStreamLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes,
+                   const std::shared_ptr<asio::ssl::context>& tls = nullptr);
 
   virtual void do_read() = 0;
   virtual void do_write() = 0;
@@ -56,8 +60,8 @@ class SocketStreamLink : public StreamLink, public std::enable_shared_from_this<
   void pop_written();
   // Nothing queued can be written any more (the connection is ending).
   void drop_queue();
-  // Closes as flush_timeout after grace_s unless closed before (a reader that stopped).
-  void close_within(double grace_s);
+  // Closes with `reason` after grace_s unless closed before (a reader that stopped).
+  void close_within(double grace_s, const char* reason = "flush_timeout");
   // do_write() again after `wait_s` (pacing).
   void write_after(double wait_s);
   template <class Self>
@@ -65,7 +69,7 @@ class SocketStreamLink : public StreamLink, public std::enable_shared_from_this<
     return std::static_pointer_cast<Self>(shared_from_this());
   }
 
-  asio::ip::tcp::socket socket_;
+  ByteStream stream_;
   asio::ip::tcp::endpoint peer_;
   std::string peer_text_;
   std::deque<SharedBytes> queue_;

@@ -10,6 +10,7 @@
 #include "server_config.hpp"
 
 #include <asio/ip/tcp.hpp>
+#include <asio/ssl/context.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -25,6 +26,7 @@ struct TransportContext {
   const ServerConfig& config;
   std::size_t queue_bytes;     // the link's send queue bound
   std::uint16_t web_port = 0;  // the browser viewer's page, 0 when none is served
+  std::shared_ptr<asio::ssl::context> tls;  // the browser listeners' TLS (--tls-cert), null in the clear
   // A connection refused before it became a session (a failed handshake): reason, peer.
   std::function<void(const std::string& reason, const std::string& peer)> refused;
 };

@@ -1,5 +1,5 @@
 // The stream transports, one row each: size-prefixed messages on TCP (--listen), and WebSocket
-// binary messages for browsers (--ws-listen).
+// binary messages for browsers (--ws-listen; wss with --tls-cert).
 #include "stream_transport.hpp"
 
 #include "tcp_link.hpp"
@@ -17,7 +17,8 @@ const StreamTransport kStreamTransports[] = {
      [](const ServerConfig& c) -> const ListenAddress* { return c.ws_listen ? &*c.ws_listen : nullptr; },
      [](asio::ip::tcp::socket socket, const TransportContext& context) -> std::shared_ptr<StreamLink> {
        return std::make_shared<WebSocketLink>(std::move(socket), context.queue_bytes,
-                                              OriginPolicy{context.config.ws_origins, context.web_port}, context.refused);
+                                              OriginPolicy{context.config.ws_origins, context.web_port}, context.refused,
+                                              context.tls);
      }},
 };
 

@@ -5,7 +5,7 @@
 namespace ocean::server {
 
 void TcpLink::do_read() {
-  socket_.async_read_some(asio::buffer(read_buffer_), [self = self<TcpLink>()](std::error_code error, std::size_t n) {
+  stream_.read_some(asio::buffer(read_buffer_), [self = self<TcpLink>()](std::error_code error, std::size_t n) {
     if (self->closed_) return;
     if (error) return self->close(error == asio::error::eof ? "peer_closed" : "read_error");
     std::span<const std::uint8_t> bytes(self->read_buffer_.data(), n);
@@ -33,7 +33,7 @@ void TcpLink::do_write() {
   const SharedBytes& front = queue_.front();
   if (const double wait = pace_wait_s(front->size()); wait > 0.0) return write_after(wait);
   writing_ = true;
-  asio::async_write(socket_, asio::buffer(*front), [self = self<TcpLink>()](std::error_code error, std::size_t) {
+  stream_.write(asio::buffer(*front), [self = self<TcpLink>()](std::error_code error, std::size_t) {
     self->writing_ = false;
     if (self->closed_) return;
     if (error) return self->close("write_error");

@@ -30,8 +30,9 @@ bool OriginPolicy::accepts(const std::optional<std::string>& header, const std::
 }
 
 WebSocketLink::WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes, OriginPolicy origins,
-                             std::function<void(const std::string&, const std::string&)> on_refused)
-    : SocketStreamLink(std::move(socket), max_queue_bytes),
+                             std::function<void(const std::string&, const std::string&)> on_refused,
+                             const std::shared_ptr<asio::ssl::context>& tls)
+    : SocketStreamLink(std::move(socket), max_queue_bytes, tls),
       origins_(std::move(origins)),
       on_refused_(std::move(on_refused)),
       protocol_(protocol_handlers(), protocol::kDefaultMaxMessageBytes) {}
@@ -65,7 +66,7 @@ void WebSocketLink::on_ended(const std::string& reason) {
 }
 
 void WebSocketLink::do_read() {
-  socket_.async_read_some(asio::buffer(read_buffer_), [self = self<WebSocketLink>()](std::error_code error, std::size_t n) {
+  stream_.read_some(asio::buffer(read_buffer_), [self = self<WebSocketLink>()](std::error_code error, std::size_t n) {
     if (self->closed_) return;
     if (error) return self->close(error == asio::error::eof ? "peer_closed" : "read_error");
     self->protocol_.feed(self->read_buffer_.data(), n);
@@ -101,15 +102,14 @@ void WebSocketLink::do_write() {
   writing_ = true;
   writing_bytes_.swap(output_);
   output_.clear();
-  asio::async_write(socket_, asio::buffer(writing_bytes_),
-                    [self = self<WebSocketLink>()](std::error_code error, std::size_t) {
-                      self->writing_ = false;
-                      if (self->closed_) return;
-                      if (error) return self->close("write_error");
-                      if (std::exchange(self->message_in_flight_, false)) self->pop_written();
-                      if (!self->ended_reason_.empty()) self->drop_queue();
-                      self->do_write();
-                    });
+  stream_.write(asio::buffer(writing_bytes_), [self = self<WebSocketLink>()](std::error_code error, std::size_t) {
+    self->writing_ = false;
+    if (self->closed_) return;
+    if (error) return self->close("write_error");
+    if (std::exchange(self->message_in_flight_, false)) self->pop_written();
+    if (!self->ended_reason_.empty()) self->drop_queue();
+    self->do_write();
+  });
 }
 
 }  // namespace ocean::server

@@ -38,8 +38,10 @@ class WebSocketLink final : public SocketStreamLink {
 
   // on_refused: called once if the handshake is refused or fails ("origin_refused",
   // "handshake_failed"): the connection never became a WebSocket, and no session saw it.
+  // tls: the wss listener's context (--tls-cert), null in the clear.
   WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes, OriginPolicy origins,
-                std::function<void(const std::string& reason, const std::string& peer)> on_refused = {});
+                std::function<void(const std::string& reason, const std::string& peer)> on_refused = {},
+                const std::shared_ptr<asio::ssl::context>& tls = nullptr);
 
   std::string_view transport() const override { return "ws"; }
   void set_max_message_bytes(std::size_t bytes) override { protocol_.set_max_message_bytes(bytes); }
