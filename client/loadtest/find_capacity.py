@@ -84,16 +84,17 @@ def server_view(metrics, log, elapsed_s):
 
 
 def stream_args(args, ramp, workdir):
-    """(server flags, load-test flags) for the stream under test."""
+    """(server flags, load-test flags, transport) for the stream under test."""
     if not args.scenario:
         return (["--profiles", args.profile],
-                ["--profile", args.profile, "--transport", args.transport] + (["--link", args.link] if args.link else []))
+                ["--profile", args.profile, "--transport", args.transport] + (["--link", args.link] if args.link else []),
+                args.transport)
     entry = local_server.scenario(os.path.join(args.build, "client/loadtest/ocean-loadtest"), args.scenario)
     server_args = local_server.scenario_server_args(entry, workdir, first_change_s=ramp + 2.0,
                                                     horizon_s=ramp + args.duration + 60)
     if "--profiles" not in server_args:
         server_args += ["--profiles", entry["profile"]]
-    return server_args, ["--scenario", args.scenario]
+    return server_args, ["--scenario", args.scenario], entry["transport"]
 
 
 def run_in(args, clients, workdir):
@@ -101,7 +102,12 @@ def run_in(args, clients, workdir):
     ramp = max(0.5, clients / args.join_rate)
     port = local_server.free_port()
     metrics_port = local_server.free_port()
-    server_args, loadtest_args = stream_args(args, ramp, workdir)
+    server_args, loadtest_args, transport = stream_args(args, ramp, workdir)
+    # WebSocket clients (a browser's path) reach the server's --ws-listen port instead.
+    client_port = port
+    if transport == "ws":
+        client_port = local_server.free_port()
+        server_args = server_args + ["--ws-listen", f"127.0.0.1:{client_port}"]
     # --max-clients above N: the limit under test is what the server can serve, not a setting
     # (admission control, where the server has it, decides by itself). Every client comes from
     # this host's one address: no per-address limits.
@@ -113,7 +119,7 @@ def run_in(args, clients, workdir):
     started = time.monotonic()
     metrics = ""
     try:
-        cmd = pinned(args.loadtest_cpus, [loadtest, "--server", f"127.0.0.1:{port}", "--clients", str(clients),
+        cmd = pinned(args.loadtest_cpus, [loadtest, "--server", f"127.0.0.1:{client_port}", "--clients", str(clients),
                                           "--ramp", f"{ramp:g}", "--duration", str(args.duration), "--threads",
                                           str(args.threads), "--json", "--quiet", "--server-pid", str(server.pid)]
                      + loadtest_args)
@@ -196,7 +202,7 @@ def parse_args():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default="build", help="build tree holding server/ and client/loadtest/")
     ap.add_argument("--profile", default="mobile")
-    ap.add_argument("--transport", default="udp")
+    ap.add_argument("--transport", default="udp", help="udp, tcp, or ws (WebSocket clients, on the server's --ws-listen)")
     ap.add_argument("--link", default="", help="ocean-loadtest --link, e.g. rate=256kbit,delay=80ms,loss=5%%")
     ap.add_argument("--scenario", default="", help="an ocean-loadtest scenario (replaces --profile/--transport/--link)")
     ap.add_argument("--start", type=int, default=250)

@@ -42,6 +42,19 @@ void LinkModel::send(std::vector<std::uint8_t> bytes, double now) {
   const double base = spec_.delay_ms * 1e-3;
   const double jitter = spec_.jitter_ms * 1e-3 * (2.0 * uniform() - 1.0);
   double due = left_link + base + jitter;
+  if (spec_.retransmit_loss > 0) {
+    // Each 1460-byte segment may be lost. Linux finds the loss once a later segment is acked and a
+    // quarter round trip more has passed (RACK, RFC 8985; a 30 Hz stream sends the next within
+    // 33 ms) and sends it again: it arrives 1.25 round trips and that gap late, and the FIFO below
+    // holds everything sent after it.
+    const std::size_t segments = std::max<std::size_t>(1, (bytes.size() + 1459) / 1460);
+    for (std::size_t i = 0; i < segments; ++i)
+      if (uniform() < spec_.retransmit_loss) {
+        due += 1.25 * (2.0 * base) + 0.033;
+        ++stats_.retransmitted;
+        break;
+      }
+  }
   if (spec_.reorder > 0 && uniform() < spec_.reorder) {
     // Skips the queue of in-flight packets: it may arrive before ones sent earlier.
     due = left_link + base - spec_.jitter_ms * 1e-3;

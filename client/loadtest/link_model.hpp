@@ -20,6 +20,7 @@ struct LinkStats {
   std::uint64_t queue_drops = 0;   // rate limiter's queue was full (shared backlog included)
   std::uint64_t duplicated = 0;
   std::uint64_t reordered = 0;
+  std::uint64_t retransmitted = 0;  // messages a lost segment held back (retransmit_loss)
   std::uint64_t bytes_delivered = 0;
 };
 

@@ -17,6 +17,9 @@ struct LinkSpec {
   double reorder = 0.0;         // probability a packet skips the FIFO order (sent with base delay only)
   double duplicate = 0.0;       // probability a packet is delivered twice
   std::uint32_t queue_bytes = 64 * 1024;  // token-bucket queue; packets beyond it are dropped (tail drop)
+  // TCP's view of loss below it (tcp_view): no message is lost, but one with a lost segment
+  // arrives a retransmission late (link_model.cpp), and nothing sent after it overtakes it.
+  double retransmit_loss = 0.0;
 
   bool impaired() const {
     return rate_bps > 0 || delay_ms > 0 || jitter_ms > 0 || loss > 0 || reorder > 0 || duplicate > 0;

@@ -65,14 +65,16 @@ void LoadShard::start_client(std::size_t k) {
   client::ClientConnectionConfig config;
   config.servers = o_.servers;
   config.session.profile_id = find_profile(o_.profile)->id;
-  config.session.transport = o_.transport == "tcp" ? wire::Transport::tcp : wire::Transport::udp;
+  config.session.transport = o_.transport == "udp" ? wire::Transport::udp : wire::Transport::tcp;
+  config.websocket = o_.transport == "ws";  // --server names the --ws-listen port then
+  config.websocket_seed = o_.seed + i;
   config.session.client_name = "ocean-loadtest-" + std::to_string(i);
   config.session.bandwidth_bps = o_.bandwidth_bps;
   if (o_.shared_decode) config.session.decode_memo = [this](const codec::StreamConfig& c) { return memo_for(c); };
   auto connection = client::ClientConnection::create(
       io_, config,
       [this, k](const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) { on_frame(k, frame, tick, arrival_s); },
-      make_client_links(o_.link, o_.seed + i));
+      make_client_links(o_.link, o_.seed + i, o_.transport != "udp"));
   connection->set_on_welcome([this, k](const protocol::Welcome& w) { on_welcome(k, w); });
   // Scenes arrive ahead of their tick; the truth switches at the same tick as the codec.
   connection->set_on_scene_update([this](const protocol::SceneUpdate& u) { on_scene_update(u); });

@@ -38,7 +38,8 @@ void add_flags(CLI::App& app, LoadtestOptions& o, Flags& f) {
   app.add_option("--duration", o.duration_s, "seconds measured after the ramp, > 0");
   app.add_option("--scenario", o.scenario, "a named set of --profile/--transport/--link/--bandwidth (see --list-scenarios; some need a server started for them)");
   app.add_option("--profile", o.profile, "stream profile to ask for: " + profile_names());
-  app.add_option("--transport", o.transport, "udp or tcp");
+  app.add_option("--transport", o.transport,
+                 "udp, tcp, or ws (a browser's WebSocket: --server names the server's --ws-listen port; no UDP)");
   app.add_option("--link", o.link_text, "link impairment, e.g. rate=256kbit,delay=80ms,jitter=20ms,loss=5%,reorder=1%,dup=0.5% (\"\" or none = none)");
   app.add_option("--bandwidth", f.bandwidth,
                  "bandwidth each client announces in its Hello: bits/s or a rate such as 32kbit (0 = unstated; "
@@ -91,8 +92,8 @@ std::string check_run(const CLI::App& app, LoadtestOptions& o, Flags& f) {
   }
   if (!find_profile(o.profile))
     return "--profile: unknown profile '" + o.profile + "'; known: " + profile_names();
-  if (o.transport != "udp" && o.transport != "tcp")
-    return "--transport: '" + o.transport + "' is not udp or tcp";
+  if (o.transport != "udp" && o.transport != "tcp" && o.transport != "ws")
+    return "--transport: '" + o.transport + "' is not udp, tcp or ws";
   if (o.link_text == "none") o.link_text.clear();
   if (!o.link_text.empty()) {
     LinkSpecResult link = parse_link_spec(o.link_text);

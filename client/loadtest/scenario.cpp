@@ -16,6 +16,8 @@ constexpr Scenario kScenarios[] = {
      "a desktop on a wired LAN: the full 256x256 stream with no impairment"},
     {"tcp-fallback", "mobile", "tcp", "rate=1mbit,delay=40ms",
      "a network that blocks UDP: frames over TCP, whose losses show up as delay"},
+    {"browser-3g", "mobile", "ws", "rate=1mbit,delay=75ms,loss=1%",
+     "a phone's browser on 3G: WebSocket (give --server the --ws-listen port), 150 ms round trip, 1 % loss below TCP"},
     {"flaky-edge", "mobile", "udp", "rate=128kbit,delay=150ms,jitter=60ms,loss=15%,reorder=5%,dup=2%",
      "the worst link we promise to survive: EDGE-class rate, heavy jitter and loss"},
     {"edge-2g", "mobile", "udp", "rate=32kbit,delay=300ms,jitter=50ms,loss=3%",

@@ -29,7 +29,7 @@ struct ServerNeeds {
 struct Scenario {
   std::string_view name;
   std::string_view profile;    // protocol/profile.hpp name
-  std::string_view transport;  // "udp" or "tcp"
+  std::string_view transport;  // "udp", "tcp" or "ws"
   std::string_view link;       // LinkSpec text; "" = no impairment
   std::string_view why;        // the network it stands for
   std::string_view bandwidth = {};  // announced in the Hello (parse_rate_bps); "" = the link's rate

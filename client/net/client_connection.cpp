@@ -48,7 +48,12 @@ ClientConnection::ClientConnection(asio::io_context& io, ClientConnectionConfig 
       timer_(io),
       read_buffer_(std::max<std::size_t>(config_.read_buffer_bytes, 1024)),
       udp_buffer_(2048),  // above kMaxDatagram, so an oversized datagram is seen whole and refused
-      backoff_s_(config_.reconnect_min_s) {}
+      backoff_s_(config_.reconnect_min_s) {
+  if (config_.websocket) {
+    config_.session.transport = wire::Transport::tcp;  // a browser's path: no UDP beside it
+    websocket_ = std::make_unique<WebSocketClient>(config_.websocket_seed, protocol::kDefaultMaxMessageBytes);
+  }
+}
 
 void ClientConnection::start() {
   stopped_ = false;
@@ -90,6 +95,7 @@ ClientSessionEvents ClientConnection::session_events() {
   events.send_udp = [this](std::span<const std::uint8_t> bytes) { send_udp(bytes); };
   events.on_welcome = [this](const protocol::Welcome& welcome) {
     framer_.set_max_message_bytes(welcome.max_message_bytes);
+    if (websocket_) websocket_->set_max_message_bytes(welcome.max_message_bytes);
     if (welcome.udp_port != 0 && config_.session.transport == wire::Transport::udp) open_udp(welcome);
     if (on_welcome_) on_welcome_(welcome);
   };
@@ -119,7 +125,13 @@ void ClientConnection::on_connected() {
   framer_.reset();
   framer_.set_max_message_bytes(protocol::kDefaultMaxMessageBytes);
   session_ = std::make_unique<ClientSession>(config_.session, session_events());
-  session_->start(now_s());
+  if (websocket_) {  // the session starts once the server has taken the upgrade
+    const std::string request = websocket_->upgrade_request(server().host, server().port);
+    write_queue_.emplace_back(request.begin(), request.end());
+    if (!writing_) do_write();
+  } else {
+    session_->start(now_s());
+  }
   do_read();
   arm_timer();
 }
@@ -137,6 +149,7 @@ void ClientConnection::do_read() {
 }
 
 void ClientConnection::on_tcp_bytes(std::size_t n, double now) {
+  if (websocket_) return on_websocket_bytes(n, now);
   std::span<const std::uint8_t> rest(read_buffer_.data(), n);
   const std::uint64_t generation = generation_;
   while (!rest.empty()) {
@@ -145,13 +158,37 @@ void ClientConnection::on_tcp_bytes(std::size_t n, double now) {
     if (result.status == protocol::TcpFramer::Status::bad)
       return teardown(std::string("TCP framing: ") + std::string(protocol::to_string(result.reason)));
     if (result.status == protocol::TcpFramer::Status::need_more) break;
-    const std::span<const std::uint8_t> message = framer_.message();
-    if (links_.tcp_down)
-      links_.tcp_down->send(std::vector<std::uint8_t>(message.begin(), message.end()), now);
-    else
-      session_->on_tcp_message(message, now);
+    on_message(framer_.message(), now);
     if (generation != generation_) return;
   }
+}
+
+void ClientConnection::on_websocket_bytes(std::size_t n, double now) {
+  const std::uint64_t generation = generation_;
+  const bool was_open = websocket_->open();
+  const std::string error = websocket_->feed(
+      std::span<const std::uint8_t>(read_buffer_.data(), n),
+      [&](std::span<const std::uint8_t> message) {
+        if (generation != generation_) return;
+        aligned_.assign((message.size() + 7) / 8, 0);
+        std::copy(message.begin(), message.end(), reinterpret_cast<std::uint8_t*>(aligned_.data()));
+        on_message({reinterpret_cast<const std::uint8_t*>(aligned_.data()), message.size()}, now);
+      },
+      [&](std::vector<std::uint8_t> reply) {  // a Pong, framed already
+        if (generation != generation_) return;
+        write_queue_.push_back(std::move(reply));
+        if (!writing_) do_write();
+      });
+  if (generation != generation_) return;
+  if (!error.empty()) return teardown(error);
+  if (!was_open && websocket_->open()) session_->start(now);
+}
+
+void ClientConnection::on_message(std::span<const std::uint8_t> message, double now) {
+  if (links_.tcp_down)
+    links_.tcp_down->send(std::vector<std::uint8_t>(message.begin(), message.end()), now);
+  else
+    session_->on_tcp_message(message, now);
 }
 
 void ClientConnection::send_tcp(std::span<const std::uint8_t> bytes) {
@@ -171,7 +208,7 @@ void ClientConnection::send_udp(std::span<const std::uint8_t> bytes) {
 
 void ClientConnection::write_tcp(std::vector<std::uint8_t> bytes) {
   if (!connected_) return;
-  write_queue_.push_back(std::move(bytes));
+  write_queue_.push_back(websocket_ ? websocket_->frame(bytes) : std::move(bytes));
   if (!writing_) do_write();
 }
 

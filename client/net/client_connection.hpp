@@ -22,6 +22,7 @@
 #include "packet_link.hpp"
 #include "server_list.hpp"
 #include "tcp_framer.hpp"
+#include "websocket_client.hpp"
 
 namespace ocean::client {
 
@@ -43,6 +44,10 @@ struct ClientConnectionConfig {
   // step), as the refusal's text asks, instead of adding to the load with quick retries.
   double server_full_retry_s = 10.0;
   std::size_t read_buffer_bytes = 16 * 1024;
+  // Reach the server's --ws-listen port as a browser does: the WebSocket upgrade, then every
+  // message one binary frame (WebSocketClient); no UDP (the session's transport is TCP).
+  bool websocket = false;
+  std::uint64_t websocket_seed = 1;  // the upgrade keys' and frame masks' randomness
 };
 
 struct ConnectionCounters {
@@ -95,6 +100,8 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
   void on_connected();
   void do_read();
   void on_tcp_bytes(std::size_t n, double now);
+  void on_websocket_bytes(std::size_t n, double now);
+  void on_message(std::span<const std::uint8_t> message, double now);  // a whole message off the stream
   void do_write();
   void open_udp(const protocol::Welcome& welcome);
   void do_udp_read();
@@ -124,6 +131,8 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
   asio::ip::udp::socket udp_;
   asio::steady_timer timer_;
   protocol::TcpFramer framer_;
+  std::unique_ptr<WebSocketClient> websocket_;  // config_.websocket: the stream's framing instead of framer_
+  std::vector<std::uint64_t> aligned_;          // a WebSocket message, 8-byte aligned for verify_message
   std::vector<std::uint8_t> read_buffer_;
   std::vector<std::uint8_t> udp_buffer_;
   std::deque<std::vector<std::uint8_t>> write_queue_;
