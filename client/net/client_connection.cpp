@@ -7,6 +7,7 @@
 #include <asio/write.hpp>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace ocean::client {
@@ -126,6 +127,8 @@ void ClientConnection::on_connected() {
   framer_.set_max_message_bytes(protocol::kDefaultMaxMessageBytes);
   session_ = std::make_unique<ClientSession>(config_.session, session_events());
   if (websocket_) {  // the session starts once the server has taken the upgrade
+    websocket_->set_max_message_bytes(protocol::kDefaultMaxMessageBytes);  // until this session's Welcome
+    upgrade_due_ = now_s() + config_.websocket_upgrade_timeout_s;
     const std::string request = websocket_->upgrade_request(server().host, server().port);
     write_queue_.emplace_back(request.begin(), request.end());
     if (!writing_) do_write();
@@ -166,8 +169,24 @@ void ClientConnection::on_tcp_bytes(std::size_t n, double now) {
 void ClientConnection::on_websocket_bytes(std::size_t n, double now) {
   const std::uint64_t generation = generation_;
   const bool was_open = websocket_->open();
-  const std::string error = websocket_->feed(
-      std::span<const std::uint8_t>(read_buffer_.data(), n),
+  std::string error = feed_websocket({read_buffer_.data(), n}, now);
+  if (generation != generation_) return;
+  if (error.empty() && !was_open && websocket_->open()) {
+    session_->start(now);  // the upgrade is taken: Hello, then what came behind the answer
+    error = feed_websocket({}, now);
+    if (generation != generation_) return;
+  }
+  if (error.empty()) return;
+  // A server that ends a session says why first (a Bye, an Error) and closes its socket after:
+  // read together, the session's reason is the one to keep.
+  const bool said = session_ && session_->state() == ClientSession::State::closed;
+  teardown(said ? session_->close_reason() : error);
+}
+
+std::string ClientConnection::feed_websocket(std::span<const std::uint8_t> bytes, double now) {
+  const std::uint64_t generation = generation_;
+  return websocket_->feed(
+      bytes,
       [&](std::span<const std::uint8_t> message) {
         if (generation != generation_) return;
         aligned_.assign((message.size() + 7) / 8, 0);
@@ -179,9 +198,6 @@ void ClientConnection::on_websocket_bytes(std::size_t n, double now) {
         write_queue_.push_back(std::move(reply));
         if (!writing_) do_write();
       });
-  if (generation != generation_) return;
-  if (!error.empty()) return teardown(error);
-  if (!was_open && websocket_->open()) session_->start(now);
 }
 
 void ClientConnection::on_message(std::span<const std::uint8_t> message, double now) {
@@ -298,6 +314,7 @@ void ClientConnection::arm_timer() {
   double due = kInfinity;
   if (waiting_reconnect_) due = reconnect_at_;
   if (connected_ && session_) due = std::min(due, session_->next_due());
+  if (connected_ && websocket_ && !websocket_->open()) due = std::min(due, upgrade_due_);
   for (const PacketLink* link : {links_.tcp_up.get(), links_.tcp_down.get(), links_.udp_up.get(), links_.udp_down.get()})
     if (link && link->next_due() >= 0.0) due = std::min(due, link->next_due());
   if (!std::isfinite(due)) return;
@@ -316,6 +333,12 @@ void ClientConnection::on_timer() {
   if (stopped_) return;
   const double now = now_s();
   pump_links(now);
+  if (connected_ && websocket_ && !websocket_->open() && now >= upgrade_due_) {
+    char why[64];
+    std::snprintf(why, sizeof why, "WebSocket upgrade: no answer within %g s", config_.websocket_upgrade_timeout_s);
+    teardown(why);
+    return arm_timer();
+  }
   if (connected_ && session_) session_->update(now);
   // Reconnect only once the old connection's packets have drained from the links.
   if (waiting_reconnect_ && now >= reconnect_at_ && links_idle()) {

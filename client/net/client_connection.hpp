@@ -48,6 +48,8 @@ struct ClientConnectionConfig {
   // message one binary frame (WebSocketClient); no UDP (the session's transport is TCP).
   bool websocket = false;
   std::uint64_t websocket_seed = 1;  // the upgrade keys' and frame masks' randomness
+  // A server (or a proxy before it) that takes the connection but never answers the upgrade.
+  double websocket_upgrade_timeout_s = 10.0;
 };
 
 struct ConnectionCounters {
@@ -101,6 +103,7 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
   void do_read();
   void on_tcp_bytes(std::size_t n, double now);
   void on_websocket_bytes(std::size_t n, double now);
+  std::string feed_websocket(std::span<const std::uint8_t> bytes, double now);  // why it ends, or empty
   void on_message(std::span<const std::uint8_t> message, double now);  // a whole message off the stream
   void do_write();
   void open_udp(const protocol::Welcome& welcome);
@@ -133,6 +136,7 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
   protocol::TcpFramer framer_;
   std::unique_ptr<WebSocketClient> websocket_;  // config_.websocket: the stream's framing instead of framer_
   std::vector<std::uint64_t> aligned_;          // a WebSocket message, 8-byte aligned for verify_message
+  double upgrade_due_ = 0.0;                    // the upgrade's answer is owed by then
   std::vector<std::uint8_t> read_buffer_;
   std::vector<std::uint8_t> udp_buffer_;
   std::deque<std::vector<std::uint8_t>> write_queue_;

@@ -67,9 +67,8 @@ std::string WebSocketClient::feed(std::span<const std::uint8_t> bytes,
                                   const std::function<void(std::span<const std::uint8_t>)>& on_message,
                                   const std::function<void(std::vector<std::uint8_t>)>& on_reply) {
   buffer_.insert(buffer_.end(), bytes.begin(), bytes.end());
-  if (!open_) {
-    if (std::string error = read_answer(); !error.empty() || !open_) return error;
-  }
+  // The answer alone: frames behind it wait for the next call, after the caller has seen open().
+  if (!open_) return read_answer();
   return read_frames(on_message, on_reply);
 }
 

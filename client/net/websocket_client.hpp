@@ -26,9 +26,11 @@ class WebSocketClient {
   bool open() const { return open_; }
   void set_max_message_bytes(std::size_t bytes) { max_message_bytes_ = bytes; }
 
-  // What the server sent, in order: first its answer to the upgrade, then frames. Each whole
-  // binary message goes to on_message; what must be answered (a Pong) to on_reply, as bytes to
-  // write. Empty while all is well, else why the connection ends.
+  // What the server sent, in order: first its answer to the upgrade, then frames. The call that
+  // completes the answer stops there (open() turns true; what came behind it waits for the next
+  // call, with no bytes or more). Each whole binary message goes to on_message; what must be
+  // answered (a Pong) to on_reply, as bytes to write. Empty while all is well, else why the
+  // connection ends.
   std::string feed(std::span<const std::uint8_t> bytes, const std::function<void(std::span<const std::uint8_t>)>& on_message,
                    const std::function<void(std::vector<std::uint8_t>)>& on_reply);
 

@@ -82,6 +82,8 @@ TEST_CASE("WebSocketClient: the upgrade's key is checked in the answer, byte by 
   last.insert(last.end(), frame.begin(), frame.end());
   CHECK(got.feed(answered, last).empty());
   CHECK(answered.open());
+  CHECK(got.messages.empty());  // the caller starts its session first: the frame waits for the next call
+  CHECK(got.feed(answered, {}).empty());
   REQUIRE(got.messages.size() == 1);
   CHECK(got.messages[0] == Bytes{1, 2, 3});
 

@@ -120,8 +120,21 @@ def main():
                 plain = b""
         if plain.startswith(b"HTTP/1.1 200"):
             failures.append("plain HTTP got the page from the https listener")
-        if not wait_for(lambda: "reason=tls_handshake_failed" in text(), 10):
+        if not wait_for(lambda: "transport=web peer=127.0.0.1 reason=tls_handshake_failed" in text(), 10):
             failures.append("a plain HTTP request to the https page was not logged as tls_handshake_failed")
+        # A plain ws:// upgrade to the wss port: refused the same way, logged for the WebSocket.
+        with socket.create_connection(("127.0.0.1", ws), timeout=10) as raw:
+            raw.sendall(f"GET / HTTP/1.1\r\nHost: 127.0.0.1:{ws}\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+                        "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n".encode())
+            raw.settimeout(10)
+            try:
+                plain = raw.recv(4096)
+            except (ConnectionResetError, socket.timeout):
+                plain = b""
+        if plain.startswith(b"HTTP/1.1 101"):
+            failures.append("a plain ws:// upgrade was taken by the wss listener")
+        if not wait_for(lambda: re.search(r"transport=ws peer=127\.0\.0\.1:\d+ reason=tls_handshake_failed", text()), 10):
+            failures.append("a plain ws:// upgrade to the wss port was not logged as tls_handshake_failed")
 
         # A renewal: new connections get the new certificate.
         shutil.copy(renewed[0], cert)
@@ -143,6 +156,8 @@ def main():
             scraped = reply.read().decode()
         if not re.search(r"^ocean_tls_reload_failures_total 1(\.0)?$", scraped, re.M):
             failures.append("ocean_tls_reload_failures_total is not 1 after one broken renewal")
+        if not re.search(r'^ocean_rejects_total\{reason="tls_handshake_failed"\} 2(\.0)?$', scraped, re.M):
+            failures.append("ocean_rejects_total{reason=\"tls_handshake_failed\"} is not 2 (the page's and the socket's)")
         if server.poll() is not None:
             failures.append(f"the server stopped (exit {server.returncode})")
         server.send_signal(signal.SIGTERM)

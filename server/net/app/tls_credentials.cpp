@@ -11,15 +11,15 @@ namespace ocean::server {
 
 namespace {
 
-// OpenSSL's reasons for the failure, first (the cause: "no start line", "key values mismatch")
-// to last ("PEM lib"), rather than asio's generic one.
+// OpenSSL's reasons for the failure: the first (the cause, "no start line", which asio has taken
+// off the queue into `error`), then what is left on the queue ("PEM lib").
 std::string openssl_reason(const std::error_code& error) {
-  std::string text;
+  std::string text = error ? error.message() : std::string();
   while (const unsigned long code = ERR_get_error()) {
     const char* reason = ERR_reason_error_string(code);
     if (reason && text.find(reason) == std::string::npos) text += (text.empty() ? "" : ", ") + std::string(reason);
   }
-  return text.empty() ? error.message() : text;
+  return text.empty() ? std::string("no reason given") : text;
 }
 
 // Empty when the file opens for reading, else why not ("No such file or directory").

@@ -56,7 +56,8 @@ void HttpConnection::start() {
   arm_deadline(kRequestDeadline);  // the TLS handshake's too
   stream_.handshake([self = shared_from_this()](std::error_code error) {
     if (!error) return self->do_read();
-    self->refused("tls_handshake_failed");
+    // Not a failure when it was cut short here (the deadline, an eviction, a stop): said already.
+    if (!self->finished_ && error != asio::error::operation_aborted) self->refused("tls_handshake_failed");
     self->finish();
   });
 }

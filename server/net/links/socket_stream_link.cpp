@@ -25,13 +25,15 @@ void SocketStreamLink::start(MessageHandler on_message, CloseHandler on_close) {
   on_message_ = std::move(on_message);
   on_close_ = std::move(on_close);
   if (!stream_.is_tls()) return do_read();
-  // Writes wait for the handshake too: do_write() sees writing_ until it is done.
+  // Writes wait for the handshake too: do_write() sees writing_ until it is done. A client that
+  // never finishes it is closed by the session's Hello deadline (--handshake-timeout).
   writing_ = true;
-  close_within(kTlsHandshakeS, "tls_handshake_timeout");
   stream_.handshake([self = shared_from_this()](std::error_code error) {
     if (self->closed_) return;
-    if (error) return self->close("tls_handshake_failed");
-    self->close_timer_.cancel();
+    if (error) {
+      self->on_refused("tls_handshake_failed");
+      return self->close("tls_handshake_failed");
+    }
     self->writing_ = false;
     self->do_read();
     self->do_write();

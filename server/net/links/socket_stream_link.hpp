@@ -3,8 +3,7 @@
 // bytes (frames up to the bound, control messages into the headroom above it), its accounting
 // (written_through), the pacing bucket, and closing (now, or once the queue is written, within a
 // grace time). A subclass reads and writes: do_read() once started, do_write() whenever there may
-// be something to write. Over TLS (a wss listener with --tls-cert) the handshake comes first,
-// within kTlsHandshakeS.
+// be something to write. Over TLS (a wss listener with --tls-cert) the handshake comes first.
 #pragma once
 
 #include "byte_stream.hpp"
@@ -44,7 +43,6 @@ class SocketStreamLink : public StreamLink, public std::enable_shared_from_this<
   protocol::Reason framing_failure() const override { return framing_failure_; }
 
   std::size_t max_queue_bytes() const { return max_queue_bytes_; }
-  static constexpr double kTlsHandshakeS = 10.0;  // a client that opens and says nothing is closed
 
  protected:
   // max_queue_bytes bounds the frames waiting to be written; control messages may use
@@ -54,6 +52,8 @@ class SocketStreamLink : public StreamLink, public std::enable_shared_from_this<
 
   virtual void do_read() = 0;
   virtual void do_write() = 0;
+  // The connection failed before it could carry a session (a TLS handshake): told, then closed.
+  virtual void on_refused(const std::string& /*reason*/) {}
   // Seconds until the front message may go at the session's rate (0: now, and it is taken).
   double pace_wait_s(std::size_t bytes);
   // The front message was written: its bytes leave the queue.

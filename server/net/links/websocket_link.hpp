@@ -50,6 +50,9 @@ class WebSocketLink final : public SocketStreamLink {
   WebSocketProtocol::Handlers protocol_handlers();
   void do_read() override;
   void do_write() override;
+  void on_refused(const std::string& reason) override {
+    if (on_refused_) on_refused_(reason, peer_text_);
+  }
   void on_ended(const std::string& reason);
 
   OriginPolicy origins_;
