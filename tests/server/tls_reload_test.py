@@ -40,6 +40,16 @@ def served_der(port):
         return tls.getpeercert(binary_form=True)
 
 
+def plain_answer(port, request):
+    """What a client speaking in the clear to a TLS port gets back (b"" when it is cut off)."""
+    with socket.create_connection(("127.0.0.1", port), timeout=10) as raw:
+        raw.sendall(request)
+        try:
+            return raw.recv(4096)
+        except (ConnectionResetError, socket.timeout):
+            return b""
+
+
 def wait_for(predicate, seconds):
     deadline = time.time() + seconds
     while time.time() < deadline:
@@ -111,26 +121,14 @@ def main():
             if not answer.startswith("HTTP/1.1 101"):
                 failures.append(f"a wss upgrade was answered {answer.splitlines()[0] if answer else 'with nothing'!r}")
         # Plain HTTP to the https page: refused and logged, nothing else.
-        with socket.create_connection(("127.0.0.1", web), timeout=10) as raw:
-            raw.sendall(b"GET / HTTP/1.1\r\nHost: x\r\n\r\n")
-            raw.settimeout(10)
-            try:
-                plain = raw.recv(4096)
-            except (ConnectionResetError, socket.timeout):
-                plain = b""
+        plain = plain_answer(web, b"GET / HTTP/1.1\r\nHost: x\r\n\r\n")
         if plain.startswith(b"HTTP/1.1 200"):
             failures.append("plain HTTP got the page from the https listener")
         if not wait_for(lambda: "transport=web peer=127.0.0.1 reason=tls_handshake_failed" in text(), 10):
             failures.append("a plain HTTP request to the https page was not logged as tls_handshake_failed")
         # A plain ws:// upgrade to the wss port: refused the same way, logged for the WebSocket.
-        with socket.create_connection(("127.0.0.1", ws), timeout=10) as raw:
-            raw.sendall(f"GET / HTTP/1.1\r\nHost: 127.0.0.1:{ws}\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
-                        "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n".encode())
-            raw.settimeout(10)
-            try:
-                plain = raw.recv(4096)
-            except (ConnectionResetError, socket.timeout):
-                plain = b""
+        plain = plain_answer(ws, f"GET / HTTP/1.1\r\nHost: 127.0.0.1:{ws}\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+                                 "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n".encode())
         if plain.startswith(b"HTTP/1.1 101"):
             failures.append("a plain ws:// upgrade was taken by the wss listener")
         if not wait_for(lambda: re.search(r"transport=ws peer=127\.0\.0\.1:\d+ reason=tls_handshake_failed", text()), 10):
