@@ -103,11 +103,7 @@ def run_in(args, clients, workdir):
     port = local_server.free_port()
     metrics_port = local_server.free_port()
     server_args, loadtest_args, transport = stream_args(args, ramp, workdir)
-    # WebSocket clients (a browser's path) reach the server's --ws-listen port instead.
-    client_port = port
-    if transport == "ws":
-        client_port = local_server.free_port()
-        server_args = server_args + ["--ws-listen", f"127.0.0.1:{client_port}"]
+    client_port = local_server.client_port(transport, port, server_args)
     # --max-clients above N: the limit under test is what the server can serve, not a setting
     # (admission control, where the server has it, decides by itself). Every client comes from
     # this host's one address: no per-address limits.

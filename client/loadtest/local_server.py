@@ -63,6 +63,16 @@ def free_port():
     raise RuntimeError("no free loopback port outside the ephemeral range")
 
 
+def client_port(transport, port, server_args):
+    """The port the load test's clients connect to: `port` (--listen's), or for WebSocket clients
+    (transport "ws") a free one, given to the server as --ws-listen (appended to server_args)."""
+    if transport != "ws":
+        return port
+    ws_port = free_port()
+    server_args += ["--ws-listen", f"127.0.0.1:{ws_port}"]
+    return ws_port
+
+
 def start(server_bin, args, port, ready_url=None):
     """Starts ocean-server with `args` (its --listen must use `port`, its UDP the same port) and
     waits until that process itself holds the TCP listener and the UDP socket on `port` - a probe

@@ -187,11 +187,8 @@ std::string ClientConnection::feed_websocket(std::span<const std::uint8_t> bytes
   const std::uint64_t generation = generation_;
   return websocket_->feed(
       bytes,
-      [&](std::span<const std::uint8_t> message) {
-        if (generation != generation_) return;
-        aligned_.assign((message.size() + 7) / 8, 0);
-        std::copy(message.begin(), message.end(), reinterpret_cast<std::uint8_t*>(aligned_.data()));
-        on_message({reinterpret_cast<const std::uint8_t*>(aligned_.data()), message.size()}, now);
+      [&](std::span<const std::uint8_t> message) {  // ClientSession aligns what it verifies
+        if (generation == generation_) on_message(message, now);
       },
       [&](std::vector<std::uint8_t> reply) {  // a Pong, framed already
         if (generation != generation_) return;

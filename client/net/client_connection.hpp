@@ -135,7 +135,6 @@ class ClientConnection : public std::enable_shared_from_this<ClientConnection> {
   asio::steady_timer timer_;
   protocol::TcpFramer framer_;
   std::unique_ptr<WebSocketClient> websocket_;  // config_.websocket: the stream's framing instead of framer_
-  std::vector<std::uint64_t> aligned_;          // a WebSocket message, 8-byte aligned for verify_message
   double upgrade_due_ = 0.0;                    // the upgrade's answer is owed by then
   std::vector<std::uint8_t> read_buffer_;
   std::vector<std::uint8_t> udp_buffer_;

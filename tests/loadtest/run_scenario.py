@@ -125,10 +125,7 @@ def main():
             extra += ["--profiles", args.profile]
         extra += args.sea.split()
         port = local_server.free_port()
-        client_port = port
-        if entry["transport"] == "ws":  # a browser's clients reach the WebSocket listener
-            client_port = local_server.free_port()
-            extra += ["--ws-listen", f"127.0.0.1:{client_port}"]
+        client_port = local_server.client_port(entry["transport"], port, extra)
         try:
             # warn level: little output to buffer
             server = local_server.start(args.server_bin, ["--listen", f"127.0.0.1:{port}", "--metrics-listen", "off",

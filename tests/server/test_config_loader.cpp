@@ -122,12 +122,17 @@ depth = "deep"
 profiles = ["mobile", "lite"]
 epoch = 2026-11-21T18:00:00.250+01:00
 tick-rate = 60
+ws-listen = "127.0.0.1:7002"
+tls-cert = "/etc/ocean/fullchain.pem"
+tls-key = "/etc/ocean/privkey.pem"
 )");
   const ConfigLoadResult from_file = load({"--config", file.path()});
   REQUIRE(from_file.message == "");
   CHECK(from_file.config.listen.port == 7001);
   CHECK(from_file.config.scene.wind_speed_mps == 5.0);
   CHECK(from_file.config.scene.spectrum == ocean::model::SpectrumKind::jonswap);
+  CHECK(from_file.config.tls_cert == "/etc/ocean/fullchain.pem");
+  CHECK(from_file.config.tls_key == "/etc/ocean/privkey.pem");
   CHECK(std::isinf(from_file.config.scene.depth_m));
   CHECK(from_file.config.profiles == std::vector<std::string>{"mobile", "lite"});
   CHECK(from_file.config.epoch_unix_ms == 1795280400250);  // same instant as 17:00:00.250Z
@@ -177,6 +182,14 @@ TEST_CASE("every kind of bad value is refused with a message naming it", "[confi
       {{"--ws-origins", "ftp://ocean.example"}, {"--ws-origins", "http or https"}},
       {{"--web-listen", "8080"}, {"--web-listen", "ADDR:PORT"}},
       {{"--web-listen", "127.0.0.1:8080"}, {"--web-listen", "--ws-listen"}},  // the page needs a WebSocket
+      // TLS: both files or neither, for a browser listener, each a file name (their contents are
+      // read when the server is built: tests/server/tls_reload_test.py).
+      {{"--ws-listen", "127.0.0.1:0", "--tls-cert", "c.pem"}, {"--tls-cert needs --tls-key"}},
+      {{"--ws-listen", "127.0.0.1:0", "--tls-key", "k.pem"}, {"--tls-key needs --tls-cert"}},
+      {{"--tls-cert", "c.pem", "--tls-key", "k.pem"}, {"--tls-cert", "give --ws-listen"}},
+      {{"--web-listen", "127.0.0.1:0", "--tls-cert", "c.pem", "--tls-key", "k.pem"}, {"--web-listen", "--ws-listen"}},
+      {{"--ws-listen", "127.0.0.1:0", "--tls-cert", "", "--tls-key", "k.pem"}, {"--tls-cert", "must name a file"}},
+      {{"--ws-listen", "127.0.0.1:0", "--tls-cert", "c.pem", "--tls-key", ""}, {"--tls-key", "must name a file"}},
       {{"--tick-rate", "0"}, {"--tick-rate", "1..240"}},
       {{"--tick-rate", "241"}, {"--tick-rate", "1..240"}},
       {{"--tick-rate", "20"}, {"--tick-rate", "mobile", "multiple"}},

@@ -18,6 +18,14 @@ REPORT = ("return (typeof Module !== 'undefined' && Module.calledRun) ? "
           "Module.UTF8ToString(Module.ccall('ocean_web_report', 'number', [], [])) : null;")
 
 
+# What crossed the wire for the page and everything it loaded, from the browser's own Resource
+# Timing of a same-origin page: per file its path, bytes on the wire (headers included), bytes
+# decoded, and when its response ended (ms from navigation).
+TRANSFERS = ("return [performance.getEntriesByType('navigation')[0]]"
+             ".concat(performance.getEntriesByType('resource'))"
+             ".map(e => [new URL(e.name).pathname, e.transferSize, e.decodedBodySize, Math.round(e.responseEnd)]);")
+
+
 def free_port():
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))

@@ -17,13 +17,9 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from chromium_driver import REPORT, Browser, start_server, stop_server, verdict  # noqa: E402
+from chromium_driver import REPORT, TRANSFERS, Browser, start_server, stop_server, verdict  # noqa: E402
 from link_proxy import LinkProxy  # noqa: E402
 
-# Each file the page loaded: path, bytes on the wire, and when its response ended (ms from navigation).
-TRANSFERS = ("return [performance.getEntriesByType('navigation')[0]]"
-             ".concat(performance.getEntriesByType('resource'))"
-             ".map(e => [new URL(e.name).pathname, e.transferSize, Math.round(e.responseEnd)]);")
 STAGES = "return window.oceanStages || {};"
 
 
@@ -75,7 +71,7 @@ def main():
             failures.append(f"the first frame came {first_s:.2f} s after navigation, over {args.within} s")
         # The emulation held: the page's bytes cannot have arrived faster than the link carries them.
         page_bytes = sum(t[1] for t in transfers)
-        loaded_s = max(t[2] for t in transfers) / 1000.0
+        loaded_s = max(t[3] for t in transfers) / 1000.0
         floor_s = page_bytes * 8 / (args.down_kbps * 1000)
         if loaded_s < 0.9 * floor_s:
             failures.append(f"{page_bytes} bytes loaded in {loaded_s:.2f} s, faster than {args.down_kbps} kbit/s allows "

@@ -23,16 +23,11 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from chromium_driver import REPORT, Browser, self_signed_certificate, start_server, stop_server, verdict  # noqa: E402
+from chromium_driver import REPORT, TRANSFERS, Browser, self_signed_certificate, start_server, stop_server, verdict  # noqa: E402
 from png_decode import decode_png  # noqa: E402
 
 
 MESSAGES = "return Module.UTF8ToString(Module.ccall('ocean_web_recorded_messages', 'number', [], []));"
-# What crossed the wire for the page and everything it loaded (headers included, as the browser
-# counts them), by file: the Resource Timing of a same-origin page.
-PAGE_BYTES = ("return [performance.getEntriesByType('navigation')[0]]"
-              ".concat(performance.getEntriesByType('resource'))"
-              ".map(e => [new URL(e.name).pathname, e.transferSize, e.decodedBodySize]);")
 # issue 38: the whole page within 350 KB on the wire (a phone's first load).
 MAX_PAGE_BYTES = 350_000
 MAX_PAGE_MS = 2.0
@@ -109,11 +104,11 @@ def main():
             with open(args.screenshot, "wb") as f:
                 f.write(png)
         messages = browser.run(MESSAGES)
-        loaded = browser.run(PAGE_BYTES)
+        loaded = browser.run(TRANSFERS)
         page_bytes = sum(entry[1] for entry in loaded)
         if page_bytes > MAX_PAGE_BYTES:
             failures.append(f"the page took {page_bytes} bytes on the wire, over {MAX_PAGE_BYTES}: {loaded}")
-        if not any(path.endswith(".wasm") for path, _, _ in loaded):
+        if not any(entry[0].endswith(".wasm") for entry in loaded):
             failures.append(f"the page's transfers list no module: {loaded}")
 
         # The WebAssembly decoder against the native one, on the same bytes.
