@@ -40,7 +40,11 @@ TEST_CASE("options: bad values name their flag") {
   CHECK_THAT(error_of({"--clients", "0"}), Catch::Contains("--clients"));
   CHECK_THAT(error_of({"--server", "localhost"}), Catch::Contains("--server"));
   CHECK_THAT(error_of({"--server", "localhost:99999"}), Catch::Contains("--server"));
-  CHECK_THAT(error_of({"--transport", "sctp"}), Catch::Contains("--transport"));
+  CHECK_THAT(error_of({"--transport", "sctp"}), Catch::Contains("--transport") && Catch::Contains("udp, tcp or ws"));
+  CHECK(error_of({"--transport", "ws"}).empty());
+  const OptionsResult browsers = parse_options({"--scenario", "browser-3g"});
+  REQUIRE(browsers.error.empty());
+  CHECK(browsers.options.transport == "ws");  // the scenario's own transport
   CHECK_THAT(error_of({"--profile", "phone"}), Catch::Contains("--profile"));
   CHECK_THAT(error_of({"--scenario", "moon"}), Catch::Contains("--scenario"));
   CHECK_THAT(error_of({"--link", "loss=150%"}), Catch::Contains("--link"));
