@@ -173,9 +173,12 @@ void LoadShard::on_frame(std::size_t k, const codec::ReconstructedFrame& frame, 
   tally.clock().observe(tick, arrival_s);
   FrameOutcome outcome;
   outcome.within_bound = within_bound;
-  // The viewer's jitter buffer (FrameTimeline) adds delay on a jittery link; judge by the same.
+  // The viewer's jitter buffer (FrameTimeline) adds delay on a jittery link and on a stream;
+  // judge by the same.
+  const client::ClientSession* session = c.live_session();
   const double delay = client::FrameTimeline::adaptive_delay(
-      tally.clock(), facts_->interpolation_delay_s, static_cast<double>(facts_->interval_ticks) * facts_->tick_period_s);
+      tally.clock(), facts_->interpolation_delay_s, static_cast<double>(facts_->interval_ticks) * facts_->tick_period_s,
+      session ? session->stream_rtt_s() : 0.0);
   max_delay_s_ = std::max(max_delay_s_, delay);
   outcome.on_time = arrived_on_time(arrival_s, tick, *tally.clock().offset_s(), facts_->tick_period_s, delay);
   if (!tally.record(tick, outcome, error.height_m)) return;

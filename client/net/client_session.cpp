@@ -48,6 +48,7 @@ void ClientSession::start(double now) {
   hello.transport = config_.transport;
   hello.client_name = config_.client_name.substr(0, protocol::kMaxClientNameBytes);
   send(protocol::encode(hello), wire::Transport::tcp);
+  hello_sent_ = now;
 }
 
 std::span<const std::uint8_t> ClientSession::aligned(std::span<const std::uint8_t> bytes) {
@@ -189,6 +190,7 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   max_message_bytes_ = welcome.max_message_bytes;
   state_ = State::streaming;
   welcome_at_ = now;
+  stats_.handshake_rtt_s = now - hello_sent_;
   last_progress_ = now;
   last_udp_rx_ = now;
   next_ack_ = now + config_.ack_interval_s;
@@ -201,7 +203,9 @@ void ClientSession::handle_welcome(const protocol::Welcome& welcome, double now)
   } else {
     path_ = Path::tcp;
   }
-  send_ping(now, control_path());
+  // The first Ping goes from the next update(), stamped after the decoder's build above (seconds
+  // for a wake's history), which would otherwise count as round trip.
+  next_ping_ = now;
 }
 
 void ClientSession::add_scene(Tick from, std::uint32_t serial, const protocol::SceneParams& scene) {

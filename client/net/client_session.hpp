@@ -58,6 +58,12 @@ class ClientSession {
   State state() const { return state_; }
   Path path() const { return path_; }
   const ClientStats& stats() const { return stats_; }
+  // The smoothed round trip (the handshake's before the first Pong) while delta frames come on
+  // the TCP stream (the WebSocket's too); 0 while they come, or may come, as datagrams.
+  double stream_rtt_s() const {
+    if (path_ != Path::tcp) return 0.0;
+    return stats_.rtt_smoothed_s > 0.0 ? stats_.rtt_smoothed_s : stats_.handshake_rtt_s;
+  }
   const std::string& close_reason() const { return close_reason_; }
   const std::string& last_error() const { return last_error_; }  // the last Error the server sent
   // The reason the server gave for refusing the Hello, if it did.
@@ -117,6 +123,7 @@ class ClientSession {
   // Timers (absolute times in the caller's clock, seconds).
   double last_rx_ = 0.0;              // any verified message
   double last_udp_rx_ = 0.0;          // any verified datagram
+  double hello_sent_ = 0.0;
   double welcome_at_ = 0.0;
   double udp_proof_started_ = 0.0;
   double next_udp_hello_ = 0.0;

@@ -49,6 +49,7 @@ struct ClientStats {
 
   double rtt_s = 0.0;         // last Pong
   double rtt_smoothed_s = 0.0;  // EWMA, 1/8 gain (RFC 6298 style); 0 until the first Pong
+  double handshake_rtt_s = 0.0;  // Hello sent to Welcome received
 
   std::uint64_t rejected_total() const {
     std::uint64_t n = 0;

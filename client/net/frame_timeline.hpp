@@ -26,7 +26,8 @@ struct FrameTimelineConfig {
   double delay_intervals = 3.0;          // render this many send intervals behind the newest frame
   double interpolation_delay_s = 0.0;    // if > 0, used instead of delay_intervals * send interval
   // A jittery link gets more delay: at least the clock's jitter (ArrivalClock::jitter_s) plus one
-  // send interval, reached by slewing like the clock itself.
+  // send interval, and on a stream a retransmission's cover (set_stream_rtt_s), reached by
+  // slewing like the clock itself.
   bool adapt_to_jitter = true;
   std::size_t capacity = 16;             // frames held; the oldest goes first
   std::size_t clock_window = 64;         // arrivals the clock minimum is taken over
@@ -89,11 +90,27 @@ class FrameTimeline {
                     std::vector<float>& slope_z);
   static void blend(const TimelineSample& sample, FrameChannels& out);
 
+  // The round trip of the stream the frames come on (TCP, WebSocket); 0 while they come as
+  // datagrams. Loss below a stream loses no frame but holds it: a lost segment is resent once a
+  // later one is acknowledged and a quarter round trip has passed (RACK, RFC 8985), so it and all
+  // sent after it come about 1.25 round trips plus a send interval late. The jitter window learns
+  // that only by stalling on it, and forgets it before the next (one every few seconds at 1 %
+  // loss), so a stream's buffer covers one retransmission from the start instead.
+  void set_stream_rtt_s(double rtt_s) { stream_rtt_s_ = rtt_s; }
   double interpolation_delay_s() const { return delay_s_; }
-  // The delay the jitter asks for now (>= interpolation_delay_s()).
-  double adaptive_delay_s() const { return adaptive_delay(clock_, delay_s_, send_interval_s_); }
-  static double adaptive_delay(const ArrivalClock& clock, double base_delay_s, double send_interval_s) {
-    return std::max(base_delay_s, clock.jitter_s() + send_interval_s);
+  // The delay the link asks for now (>= interpolation_delay_s()).
+  double adaptive_delay_s() const { return adaptive_delay(clock_, delay_s_, send_interval_s_, stream_rtt_s_); }
+  // One send interval to interpolate towards the next frame on top of the jitter seen, or on a
+  // stream of one retransmission's lateness, whichever is more (a Ping's round trip already holds
+  // the link's queueing; adding the jitter window would count each stall twice).
+  static double adaptive_delay(const ArrivalClock& clock, double base_delay_s, double send_interval_s,
+                               double stream_rtt_s = 0.0) {
+    const double lateness = retransmission_lateness_s(stream_rtt_s, send_interval_s);
+    return std::max({base_delay_s, clock.jitter_s() + send_interval_s, lateness > 0.0 ? lateness + send_interval_s : 0.0});
+  }
+  // How late a frame held behind one retransmission comes (0 without a stream).
+  static double retransmission_lateness_s(double stream_rtt_s, double send_interval_s) {
+    return stream_rtt_s > 0.0 ? 1.25 * stream_rtt_s + send_interval_s : 0.0;
   }
   const TimelineCounters& counters() const { return counters_; }
   const ArrivalClock& clock() const { return clock_; }
@@ -114,6 +131,7 @@ class FrameTimeline {
   codec::ReconstructedFrame predicted_;  // the extrapolator's scratch
   double delay_s_;
   double send_interval_s_;
+  double stream_rtt_s_ = 0.0;
   ArrivalClock clock_;
   std::vector<TimelineFrame> frames_;
   std::vector<bool> used_;

@@ -29,8 +29,10 @@ class SharedTimeline {
     timeline_ = FrameTimeline(config);
   }
 
-  void push(const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
+  // stream_rtt_s: FrameTimeline::set_stream_rtt_s, as the session knows it at this arrival.
+  void push(const codec::ReconstructedFrame& frame, Tick tick, double arrival_s, double stream_rtt_s = 0.0) {
     std::lock_guard lock(mutex_);
+    timeline_.set_stream_rtt_s(stream_rtt_s);
     timeline_.push(frame, tick, arrival_s);
   }
 

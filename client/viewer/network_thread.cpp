@@ -78,10 +78,12 @@ void NetworkThread::run() {
       decode_pool.run(count, job);
     };
   asio::io_context io;
-  auto connection = client::ClientConnection::create(
+  std::shared_ptr<client::ClientConnection> connection;
+  connection = client::ClientConnection::create(
       io, connection_config,
-      [this](const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
-        timeline_.push(frame, tick, arrival_s);
+      [this, &connection](const codec::ReconstructedFrame& frame, Tick tick, double arrival_s) {
+        const client::ClientSession* session = connection ? connection->session() : nullptr;
+        timeline_.push(frame, tick, arrival_s, session ? session->stream_rtt_s() : 0.0);
         on_frame(frame, tick);
       });
   connection->set_on_welcome([this](const protocol::Welcome& welcome) { on_welcome(welcome); });

@@ -177,6 +177,7 @@ void WebViewer::on_frame(const codec::ReconstructedFrame& frame, Tick tick) {
   ++frames_;
   if (session_frames_++ == 0) first_tick_ = last_tick_ = tick;
   first_tick_ = std::min(first_tick_, tick), last_tick_ = std::max(last_tick_, tick);
+  timeline_.set_stream_rtt_s(session_ ? session_->stream_rtt_s() : 0.0);
   timeline_.push(frame, tick, now());
   hashes_.push_back({tick, client::hash_heights(frame.height)});
   if (hashes_.size() > kHashesKept) hashes_.pop_front();

@@ -45,7 +45,27 @@ TEST_CASE("session: handshake, UDP proof and a lossless stream reproduce the enc
   CHECK(s.pongs_received >= 1);
   CHECK(s.rtt_smoothed_s > 0.0);
   CHECK(s.rtt_smoothed_s < 0.1);
+  CHECK(h.session.stream_rtt_s() == 0.0);  // deltas on UDP
   CHECK(h.session.welcome()->session_id == h.server.session_id());
+}
+
+TEST_CASE("session: a TCP-only session names its stream's round trip, the handshake's until a Pong comes",
+          "[session]") {
+  ClientSessionConfig config;
+  config.transport = wire::Transport::tcp;
+  CoreSessionHarness h(config);
+  h.start();
+  CHECK(h.session.stream_rtt_s() == 0.0);
+  h.run_ticks(1);  // the Hello out at 0, the Welcome back a tick later
+  REQUIRE(h.session.state() == ClientSession::State::streaming);
+  CHECK(h.session.path() == ClientSession::Path::tcp);
+  CHECK(h.session.stats().handshake_rtt_s == Approx(h.server.tick_period_s()));
+  CHECK(h.session.stats().pongs_received == 0);
+  CHECK(h.session.stream_rtt_s() == h.session.stats().handshake_rtt_s);
+  h.run_ticks(3);
+  REQUIRE(h.session.stats().pongs_received >= 1);  // the Ping went with the first update after the Welcome
+  CHECK(h.session.stats().rtt_smoothed_s == Approx(h.server.tick_period_s()));
+  CHECK(h.session.stream_rtt_s() == h.session.stats().rtt_smoothed_s);
 }
 
 TEST_CASE("session: UDP loss and reordering never corrupt a frame, acks name exactly the complete ticks",

@@ -147,6 +147,34 @@ TEST_CASE("timeline: a frame arriving after its render time is counted late", "[
   CHECK(timeline.counters().stalls == 0);
 }
 
+TEST_CASE("timeline: on a stream, frames held behind a retransmission come in time; without it they are late",
+          "[timeline]") {
+  // A stream with a 150 ms round trip (as its Pings measure it, queueing included) losing a
+  // segment every 3 s: the lost frame and the ones sent after it until the resend arrive
+  // together, 1.25 round trips and one send interval after the lost one was sent (RACK).
+  constexpr double kRtt = 0.15;
+  auto arrivals = schedule(300, 9);
+  for (std::uint32_t lost = 45; lost < 300; lost += 90) {
+    const double resent = lost * kPeriod + 0.05 + 1.25 * kRtt + kPeriod;
+    for (Arrival& a : arrivals)
+      if (a.tick >= lost && a.at < resent) a.at = resent;
+  }
+  std::stable_sort(arrivals.begin(), arrivals.end(), [](const Arrival& a, const Arrival& b) { return a.at < b.at; });
+  FrameTimeline datagrams;
+  render(datagrams, arrivals, 0.0, 10.2);
+  CHECK(datagrams.counters().frames_late >= 6);  // the jitter window learns a stall only by stalling on it
+  FrameTimeline stream;
+  stream.set_stream_rtt_s(kRtt);
+  CHECK(stream.adaptive_delay_s() == Approx(1.25 * kRtt + 2 * kPeriod));  // no jitter seen yet
+  const Rendered r = render(stream, arrivals, 0.0, 10.2);  // the last frame, 300, is not passed
+  CHECK(stream.counters().frames_late == 0);
+  CHECK(stream.counters().stalls == 0);
+  for (std::size_t i = first_interpolating(r) + 1; i < r.position.size(); ++i)
+    CHECK(r.status[i] == TimelineSample::Status::interpolating);
+  CHECK(stream.adaptive_delay_s() >= 1.25 * kRtt + 2 * kPeriod);  // the stalls' jitter may ask more
+  CHECK(FrameTimeline::retransmission_lateness_s(0.0, kPeriod) == 0.0);  // no stream, no cover
+}
+
 TEST_CASE("timeline: frame buffers are reused in steady state", "[timeline]") {
   FrameTimelineConfig config;
   config.capacity = 8;

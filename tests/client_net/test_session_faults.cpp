@@ -134,9 +134,12 @@ TEST_CASE("session: UDP that never answers falls back to TCP after the timeout a
   h.run_ticks(45);  // 1.5 s
   CHECK(h.session.path() == ClientSession::Path::udp_proving);
   CHECK(h.session.stats().transport_fallbacks == 0);
+  CHECK(h.session.stats().rtt_smoothed_s > 0.0);
+  CHECK(h.session.stream_rtt_s() == 0.0);  // datagrams may still come: the jitter buffer learns them
   h.run_ticks(30);  // past 2 s
   const ClientStats& s = h.session.stats();
   CHECK(h.session.path() == ClientSession::Path::tcp);
+  CHECK(h.session.stream_rtt_s() == s.rtt_smoothed_s);  // only the stream now: cover its retransmissions
   CHECK(s.transport_fallbacks == 1);
   CHECK(h.server.set_transport_tcp == 1);
   CHECK(s.udp_hellos_sent == 8);  // at 0, 0.25, ..., 1.75 s
