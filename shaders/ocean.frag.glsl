@@ -15,6 +15,7 @@ uniform vec3 u_scatter_colour;
 uniform float u_shininess;
 uniform vec3 u_foam_colour;
 uniform vec4 u_overcast;       // as in sky.frag.glsl: the reflection shows the same sky
+uniform float u_foam_only;     // 1: the foam term alone (Renderer::set_foam_only)
 
 varying vec3 v_rel;
 varying vec2 v_slope;
@@ -46,4 +47,5 @@ void main() {
 
   // Toward the horizon the water turns into the sky colour just above it, hiding the tiling.
   gl_FragColor = vec4(mix(colour, v_haze.rgb, v_haze.a), 1.0);
+  if (u_foam_only > 0.5) gl_FragColor = vec4(v_foam, 1.0, 0.0, 1.0);
 }

@@ -19,7 +19,7 @@ uniform float u_eye_height;
 uniform float u_choppiness;
 uniform float u_detail_fade;  // 1 / distance where slopes have faded to u_far_roughness
 uniform float u_far_roughness;
-uniform vec2 u_foam;          // threshold, 1 / softness
+uniform vec3 u_foam;          // threshold, 1 / softness, the mean foam (WhitecapCover's cover)
 uniform vec2 u_fog;           // density per metre, 1 / (1 - exp(-density * view distance))
 uniform vec3 u_horizon[16];   // sky colour 0.01 rad above the horizon, azimuth 2 pi (i / 16 - 0.5)
 // The turbulent foam behind each moving hull (at most 8, the nearest), from its pose alone:
@@ -120,7 +120,10 @@ void main() {
   v_rel = rel;
   // Only the tile's short waves fade with distance (they would sparkle); the long ones stay.
   v_slope = a_slope * detail + coarse_slope;
-  v_foam = max(clamp((u_foam.x - jacobian) * u_foam.y, 0.0, 1.0), max(wake_foam, trail_foam(xz))) * detail;
+  // Far off, where the grid's folds would sparkle between pixels, the whitecaps tend to their
+  // mean instead of fading: a gale's far sea stays as white as its near one.
+  float whitecap = clamp((u_foam.x - jacobian) * u_foam.y, 0.0, 1.0);
+  v_foam = max(mix(u_foam.z, whitecap, detail), max(wake_foam, trail_foam(xz)) * detail);
   v_height = height;
   // Fog per vertex: smooth over a triangle, and it keeps the fragment stage to one texture fetch.
   // Normalised to reach exactly 1 at the view distance, where the tiles end and the sky below

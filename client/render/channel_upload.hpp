@@ -43,8 +43,9 @@ bool stream_layout(int grid, double patch_x_m, double patch_z_m, std::span<const
 bool apply_layout(Renderer& renderer, const StreamLayout& layout, std::string& warning);
 
 // false when the renderer refuses the frame (see Renderer::error()); the height channel must have
-// layout.samples() samples.
+// layout.samples() samples. A choppy frame's Jacobian passes through the foam's memory, and its
+// whitecaps are set to the cover of the wind `whitecaps` was given.
 bool upload_channels(Renderer& renderer, const client::FrameChannels& frame, const StreamLayout& layout,
-                     FoamMemory& foam, double dt_s);
+                     FoamMemory& foam, WhitecapCover& whitecaps, double dt_s);
 
 }  // namespace ocean::render

@@ -22,9 +22,6 @@ namespace ocean::render {
 
 namespace {
 
-// The Jacobian range over which foam goes from none to full (FoamMemory's rate is set against it).
-constexpr float kFoamBand = 0.2f;
-
 template <typename T>
 T or_default(T value, T fallback) {
   return value == T{} ? fallback : value;
@@ -51,7 +48,7 @@ bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake
                loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast"),
                loc("u_coarse_shape"), loc("u_coarse_chop"), loc("u_coarse_scale"), loc("u_coarse_origin"),
                loc("u_wake_shape"), loc("u_wake_chop"), loc("u_wake_scale"), loc("u_wake_origin"),
-               loc("u_trail[0]"), loc("u_trails"), loc("u_eye_xz")};
+               loc("u_trail[0]"), loc("u_trails"), loc("u_eye_xz"), loc("u_foam_only")};
   return true;
 }
 
@@ -69,9 +66,8 @@ bool Renderer::init(const RendererDesc& in) {
   desc_.chunks_per_side = or_default(in.chunks_per_side, 2);
   desc_.far_block_tiles = std::max(0, in.far_block_tiles);  // resolved per patch size in set_grid
   desc_.choppiness = or_default(in.choppiness, 1.0f);
-  // Foam where the surface compresses: from J 0.75, full at 0.55. On the streamed 256 m band this
-  // whitens about 5 % of a 20 m/s storm at choppiness 1.2 and well under 1 % of a 10 m/s sea at
-  // choppiness 1, near the whitecap cover observed at those winds (Monahan: 10 % and 1 %).
+  // Foam where the surface compresses, from J 0.75, full at 0.55, until a frame's whitecaps are
+  // set (WhitecapCover: the threshold that covers the share observed at the wind).
   desc_.foam_threshold = or_default(in.foam_threshold, 0.75f);
   desc_.sun_colour = or_default(in.sun_colour, glm::vec3(2.6f, 2.35f, 1.9f));
   desc_.deep_colour = or_default(in.deep_colour, glm::vec3(0.01f, 0.06f, 0.10f));
@@ -230,7 +226,7 @@ void Renderer::draw(const Camera& camera, int width, int height, double /*time_s
     draw_tiles(tiles);
   }
   // The sky last, on the far plane, so it only shades pixels no water covered.
-  draw_sky(camera, clip_from_rel);
+  if (!desc_.foam_only) draw_sky(camera, clip_from_rel);
 }
 
 TileSelection Renderer::visible_tiles(const Camera& camera, const glm::mat4& clip_from_rel) const {
@@ -264,7 +260,9 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
   glUniform1f(u.choppiness, desc_.choppiness);
   glUniform1f(u.detail_fade, 2.0f / desc_.view_distance_m);
   glUniform1f(u.far_roughness, 0.35f);
-  glUniform2f(u.foam, desc_.foam_threshold, 1.0f / kFoamBand);
+  glUniform3f(u.foam, whitecaps_ ? whitecaps_->threshold : desc_.foam_threshold, 1.0f / kFoamBand,
+              whitecaps_ ? whitecaps_->cover : 0.0f);
+  glUniform1f(u.foam_only, desc_.foam_only ? 1.0f : 0.0f);
   glUniform1i(u.sky, 0);
   glUniform3fv(u.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
   // Under a cloud deck the sun barely shows and the water turns a darker grey-green.

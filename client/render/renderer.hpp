@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "client/render/coarse_cascade.hpp"
 #include "client/render/patch_buffers.hpp"
 #include "client/render/tile_selection.hpp"
+#include "client/render/whitecap_cover.hpp"
 
 namespace ocean::render {
 
@@ -29,7 +31,7 @@ struct RendererDesc {
   int chunks_per_side = 0;            // 2 (1 for grids under 16): LOD granularity within a tile
   int far_block_tiles = 0;            // about view distance / 5 patches (1 = off): tiles per far draw
   float choppiness = 0.0f;            // 1: scale applied to the streamed displacement
-  float foam_threshold = 0.0f;        // 0.75: foam where the Jacobian is below this, full 0.2 lower
+  float foam_threshold = 0.0f;        // 0.75: foam where the Jacobian is below this, full 0.2 lower (without set_whitecaps)
   glm::vec3 sun_direction{0.0f};      // estimated from the sky's brightest spot
   glm::vec3 sun_colour{0.0f};         // (2.6, 2.35, 1.9): > 1 so the glitter saturates
   glm::vec3 deep_colour{0.0f};        // (0.01, 0.06, 0.10)
@@ -39,6 +41,9 @@ struct RendererDesc {
   // Leave the coarse cascade undrawn even where the GL could: what a GL without vertex texture
   // fetch shows (tests), or a GL whose vertex texture reads are too slow.
   bool without_coarse_cascade = false;
+  // Draw the water's foam term alone: red the foam (0..1), green 1 on water, black where no water
+  // is (no sky): what a test measures the foam's share of the water with.
+  bool foam_only = false;
 };
 
 // One frame of samples, each n x n floats, row-major with rows along +z (index row * n + col).
@@ -114,6 +119,9 @@ class Renderer {
   // The sky's colour just above the horizon, averaged round it, under the weather: what the water
   // fades into with distance, and the light the sky sheds on things above the water.
   glm::vec3 horizon_colour() const;
+  // The whitecaps of this frame's Jacobian (WhitecapCover); nothing: desc().foam_threshold and
+  // no foam in the far field.
+  void set_whitecaps(std::optional<WhitecapShading> shading) { whitecaps_ = shading; }
   // The foam trails of this frame (the nearest kMaxTrails to the camera are drawn).
   static constexpr std::size_t kMaxTrails = 8;
   void set_trails(std::span<const FoamTrail> trails) { trails_.assign(trails.begin(), trails.end()); }
@@ -151,7 +159,7 @@ class Renderer {
     GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon, overcast;
     GLint coarse_shape, coarse_chop, coarse_scale, coarse_origin;  // -1 in the plain program
     GLint wake_shape, wake_chop, wake_scale, wake_origin;          // -1 without the wake
-    GLint trail, trails, eye_xz;
+    GLint trail, trails, eye_xz, foam_only;
   };
   struct OceanProgram {
     GLuint id = 0;
@@ -197,6 +205,7 @@ class Renderer {
   GLint sky_u_rel_from_clip_ = -1, sky_u_sky_ = -1, sky_u_overcast_ = -1;
   float overcast_ = 0.0f;
   std::vector<FoamTrail> trails_;
+  std::optional<WhitecapShading> whitecaps_;
   std::vector<glm::vec3> weathered_ring_;
 
   DrawStats stats_;

@@ -56,6 +56,7 @@ class StreamView {
   client::RenderedFrame last_;
   client::FrameChannels channels_;
   render::FoamMemory foam_;
+  render::WhitecapCover whitecaps_;
   render::WeatherEase weather_;
   std::optional<codec::SurfaceQuery> sea_;  // the current stream's lattices
   VesselView vessels_;

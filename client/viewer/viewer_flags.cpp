@@ -11,6 +11,7 @@ render::RendererDesc CommonViewerOptions::renderer_desc() const {
   render::RendererDesc desc;
   desc.view_distance_m = view_distance_m;
   desc.lod0_distance_m = lod0_distance_m;
+  desc.foam_only = foam_only;
   return desc;
 }
 
@@ -25,6 +26,8 @@ void add_output_flags(CLI::App& app, CommonViewerOptions& o, const OutputFlagsHe
   app.add_option("--screenshot", o.screenshot, "write the last rendered frame to this PNG");
   app.add_flag("--json", o.json, help.json);
   app.add_flag("--hud", o.hud, "draw the HUD in headless mode too");
+  app.add_flag("--foam-only", o.foam_only,
+               "draw the water's foam term alone (red: foam 0..1, green: water; no sky), to measure whitecap cover");
 }
 
 void add_camera_flags(CLI::App& app, CommonViewerOptions& o) {

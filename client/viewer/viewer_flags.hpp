@@ -22,6 +22,7 @@ struct CommonViewerOptions {
   std::string screenshot;
   bool json = false;
   bool hud = false;  // headless only; the window toggles it with H
+  bool foam_only = false;
   float view_distance_m = 0.0f;
   float lod0_distance_m = 0.0f;
   float eye_height_m = 10.0f;

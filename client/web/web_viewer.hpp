@@ -97,6 +97,7 @@ class WebViewer {
   client::FrameTimeline timeline_;
   client::FrameChannels channels_;
   render::FoamMemory foam_;
+  render::WhitecapCover whitecaps_;
   render::WeatherEase weather_;
   std::string state_ = "idle";  // idle, connecting, streaming, closed
   std::string close_reason_;
