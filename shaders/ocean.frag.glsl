@@ -15,17 +15,43 @@ uniform vec3 u_scatter_colour;
 uniform float u_shininess;
 uniform vec3 u_foam_colour;
 uniform vec4 u_overcast;       // as in sky.frag.glsl: the reflection shows the same sky
-uniform float u_foam_only;     // 1: the foam term alone (Renderer::set_foam_only)
+uniform float u_foam_only;     // 1: the foam term alone (RendererDesc::foam_only)
+uniform vec2 u_lace;           // the wind's unit direction (x, z): the foam's lace is drawn out along it
 
 varying vec3 v_rel;
 varying vec2 v_slope;
 varying float v_foam;
 varying float v_height;
 varying vec4 v_haze;
+varying vec2 v_world;
 
 vec3 weathered(vec3 c) {
   return mix(c, u_overcast.rgb * (0.6 + 0.4 * dot(c, vec3(0.3, 0.5, 0.2))), u_overcast.a);
 }
+
+#ifdef FOAM_LACE
+float hash(vec2 c) { return fract(sin(dot(c, vec2(12.9898, 78.233))) * 43758.5453); }
+
+float value_noise(vec2 p) {
+  vec2 i = floor(p);
+  vec2 f = fract(p);
+  f = f * f * (3.0 - 2.0 * f);
+  return mix(mix(hash(i), hash(i + vec2(1.0, 0.0)), f.x), mix(hash(i + vec2(0.0, 1.0)), hash(i + vec2(1.0, 1.0)), f.x), f.y);
+}
+
+// Foam up close is lace, not a magnified sample: the interpolated cover is redistributed by a
+// noise drawn out along the wind (streaks), keeping its mean - full foam and none stay as they are.
+// Built with FOAM_LACE, the program a stream's whitecaps are drawn with: llvmpipe does not skip a
+// branch on a uniform, so a calm stream's program leaves it out.
+float laced(float foam) {
+  if (foam <= 0.0 || foam >= 1.0) return foam;
+  vec2 q = vec2(dot(v_world, u_lace.xy), dot(v_world, vec2(-u_lace.y, u_lace.x)));
+  float n = clamp((value_noise(q * vec2(0.3, 1.2)) - 0.5) * 3.0, -1.0, 1.0);
+  return foam + n * min(foam, 1.0 - foam);
+}
+#else
+float laced(float foam) { return foam; }
+#endif
 
 void main() {
   vec3 n = normalize(vec3(-v_slope.x, 1.0, -v_slope.y));
@@ -43,9 +69,10 @@ void main() {
   vec3 water = u_deep_colour * (0.4 + 0.6 * lit) + u_scatter_colour * crest * (1.0 - facing);
   vec3 colour = mix(water, sky, fresnel);
   colour += u_sun_colour * pow(max(dot(r, u_sun_dir), 0.0), u_shininess) * (0.3 + fresnel);
-  colour = mix(colour, u_foam_colour * (0.8 + 0.2 * lit), v_foam);
+  float foam = laced(v_foam);
+  colour = mix(colour, u_foam_colour * (0.8 + 0.2 * lit), foam);
 
   // Toward the horizon the water turns into the sky colour just above it, hiding the tiling.
   gl_FragColor = vec4(mix(colour, v_haze.rgb, v_haze.a), 1.0);
-  if (u_foam_only > 0.5) gl_FragColor = vec4(v_foam, 1.0, 0.0, 1.0);
+  if (u_foam_only > 0.5) gl_FragColor = vec4(foam, 1.0, 0.0, 1.0);
 }

@@ -11,7 +11,7 @@ attribute vec2 a_grid;       // metres inside the patch (static VBO)
 attribute float a_height;    // metres (streamed)
 attribute vec2 a_slope;      // dh/dx, dh/dz (streamed)
 attribute vec2 a_disp;       // choppy horizontal displacement, metres (streamed or constant 0)
-attribute float a_jacobian;  // horizontal Jacobian, < 1 where the surface folds (streamed or 1)
+attribute float a_jacobian;  // horizontal Jacobian, < 1 where the surface folds (streamed or 1); the foam (0..1) when u_foam.w is 1
 
 uniform mat4 u_clip_from_rel;
 uniform vec2 u_tile_offset;   // tile origin minus eye position, x and z
@@ -19,7 +19,7 @@ uniform float u_eye_height;
 uniform float u_choppiness;
 uniform float u_detail_fade;  // 1 / distance where slopes have faded to u_far_roughness
 uniform float u_far_roughness;
-uniform vec3 u_foam;          // threshold, 1 / softness, the mean foam (WhitecapCover's cover)
+uniform vec4 u_foam;          // threshold, 1 / softness, the mean foam (far off), 1: a_jacobian is the tile's foam (Whitecaps)
 uniform vec2 u_fog;           // density per metre, 1 / (1 - exp(-density * view distance))
 uniform vec3 u_horizon[16];   // sky colour 0.01 rad above the horizon, azimuth 2 pi (i / 16 - 0.5)
 // The turbulent foam behind each moving hull (at most 8, the nearest), from its pose alone:
@@ -58,6 +58,7 @@ varying vec2 v_slope;    // slopes, flattened with distance to keep far tiles fr
 varying float v_foam;
 varying float v_height;
 varying vec4 v_haze;     // horizon colour in this direction, fog amount
+varying vec2 v_world;    // world x, z modulo 1024 m: where the foam's texture is
 
 // The foam of the trails at a camera-relative point: white at the stern, fading and widening
 // behind it, broken into patches by a hash of the place (churned water is not uniform).
@@ -87,7 +88,7 @@ void main() {
   float height = a_height;
   vec2 disp = a_disp;
   vec2 coarse_slope = vec2(0.0);
-  float jacobian = a_jacobian;
+  float folds = 0.0;  // J - 1 of the coarse cascade and the wake
 #ifdef COARSE_CASCADE
   vec2 uv = u_coarse_origin + a_grid * u_coarse_scale.xy;
   vec4 shape = lattice_sample(u_coarse_shape, uv, u_coarse_scale.z);
@@ -96,7 +97,7 @@ void main() {
   coarse_slope = shape.yz;
   disp += chop.xy;
   // First order in the coarse derivatives (a few hundredths for long waves): J0 + (J1 - 1).
-  jacobian += chop.z;
+  folds += chop.z;
 #endif
 #ifdef WAKE_LATTICE
   vec2 wuv = (u_wake_origin + a_grid) * u_wake_scale.xy;
@@ -106,7 +107,7 @@ void main() {
   height += wshape.x;
   coarse_slope += wshape.yz;
   disp += wchop.xy;
-  jacobian += wchop.z;
+  folds += wchop.z;
   // A wake's steep crests carry the foam its hull shed and whiten where they near breaking: from
   // a slope of 0.1 (the Kelvin arms' cusps of a hull at speed), full at 0.3 (a Stokes wave breaks
   // near 0.44), on every profile (the choppy ones fold too, through the Jacobian).
@@ -122,9 +123,13 @@ void main() {
   v_slope = a_slope * detail + coarse_slope;
   // Far off, where the grid's folds would sparkle between pixels, the whitecaps tend to their
   // mean instead of fading: a gale's far sea stays as white as its near one.
-  float whitecap = clamp((u_foam.x - jacobian) * u_foam.y, 0.0, 1.0);
+  // With the tile's foam streamed in a_jacobian, the coarse cascade's and the wake's own folds
+  // foam from J 0.75 as the tile's did before (the tile's threshold is set for its own folds).
+  float whitecap = u_foam.w > 0.5 ? max(a_jacobian, clamp((-0.25 - folds) * 5.0, 0.0, 1.0))
+                                   : clamp((u_foam.x - a_jacobian - folds) * u_foam.y, 0.0, 1.0);
   v_foam = max(mix(u_foam.z, whitecap, detail), max(wake_foam, trail_foam(xz)) * detail);
   v_height = height;
+  v_world = xz + u_eye_xz;
   // Fog per vertex: smooth over a triangle, and it keeps the fragment stage to one texture fetch.
   // Normalised to reach exactly 1 at the view distance, where the tiles end and the sky below
   // the horizon (drawn in the horizon colour) takes over without a visible edge.

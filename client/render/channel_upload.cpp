@@ -48,16 +48,17 @@ bool apply_layout(Renderer& renderer, const StreamLayout& layout, std::string& w
   return renderer.set_coarse_grid(layout.coarse.n, layout.coarse.patch_x_m, layout.coarse.patch_z_m);
 }
 
-bool upload_channels(Renderer& renderer, const client::FrameChannels& f, const StreamLayout& layout, FoamMemory& foam,
-                     WhitecapCover& whitecaps, double dt_s) {
+bool upload_channels(Renderer& renderer, const client::FrameChannels& f, const StreamLayout& layout, Whitecaps& whitecaps,
+                     double dt_s) {
   const std::size_t samples = layout.samples();
   const bool slopes = f.slope_x.size() == samples && f.slope_z.size() == samples;
   const bool choppy = f.disp_x.size() == samples && f.disp_z.size() == samples && f.jacobian.size() == samples;
-  const float* jacobian = choppy ? foam.update(f.jacobian, dt_s).data() : nullptr;
-  // The cover from the tile's samples: the coarse cascade's long waves barely fold, and the wake's
-  // foam is its own.
-  const std::size_t tile = static_cast<std::size_t>(layout.tile.n) * layout.tile.n;
-  renderer.set_whitecaps(jacobian ? std::optional(whitecaps.update(std::span(jacobian, tile), dt_s)) : std::nullopt);
+  // The foam lives on the tile: the coarse cascade's long waves barely fold, and the wake's foam
+  // is its own.
+  const float* jacobian =
+      choppy ? whitecaps.shade(f.jacobian, layout.tile.n, layout.tile.patch_x_m, layout.tile.patch_z_m, dt_s).data()
+             : nullptr;
+  renderer.set_whitecaps(jacobian ? std::optional(whitecaps.shading()) : std::nullopt);
   const auto at = [](const std::vector<float>& v, bool present, std::size_t offset) {
     return present ? v.data() + offset : nullptr;
   };

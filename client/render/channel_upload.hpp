@@ -4,7 +4,7 @@
 #pragma once
 
 #include "client/net/frame_channels.hpp"
-#include "client/render/foam_memory.hpp"
+#include "client/render/whitecaps.hpp"
 #include "client/render/renderer.hpp"
 #include "common/cascade.hpp"
 #include "common/wake_lattice.hpp"
@@ -43,9 +43,9 @@ bool stream_layout(int grid, double patch_x_m, double patch_z_m, std::span<const
 bool apply_layout(Renderer& renderer, const StreamLayout& layout, std::string& warning);
 
 // false when the renderer refuses the frame (see Renderer::error()); the height channel must have
-// layout.samples() samples. A choppy frame's Jacobian passes through the foam's memory, and its
-// whitecaps are set to the cover of the wind `whitecaps` was given.
+// layout.samples() samples. A choppy frame's whitecaps are drawn as `whitecaps` shades them (at
+// the cover of the wind it was given).
 bool upload_channels(Renderer& renderer, const client::FrameChannels& frame, const StreamLayout& layout,
-                     FoamMemory& foam, WhitecapCover& whitecaps, double dt_s);
+                     Whitecaps& whitecaps, double dt_s);
 
 }  // namespace ocean::render

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include <GLES2/gl2ext.h>
@@ -29,14 +30,16 @@ T or_default(T value, T fallback) {
 
 }  // namespace
 
-bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake) {
+bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake, bool lace) {
   namespace src = shader_source;
-  std::string vertex = src::ocean_vert;
+  std::string vertex = src::ocean_vert, fragment = src::ocean_frag;
   // The defines go right after the "#version 100" line, which must stay first.
   if (wake) vertex.insert(vertex.find('\n') + 1, "#define WAKE_LATTICE\n");
   if (coarse) vertex.insert(vertex.find('\n') + 1, "#define COARSE_CASCADE\n");
-  const std::string name = std::string("ocean") + (coarse ? " (coarse cascade)" : "") + (wake ? " (wake)" : "");
-  program.id = build_program(name.c_str(), vertex.c_str(), src::ocean_frag,
+  if (lace) fragment.insert(fragment.find('\n') + 1, "#define FOAM_LACE\n");
+  const std::string name = std::string("ocean") + (coarse ? " (coarse cascade)" : "") + (wake ? " (wake)" : "") +
+                           (lace ? " (lace)" : "");
+  program.id = build_program(name.c_str(), vertex.c_str(), fragment.c_str(),
                              {{kGrid, "a_grid"}, {kHeight, "a_height"}, {kSlope, "a_slope"},
                               {kDisp, "a_disp"}, {kJacobian, "a_jacobian"}},
                              error_);
@@ -48,7 +51,7 @@ bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake
                loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast"),
                loc("u_coarse_shape"), loc("u_coarse_chop"), loc("u_coarse_scale"), loc("u_coarse_origin"),
                loc("u_wake_shape"), loc("u_wake_chop"), loc("u_wake_scale"), loc("u_wake_origin"),
-               loc("u_trail[0]"), loc("u_trails"), loc("u_eye_xz"), loc("u_foam_only")};
+               loc("u_trail[0]"), loc("u_trails"), loc("u_eye_xz"), loc("u_foam_only"), loc("u_lace")};
   return true;
 }
 
@@ -93,6 +96,12 @@ bool Renderer::init(const RendererDesc& in) {
     if (units >= 4) (void)build_ocean_program(programs_[3], true, true);
     error_.clear();
   }
+  // Each with the foam's lace too (a choppy stream's whitecaps): a fragment noise that costs
+  // llvmpipe about a sixth of a frame, so a calm stream's program goes without it.
+  for (int i = 0; i < 4; ++i)
+    if (programs_[i].id && !build_ocean_program(programs_[i + 4], i & 1, i & 2, true))
+      std::fprintf(stderr, "ocean renderer: warning: the foam is drawn without its lace (%s)\n", error_.c_str());
+  error_.clear();
   namespace src = shader_source;
   sky_program_ = build_program("sky", src::sky_vert, src::sky_frag, {{0, "a_ndc"}}, error_);
   if (!sky_program_) return false;
@@ -260,9 +269,10 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
   glUniform1f(u.choppiness, desc_.choppiness);
   glUniform1f(u.detail_fade, 2.0f / desc_.view_distance_m);
   glUniform1f(u.far_roughness, 0.35f);
-  glUniform3f(u.foam, whitecaps_ ? whitecaps_->threshold : desc_.foam_threshold, 1.0f / kFoamBand,
-              whitecaps_ ? whitecaps_->cover : 0.0f);
+  glUniform4f(u.foam, whitecaps_ ? whitecaps_->threshold : desc_.foam_threshold, 1.0f / (whitecaps_ ? whitecaps_->band : kFoamBand),
+              whitecaps_ ? whitecaps_->cover : 0.0f, whitecaps_ ? 1.0f : 0.0f);
   glUniform1f(u.foam_only, desc_.foam_only ? 1.0f : 0.0f);
+  if (whitecaps_) glUniform2f(u.lace, whitecaps_->wind_x, whitecaps_->wind_z);
   glUniform1i(u.sky, 0);
   glUniform3fv(u.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
   // Under a cloud deck the sun barely shows and the water turns a darker grey-green.

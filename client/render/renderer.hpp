@@ -119,8 +119,9 @@ class Renderer {
   // The sky's colour just above the horizon, averaged round it, under the weather: what the water
   // fades into with distance, and the light the sky sheds on things above the water.
   glm::vec3 horizon_colour() const;
-  // The whitecaps of this frame's Jacobian (WhitecapCover); nothing: desc().foam_threshold and
-  // no foam in the far field.
+  // With whitecaps (Whitecaps::shade), the tile's Jacobian stream carries its foam (0..1), the
+  // coarse cascade's and the wake's folds foam from the threshold, and the far field shows the
+  // cover; without, foam is the tile's Jacobian below desc().foam_threshold, none far off.
   void set_whitecaps(std::optional<WhitecapShading> shading) { whitecaps_ = shading; }
   // The foam trails of this frame (the nearest kMaxTrails to the camera are drawn).
   static constexpr std::size_t kMaxTrails = 8;
@@ -159,21 +160,25 @@ class Renderer {
     GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon, overcast;
     GLint coarse_shape, coarse_chop, coarse_scale, coarse_origin;  // -1 in the plain program
     GLint wake_shape, wake_chop, wake_scale, wake_origin;          // -1 without the wake
-    GLint trail, trails, eye_xz, foam_only;
+    GLint trail, trails, eye_xz, foam_only, lace;
   };
   struct OceanProgram {
     GLuint id = 0;
     OceanUniforms u{};
   };
-  bool build_ocean_program(OceanProgram& program, bool coarse, bool wake);
-  // plain, coarse, wake, coarse + wake (id 0 where this GL cannot build it)
-  const OceanProgram& ocean_program() const { return programs_[(coarse_.active() ? 1 : 0) + (wake_.active() ? 2 : 0)]; }
+  bool build_ocean_program(OceanProgram& program, bool coarse, bool wake, bool lace = false);
+  // plain, coarse, wake, coarse + wake, then each with the foam's lace (id 0 where this GL cannot
+  // build it); laced for a stream's whitecaps where it could be built.
+  const OceanProgram& ocean_program() const {
+    const int base = (coarse_.active() ? 1 : 0) + (wake_.active() ? 2 : 0);
+    return programs_[whitecaps_ && programs_[base + 4].id ? base + 4 : base];
+  }
   // Where a tile starting at tile index (ix, iz) lies in the coarse patch, in [0, 1).
   glm::vec2 coarse_origin(int ix, int iz) const;
   // Where a tile starting at tile index (ix, iz) lies from the wake square's corner, metres.
   glm::vec2 wake_origin(int ix, int iz) const;
 
-  OceanProgram programs_[4];  // by ocean_program()'s index; all but the plain one optional
+  OceanProgram programs_[8];  // by ocean_program()'s index; all but the plain one optional
   std::string coarse_unsupported_;                // why not, where it does not
   CoarseCascade coarse_;
   CoarseCascade wake_;  // the vessels' wake lattice, the same two textures

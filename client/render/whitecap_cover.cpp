@@ -11,6 +11,7 @@ constexpr std::size_t kMaxSamples = 8192;  // a strided subset of larger grids: 
 constexpr double kFollowS = 0.5;
 constexpr float kMaxThreshold = 1.0f;
 constexpr double kMaxCover = 0.5;          // beyond hurricane force the formula leaves the data
+constexpr float kMinBand = 0.04f;
 
 }  // namespace
 
@@ -20,39 +21,52 @@ double WhitecapCover::observed(double wind_mps) {
 }
 
 double WhitecapCover::mean_foam(double t) const {
-  const auto n = static_cast<double>(sorted_.size());
-  const auto below = [&](double x) {
-    return static_cast<std::size_t>(std::lower_bound(sorted_.begin(), sorted_.end(), static_cast<float>(x)) - sorted_.begin());
-  };
-  const std::size_t full = below(t - kFoamBand), some = below(t);
-  const double ramp = (static_cast<double>(some - full) * t - (prefix_[some] - prefix_[full])) / kFoamBand;
-  return (static_cast<double>(full) + ramp) / n;
+  double sum = 0.0;
+  const auto tf = static_cast<float>(t);
+  for (std::size_t i = 0; i < j_.size(); ++i) sum += std::max(std::clamp((tf - j_[i]) / band_, 0.0f, 1.0f), past_[i]);
+  return sum / static_cast<double>(j_.size());
 }
 
-WhitecapShading WhitecapCover::update(std::span<const float> jacobian, double dt_s) {
+WhitecapShading WhitecapCover::update(std::span<const float> jacobian, std::span<const float> past, double dt_s) {
   const double target = observed(wind_mps_);
   if (jacobian.empty() || target <= 0.0) {
     primed_ = false;
     return {kMaxThreshold, 0.0f};
   }
+  const bool has_past = past.size() == jacobian.size();
   const std::size_t stride = (jacobian.size() + kMaxSamples - 1) / kMaxSamples;
-  sorted_.clear();
-  for (std::size_t i = 0; i < jacobian.size(); i += stride) sorted_.push_back(jacobian[i]);
-  std::sort(sorted_.begin(), sorted_.end());
-  prefix_.assign(sorted_.size() + 1, 0.0);
-  for (std::size_t i = 0; i < sorted_.size(); ++i) prefix_[i + 1] = prefix_[i] + sorted_[i];
-  // mean_foam grows with t: bisect for the threshold that covers the target share.
-  double lo = static_cast<double>(sorted_.front()), hi = kMaxThreshold;
-  if (mean_foam(hi) > target)
-    for (int i = 0; i < 40; ++i) {
+  j_.clear();
+  past_.clear();
+  for (std::size_t i = 0; i < jacobian.size(); i += stride) {
+    j_.push_back(jacobian[i]);
+    past_.push_back(has_past ? past[i] : 0.0f);
+  }
+  std::vector<float> low(j_);  // the deepest folds: the thousandth of the samples lowest
+  const auto deep = low.begin() + static_cast<std::ptrdiff_t>(low.size() / 1000);
+  std::nth_element(low.begin(), deep, low.end());
+  band_ = std::clamp(0.5f * (1.0f - *deep), kMinBand, kFoamBand);
+  // mean_foam grows with t: bisect for the threshold that brings the foam to the target share;
+  // the lowest Jacobian (no new foam) when what is there already covers it.
+  double lo = static_cast<double>(*std::min_element(j_.begin(), j_.end())), hi = kMaxThreshold;
+  if (mean_foam(lo) >= target)
+    hi = lo;
+  else if (mean_foam(hi) > target)
+    for (int i = 0; i < 16; ++i) {  // to 1e-5 of J
       const double mid = 0.5 * (lo + hi);
       (mean_foam(mid) < target ? lo : hi) = mid;
     }
   const auto wanted = static_cast<float>(hi);
   const double follow = primed_ ? std::clamp(dt_s / kFollowS, 0.0, 1.0) : 1.0;
   threshold_ += static_cast<float>(follow) * (wanted - threshold_);
-  primed_ = true;
-  return {threshold_, static_cast<float>(mean_foam(threshold_))};
+  // A frame that cannot reach the share (a stream's first, before its folds; a sea that barely
+  // folds) is not followed from: the next that can starts afresh instead of foaming every
+  // compression while the threshold comes down.
+  primed_ = wanted < kMaxThreshold;
+  WhitecapShading out;
+  out.threshold = threshold_;
+  out.band = band_;
+  out.cover = static_cast<float>(mean_foam(threshold_));
+  return out;
 }
 
 }  // namespace ocean::render

@@ -226,7 +226,10 @@ void NetworkThread::publish(const client::ClientConnection& connection, double n
     stats_.messages_rejected = st.rejected_total();
     stats_.keyframe_requests = st.keyframe_requests_sent;
     stats_.path = session->path() == Path::udp ? "udp" : session->path() == Path::udp_proving ? "udp-proving" : "tcp";
-    if (session->state() == client::ClientSession::State::streaming) stream_.wind_speed_mps = session->scene().wind_speed_mps;
+    if (session->state() == client::ClientSession::State::streaming) {
+      stream_.wind_speed_mps = session->scene().wind_speed_mps;
+      stream_.wind_dir_deg = session->scene().wind_dir_deg;
+    }
   }
   stats_.record_ms = record_ms_;
   stats_.cpu_ms = cpu - record_ms_;

@@ -38,7 +38,8 @@ struct StreamShape {
   std::vector<int> lattices;  // the sizes of the frames' lattices, in order
   double tick_period_s = 0.0;
   double send_interval_s = 0.0;
-  double wind_speed_mps = 0.0;  // of the newest scene announced: the weather's light follows it
+  double wind_speed_mps = 0.0;  // of the newest scene announced: the weather's light and the foam follow it
+  double wind_dir_deg = 0.0;
   codec::StreamConfig config;   // the lattices, for asking the frames where the water is
   // The fleet forcing the wake (Welcome.vessels, replaced by each SceneUpdate that carries one:
   // the new list is right for earlier ticks too, PROTOCOL.md 8); its serial grows with each.

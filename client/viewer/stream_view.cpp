@@ -29,7 +29,6 @@ bool StreamView::update(NetworkThread& net, double now) {
       if (!warning.empty()) std::fprintf(stderr, "ocean-viewer: warning: %s\n", warning.c_str());
       // The old frame's samples do not fit the new grid: nothing is shown until a frame of it arrives.
       channels_ = {};
-      foam_.clear();
       whitecaps_.clear();
       ++grid_changes_;
     }
@@ -40,7 +39,7 @@ bool StreamView::update(NetworkThread& net, double now) {
     shape_.vessels_serial = shape.vessels_serial;
   }
   scene_.renderer.set_overcast(weather_.update(shape.wind_speed_mps, now - last_weather_s_));
-  whitecaps_.set_wind_mps(shape.wind_speed_mps);
+  whitecaps_.set_wind({shape.wind_speed_mps, shape.wind_dir_deg});
   last_weather_s_ = now;
   const double t0 = thread_cpu_ms();
   last_ = net.timeline().render(now, channels_);
@@ -49,7 +48,7 @@ bool StreamView::update(NetworkThread& net, double now) {
     ++held_;  // the renderer keeps the last upload: the picture holds
     return true;
   }
-  render::upload_channels(scene_.renderer, channels_, shape_.layout, foam_, whitecaps_, now - last_upload_s_);
+  render::upload_channels(scene_.renderer, channels_, shape_.layout, whitecaps_, now - last_upload_s_);
   pose_hulls();
   last_upload_s_ = now;
   upload_cpu_ms_ += thread_cpu_ms() - t0;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "client/render/foam_memory.hpp"
+#include "client/render/whitecaps.hpp"
 #include "client/viewer/hull_record.hpp"
 #include "client/render/weather_light.hpp"
 #include "client/viewer/network_thread.hpp"
@@ -55,8 +55,7 @@ class StreamView {
   StreamShape shape_;
   client::RenderedFrame last_;
   client::FrameChannels channels_;
-  render::FoamMemory foam_;
-  render::WhitecapCover whitecaps_;
+  render::Whitecaps whitecaps_;
   render::WeatherEase weather_;
   std::optional<codec::SurfaceQuery> sea_;  // the current stream's lattices
   VesselView vessels_;

@@ -142,7 +142,6 @@ void WebViewer::on_welcome(const protocol::Welcome& welcome) {
   }
   if (layout != layout_) {
     channels_ = {};
-    foam_.clear();
     whitecaps_.clear();
     std::string warning;
     if (!render::apply_layout(renderer_, layout, warning)) {
@@ -223,8 +222,8 @@ void WebViewer::frame(double now_s, int width, int height) {
   if (sample.status != client::TimelineSample::Status::empty && samples > 0) {
     client::FrameTimeline::blend(sample, channels_);
     if (channels_.height.size() == samples) {
-      if (session_) whitecaps_.set_wind_mps(session_->scene().wind_speed_mps);
-      in_gl([&] { render::upload_channels(renderer_, channels_, layout_, foam_, whitecaps_, dt); });
+      if (session_) whitecaps_.set_wind({session_->scene().wind_speed_mps, session_->scene().wind_dir_deg});
+      in_gl([&] { render::upload_channels(renderer_, channels_, layout_, whitecaps_, dt); });
       pose_vessels(sample);
       if (first_frame_ms_ < 0.0) first_frame_ms_ = started_ms;  // drawn below, in this animation frame
       ++uploads_;

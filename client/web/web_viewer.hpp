@@ -16,7 +16,7 @@
 #include "client/render/camera.hpp"
 #include "client/render/camera_controls.hpp"
 #include "client/render/channel_upload.hpp"
-#include "client/render/foam_memory.hpp"
+#include "client/render/whitecaps.hpp"
 #include "client/render/weather_light.hpp"
 #include "client/render/hud_overlay.hpp"
 #include "client/render/hull_renderer.hpp"
@@ -96,8 +96,7 @@ class WebViewer {
   std::unique_ptr<client::ClientSession> session_;
   client::FrameTimeline timeline_;
   client::FrameChannels channels_;
-  render::FoamMemory foam_;
-  render::WhitecapCover whitecaps_;
+  render::Whitecaps whitecaps_;
   render::WeatherEase weather_;
   std::string state_ = "idle";  // idle, connecting, streaming, closed
   std::string close_reason_;

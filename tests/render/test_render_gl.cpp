@@ -239,10 +239,9 @@ TEST_CASE("a GL that cannot draw the coarse cascade draws a cascaded stream's ti
     } else {
       CHECK(warning.empty());
     }
-    render::FoamMemory foam;
-    render::WhitecapCover whitecaps;
+    render::Whitecaps whitecaps;
     INFO(renderer.error());
-    REQUIRE(render::upload_channels(renderer, channels, layout, foam, whitecaps, 0.033));
+    REQUIRE(render::upload_channels(renderer, channels, layout, whitecaps, 0.033));
     render::OffscreenTarget target;
     std::string error;
     REQUIRE(target.create(160, 90, error));
