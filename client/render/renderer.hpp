@@ -120,8 +120,9 @@ class Renderer {
   // fades into with distance, and the light the sky sheds on things above the water.
   glm::vec3 horizon_colour() const;
   // With whitecaps (Whitecaps::shade), the tile's Jacobian stream carries its foam (0..1), the
-  // coarse cascade's and the wake's folds foam from the threshold, and the far field shows the
-  // cover; without, foam is the tile's Jacobian below desc().foam_threshold, none far off.
+  // coarse cascade's and the wake's own folds foam below J 0.75, the far field shows the cover and
+  // the foam is drawn as lace; without, foam is the tile's Jacobian below desc().foam_threshold,
+  // none far off.
   void set_whitecaps(std::optional<WhitecapShading> shading) { whitecaps_ = shading; }
   // The foam trails of this frame (the nearest kMaxTrails to the camera are drawn).
   static constexpr std::size_t kMaxTrails = 8;
