@@ -20,7 +20,7 @@ uniform vec2 u_lace;           // the wind's unit direction (x, z): the foam's l
 
 varying vec3 v_rel;
 varying vec2 v_slope;
-varying float v_foam;
+varying vec2 v_foam;     // the sea's whitecaps, the hulls' churned water and wake crests
 varying float v_height;
 varying vec4 v_haze;
 varying vec2 v_world;
@@ -46,7 +46,7 @@ float value_noise(vec2 p) {
 float laced(float foam) {
   if (foam <= 0.0 || foam >= 1.0) return foam;
   vec2 q = vec2(dot(v_world, u_lace.xy), dot(v_world, vec2(-u_lace.y, u_lace.x)));
-  float n = clamp((value_noise(q * vec2(0.3, 1.2)) - 0.5) * 3.0, -1.0, 1.0);
+  float n = clamp((value_noise(q * vec2(0.4, 1.6)) - 0.5) * 2.5, -1.0, 1.0);
   return foam + n * min(foam, 1.0 - foam);
 }
 #else
@@ -69,7 +69,7 @@ void main() {
   vec3 water = u_deep_colour * (0.4 + 0.6 * lit) + u_scatter_colour * crest * (1.0 - facing);
   vec3 colour = mix(water, sky, fresnel);
   colour += u_sun_colour * pow(max(dot(r, u_sun_dir), 0.0), u_shininess) * (0.3 + fresnel);
-  float foam = laced(v_foam);
+  float foam = max(laced(v_foam.x), v_foam.y);  // a hull's churn has its own grain
   colour = mix(colour, u_foam_colour * (0.8 + 0.2 * lit), foam);
 
   // Toward the horizon the water turns into the sky colour just above it, hiding the tiling.

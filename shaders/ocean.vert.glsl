@@ -55,7 +55,7 @@ uniform vec2 u_wake_origin;        // the tile origin minus the wake square's co
 
 varying vec3 v_rel;      // surface point minus eye
 varying vec2 v_slope;    // slopes, flattened with distance to keep far tiles from sparkling
-varying float v_foam;
+varying vec2 v_foam;     // the sea's whitecaps, the hulls' churned water and wake crests
 varying float v_height;
 varying vec4 v_haze;     // horizon colour in this direction, fog amount
 varying vec2 v_world;    // world x, z modulo 1024 m: where the foam's texture is
@@ -127,7 +127,7 @@ void main() {
   // foam from J 0.75 as the tile's did before (the tile's threshold is set for its own folds).
   float whitecap = u_foam.w > 0.5 ? max(a_jacobian, clamp((-0.25 - folds) * 5.0, 0.0, 1.0))
                                    : clamp((u_foam.x - a_jacobian - folds) * u_foam.y, 0.0, 1.0);
-  v_foam = max(mix(u_foam.z, whitecap, detail), max(wake_foam, trail_foam(xz)) * detail);
+  v_foam = vec2(mix(u_foam.z, whitecap, detail), max(wake_foam, trail_foam(xz)) * detail);
   v_height = height;
   v_world = xz + u_eye_xz;
   // Fog per vertex: smooth over a triangle, and it keeps the fragment stage to one texture fetch.

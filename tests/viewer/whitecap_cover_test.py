@@ -7,11 +7,14 @@ term over water pixels: foam is a cover, a pixel at 0.5 half white) must lie wit
 two of the cover observed at that wind (Monahan
 and O'Muircheartaigh 1980, W = 3.84e-6 U^3.41: 0.46, 1.8, 3.9 and 10.6 % at 8, 12, 15 and 20 m/s),
 and below 0.2 % at 5 m/s. desktop-choppy at 5, 8, 12, 15 and 20 m/s, mobile-choppy (its coarser
-grid folds less) at 15 and 20. Prints one JSON object.
+grid folds less) at 15 and 20. At 15 and 20 m/s, blowing along +x and along +z, the foam seen
+straight down from 100 m must lie along the wind: the dominant orientation of its structure tensor
+within 20 degrees of it. Prints one JSON object.
 Exit status: 0 pass, 1 fail, 2 bad arguments."""
 
 import argparse
 import json
+import math
 import os
 import subprocess
 import sys
@@ -47,6 +50,29 @@ def foam_share(png_path):
     return foam / 255.0 / water if water else 0.0, water / (width * height)
 
 
+def orientation(png_path):
+    """The axis the foam's streaks lie along, degrees from the picture's x axis (mod 180), from the
+    structure tensor of the foam channel; and its coherence (0 none, 1 all one way)."""
+    width, height, channels, rows = decode_png(open(png_path, "rb").read())
+    f = [[line[x * channels] / 255.0 for x in range(width)] for line in rows]
+    jxx = jyy = jxy = 0.0
+    for y in range(1, height - 1):
+        up, row, down = f[y - 1], f[y], f[y + 1]
+        for x in range(1, width - 1):
+            gx, gy = row[x + 1] - row[x - 1], down[x] - up[x]
+            jxx += gx * gx
+            jyy += gy * gy
+            jxy += gx * gy
+    gradient = math.degrees(0.5 * math.atan2(2.0 * jxy, jxx - jyy))
+    coherence = math.sqrt((jxx - jyy) ** 2 + 4.0 * jxy * jxy) / (jxx + jyy + 1e-12)
+    return (gradient + 90.0) % 180.0, coherence
+
+
+def axis_difference(a, b):
+    d = abs(a - b) % 180.0
+    return min(d, 180.0 - d)
+
+
 def render(build, profile, port, camera, yaw, png, size, frames):
     eye, pitch = CAMERAS[camera]
     viewer = subprocess.run([os.path.join(build, "client", "viewer", "ocean-viewer"), "--server", f"127.0.0.1:{port}",
@@ -55,6 +81,15 @@ def render(build, profile, port, camera, yaw, png, size, frames):
                              "--json", "--first-frame-timeout", "60"], capture_output=True, text=True, timeout=240)
     if viewer.returncode != 0:
         sys.exit(f"FAIL: ocean-viewer exited {viewer.returncode} ({profile}, {camera}):\n{viewer.stderr[-2000:]}")
+
+
+def render_down(build, profile, port, png):
+    viewer = subprocess.run([os.path.join(build, "client", "viewer", "ocean-viewer"), "--server", f"127.0.0.1:{port}",
+                             "--headless", "--foam-only", "--profile", profile, "--size", "320x320", "--frames", "90",
+                             "--yaw", "0", "--eye-height", "100", "--pitch", "-89", "--screenshot", png, "--json",
+                             "--first-frame-timeout", "60"], capture_output=True, text=True, timeout=240)
+    if viewer.returncode != 0:
+        sys.exit(f"FAIL: ocean-viewer exited {viewer.returncode} ({profile}, looking down):\n{viewer.stderr[-2000:]}")
 
 
 def main():
@@ -100,6 +135,30 @@ def main():
         finally:
             server.terminate()
             server.wait(timeout=30)
+    # Orientation: straight down (yaw 0: the picture's x is the world's x, its y the world's z).
+    result["orientation"] = []
+    for wind in (15, 20):
+        for wind_dir in (0, 90):
+            log_path = os.path.join(out_dir, f"server-{wind}-dir{wind_dir}.log")
+            epoch_ms = int(time.time() * 1000) - SEA_TIME_AT_START_S * 1000
+            server, port = start_server(args.build, ["--profiles", "desktop-choppy,mobile-choppy", "--epoch", str(epoch_ms),
+                                                     "--spectrum", "jonswap", "--wind-speed", str(wind), "--wind-dir",
+                                                     str(wind_dir), "--choppiness", "1.2"], log_path)
+            try:
+                for profile in ("desktop-choppy", "mobile-choppy"):
+                    png = os.path.join(out_dir, f"{profile}-{wind}-dir{wind_dir}-down.png")
+                    render_down(args.build, profile, port, png)
+                    axis, coherence = orientation(png)
+                    off = axis_difference(axis, wind_dir)
+                    row = {"profile": profile, "wind": wind, "wind_dir": wind_dir, "axis": round(axis, 1),
+                           "coherence": round(coherence, 3), "off_deg": round(off, 1), "pass": off <= 20.0, "picture": png}
+                    result["orientation"].append(row)
+                    print(json.dumps(row), file=sys.stderr)
+                    if off > 20.0:
+                        failures.append(f"{profile} {wind} m/s towards {wind_dir} deg: the foam lies at {axis:.0f} deg")
+            finally:
+                server.terminate()
+                server.wait(timeout=30)
     result["pass"] = not failures
     result["failures"] = failures
     print(json.dumps(result))

@@ -6,12 +6,7 @@
 # gale-stern.png           the same hull in a 20 m/s gale, from its stern camera (--follow)
 # browser-follow.png       the browser viewer following a harbour ferry (needs Chromium; skipped without)
 # The sea's clock is set (--epoch) so each picture catches the hull where the camera looks.
-set -euo pipefail
-BUILD=${1:-build}
-OUT=${2:-docs}
-WORK=$(mktemp -d)
-trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$WORK"' EXIT
-mkdir -p "$OUT"
+source "$(dirname "$0")/gallery.sh"  # BUILD, OUT and WORK from the arguments; gallery_server
 cat > "$WORK/wake.toml" <<'TOML'
 wake-size = 256
 wake-origin-x = -128
@@ -28,17 +23,10 @@ TOML
 # render NAME SEA_TIME_S "SERVER ARGS" "VIEWER ARGS"
 render() {
   local epoch=$(( $(date +%s%3N) - $2 * 1000 ))
-  "$BUILD/server/ocean-server" --config "$WORK/wake.toml" --listen 127.0.0.1:0 --metrics-listen off --epoch "$epoch" \
-    $3 > "$WORK/server.log" 2>&1 &
-  local server=$! port=""
-  for _ in $(seq 100); do
-    port=$(grep -o 'listening tcp=[^ ]*' "$WORK/server.log" | grep -o '[0-9]*$' || true)
-    [ -n "$port" ] && break
-    sleep 0.1
-  done
-  "$BUILD/client/viewer/ocean-viewer" --server "127.0.0.1:$port" --headless --size 960x540 --frames 30 \
+  gallery_server "$WORK/server.log" --config "$WORK/wake.toml" --epoch "$epoch" $3
+  "$BUILD/client/viewer/ocean-viewer" --server "127.0.0.1:$PORT" --headless --size 960x540 --frames 30 \
     --first-frame-timeout 60 --screenshot "$OUT/$1" $4 > /dev/null
-  kill "$server"; wait "$server" 2>/dev/null || true
+  kill "$SERVER"; wait "$SERVER" 2>/dev/null || true
   echo "$OUT/$1"
 }
 above="--eye-height 60 --pitch -30 --camera-z 100"
