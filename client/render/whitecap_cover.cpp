@@ -41,9 +41,9 @@ WhitecapShading WhitecapCover::update(std::span<const float> jacobian, std::span
     j_.push_back(jacobian[i]);
     past_.push_back(has_past ? past[i] : 0.0f);
   }
-  std::vector<float> low(j_);  // the deepest folds: the thousandth of the samples lowest
-  const auto deep = low.begin() + static_cast<std::ptrdiff_t>(low.size() / 1000);
-  std::nth_element(low.begin(), deep, low.end());
+  low_.assign(j_.begin(), j_.end());  // the deepest folds: the thousandth of the samples lowest
+  const auto deep = low_.begin() + static_cast<std::ptrdiff_t>(low_.size() / 1000);
+  std::nth_element(low_.begin(), deep, low_.end());
   band_ = std::clamp(0.5f * (1.0f - *deep), kMinBand, kFoamBand);
   // mean_foam grows with t: bisect for the threshold that brings the foam to the target share;
   // the lowest Jacobian (no new foam) when what is there already covers it.

@@ -44,6 +44,7 @@ class WhitecapCover {
 
   double wind_mps_ = 0.0;
   std::vector<float> j_, past_;  // a strided subset of the tile's samples
+  std::vector<float> low_;       // scratch: j_ partly ordered
   float threshold_ = 1.0f;
   float band_ = kFoamBand;
   bool primed_ = false;

@@ -26,6 +26,7 @@ from png_decode import decode_png  # noqa: E402
 from server_launch import start_server  # noqa: E402
 
 CAMERAS = {"deck": (12, -10), "bridge": (40, -25), "air": (200, -45)}  # eye height m, pitch deg
+DOWN = (100, -89)  # the orientation's camera: straight down, yaw 0 (the picture's x is the world's x)
 # From the deck a few near whitecaps fill much of the picture, so one picture's share swings with
 # the moment (0.3 to 4 times the cover, on mobile's 4 m samples): the deck's figure is the mean of
 # five headings, each a different stretch of sea.
@@ -74,22 +75,13 @@ def axis_difference(a, b):
 
 
 def render(build, profile, port, camera, yaw, png, size, frames):
-    eye, pitch = CAMERAS[camera]
+    eye, pitch = DOWN if camera == "down" else CAMERAS[camera]
     viewer = subprocess.run([os.path.join(build, "client", "viewer", "ocean-viewer"), "--server", f"127.0.0.1:{port}",
                              "--headless", "--foam-only", "--profile", profile, "--size", size, "--frames", str(frames),
                              "--yaw", str(yaw), "--eye-height", str(eye), "--pitch", str(pitch), "--screenshot", png,
                              "--json", "--first-frame-timeout", "60"], capture_output=True, text=True, timeout=240)
     if viewer.returncode != 0:
-        sys.exit(f"FAIL: ocean-viewer exited {viewer.returncode} ({profile}, {camera}):\n{viewer.stderr[-2000:]}")
-
-
-def render_down(build, profile, port, png):
-    viewer = subprocess.run([os.path.join(build, "client", "viewer", "ocean-viewer"), "--server", f"127.0.0.1:{port}",
-                             "--headless", "--foam-only", "--profile", profile, "--size", "320x320", "--frames", "90",
-                             "--yaw", "0", "--eye-height", "100", "--pitch", "-89", "--screenshot", png, "--json",
-                             "--first-frame-timeout", "60"], capture_output=True, text=True, timeout=240)
-    if viewer.returncode != 0:
-        sys.exit(f"FAIL: ocean-viewer exited {viewer.returncode} ({profile}, looking down):\n{viewer.stderr[-2000:]}")
+        sys.exit(f"FAIL: ocean-viewer exited {viewer.returncode} ({profile}, {camera}, yaw {yaw}):\n{viewer.stderr[-2000:]}")
 
 
 def main():
@@ -135,7 +127,7 @@ def main():
         finally:
             server.terminate()
             server.wait(timeout=30)
-    # Orientation: straight down (yaw 0: the picture's x is the world's x, its y the world's z).
+    # Orientation: straight down (DOWN).
     result["orientation"] = []
     for wind in (15, 20):
         for wind_dir in (0, 90):
@@ -147,7 +139,7 @@ def main():
             try:
                 for profile in ("desktop-choppy", "mobile-choppy"):
                     png = os.path.join(out_dir, f"{profile}-{wind}-dir{wind_dir}-down.png")
-                    render_down(args.build, profile, port, png)
+                    render(args.build, profile, port, "down", 0, png, "320x320", 90)
                     axis, coherence = orientation(png)
                     off = axis_difference(axis, wind_dir)
                     row = {"profile": profile, "wind": wind, "wind_dir": wind_dir, "axis": round(axis, 1),
