@@ -43,17 +43,6 @@ asio::ip::udp::socket open_udp_socket(asio::io_context& context, const ListenAdd
   return socket;
 }
 
-std::string peer_text(const auto& endpoint) {
-  const auto address = endpoint.address();
-  std::string text;  // appended piecewise: g++ 12 warns falsely (-Wrestrict) on "[" + std::string
-  if (address.is_v6()) text += '[';
-  text += address.to_string();
-  if (address.is_v6()) text += ']';
-  text += ':';
-  text += std::to_string(endpoint.port());
-  return text;
-}
-
 SceneSchedule checked_schedule(const ServerConfig& config) {
   std::string error;
   SceneSchedule schedule = make_schedule(config, error);
@@ -160,19 +149,6 @@ asio::ip::udp::socket Server::open_udp_beside_tcp() {
   }
 }
 
-// One listener per stream transport the config enables, the primary one first.
-void Server::open_listeners() {
-  for (const StreamTransport& transport : stream_transports())
-    if (const ListenAddress* address = transport.address(config_))
-      listeners_.push_back(std::make_unique<Listener>(context_, transport, *address));
-}
-
-std::optional<std::uint16_t> Server::port_of(std::string_view transport) const {
-  for (const auto& listener : listeners_)
-    if (listener->transport.name == transport) return listener->port;
-  return std::nullopt;
-}
-
 // "listening tcp=H:P udp=H:P ws=H:P|off metrics=... web=...[ tls=on]": tests and scripts read the ports here.
 std::string Server::listening_line() const {
   const auto at = [](const ListenAddress* address, std::optional<std::uint16_t> port) {
@@ -273,53 +249,6 @@ void Server::do_stop() {
     if (run_returned_cv_.wait_for(lock, std::chrono::duration<double>(kStopGraceS), [this] { return run_returned_; })) return;
     spdlog::warn("shutdown: goodbyes not flushed within {} s; closing every connection", kStopGraceS);
     context_.stop();
-  });
-}
-
-void Server::do_accept(Listener& listener) {
-  listener.acceptor.async_accept([this, &listener](std::error_code error, asio::ip::tcp::socket socket) {
-    if (!listener.acceptor.is_open()) return;
-    if (error == asio::error::no_descriptors || error.value() == ENFILE || error == asio::error::no_buffer_space ||
-        error == asio::error::no_memory)
-      return back_off_accept(listener);  // accepting again at once would spin on the same error
-    if (!error && descriptors_low(socket, listener.transport.name)) {
-      std::error_code ignored;
-      socket.close(ignored);
-    } else if (!error && connection_handler_) {
-      connection_handler_(std::move(socket), listener.transport);
-    } else if (!error) {
-      std::error_code ignored;
-      const auto peer = socket.remote_endpoint(ignored);
-      log_reject(listener.transport.name, peer_text(peer), "sessions_unavailable");
-      metrics_.rejects("sessions_unavailable").inc();
-      socket.close(ignored);
-    }
-    do_accept(listener);
-  });
-}
-
-// Descriptors are handed out lowest first: one this high means at most the reserve is free. The
-// limit is read each time: an operator may raise it on a running server (prlimit).
-bool Server::descriptors_low(asio::ip::tcp::socket& socket, std::string_view transport) {
-  rlimit limit{};
-  if (::getrlimit(RLIMIT_NOFILE, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return false;
-  const long descriptor_limit = static_cast<long>(limit.rlim_cur);
-  if (descriptor_limit == 0 || socket.native_handle() < descriptor_limit - kReserveDescriptors) return false;
-  metrics_.rejects("descriptors_low").inc();
-  log_limited(spdlog::level::warn, "descriptors_low", "",
-              "reject transport={} reason=descriptors_low: descriptor {} of {} (RLIMIT_NOFILE) would leave fewer than {} "
-              "free; raise the limit (ulimit -n) or lower --max-clients",
-              transport, socket.native_handle(), descriptor_limit, kReserveDescriptors);
-  return true;
-}
-
-void Server::back_off_accept(Listener& listener) {
-  metrics_.rejects("descriptors_exhausted").inc();
-  log_limited(spdlog::level::warn, "descriptors_exhausted", "",
-              "accept failed: no descriptors or buffers left; pausing accepts for 100 ms (raise ulimit -n)");
-  listener.backoff.expires_after(std::chrono::milliseconds(100));
-  listener.backoff.async_wait([this, &listener](std::error_code error) {
-    if (!error && listener.acceptor.is_open()) do_accept(listener);
   });
 }
 

@@ -16,6 +16,18 @@
 
 namespace ocean::server {
 
+// How a log line names a peer: HOST:PORT, an IPv6 host in brackets.
+std::string peer_text(const auto& endpoint) {
+  const auto address = endpoint.address();
+  std::string text;  // appended piecewise: g++ 12 warns falsely (-Wrestrict) on "[" + std::string
+  if (address.is_v6()) text += '[';
+  text += address.to_string();
+  if (address.is_v6()) text += ']';
+  text += ':';
+  text += std::to_string(endpoint.port());
+  return text;
+}
+
 // Sets the level from "trace".."off"; false (level unchanged) for an unknown name.
 bool set_log_level(std::string_view level);
 

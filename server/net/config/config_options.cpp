@@ -1,6 +1,7 @@
 #include "config_options.hpp"
 
 #include "epoch.hpp"
+#include "option_values.hpp"
 #include "profile.hpp"
 #include "quoted.hpp"
 #include "scene_names.hpp"
@@ -16,86 +17,6 @@
 namespace ocean::server {
 namespace {
 
-template <typename Int>
-std::string parse_integer(std::string_view text, Int& out) {
-  Int value{};
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec == std::errc::result_out_of_range)
-    return quoted(text) + " is out of range for an integer option";
-  if (ec != std::errc() || end != text.data() + text.size()) return quoted(text) + " is not an integer";
-  out = value;
-  return {};
-}
-
-// Any unsigned 64-bit value, decimal or 0x hex: TOML integers stop at 2^63 - 1, so larger seeds
-// come as strings.
-std::string parse_seed(std::string_view text, std::uint64_t& out) {
-  const bool hex = text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
-  const std::string_view digits = hex ? text.substr(2) : text;
-  std::uint64_t value = 0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value, hex ? 16 : 10);
-  if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty())
-    return quoted(text) + " is not an unsigned 64-bit integer (0..18446744073709551615, decimal or 0x hex)";
-  out = value;
-  return {};
-}
-
-std::string parse_number(std::string_view text, double& out) {
-  double value = 0.0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size()) return quoted(text) + " is not a number";
-  if (!std::isfinite(value)) return quoted(text) + " must be a finite number";
-  out = value;
-  return {};
-}
-
-std::string show_number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-std::string trim(std::string text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return text.substr(first, last - first + 1);
-}
-
-// Reads a whole small file; false when it cannot be opened.
-bool read_file(const std::string& path, std::string& contents) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  contents = buffer.str();
-  return static_cast<bool>(in) || in.eof();
-}
-
-std::string apply_address(std::optional<ListenAddress>& target, std::string_view value, bool allow_off) {
-  if (allow_off && value == "off") {
-    target.reset();
-    return {};
-  }
-  std::string error;
-  target = parse_listen_address(value, error);
-  return error;
-}
-
-std::string show_optional_address(const std::optional<ListenAddress>& address, const char* absent) {
-  return address ? address->to_string() : absent;
-}
-
-// Sets target from one of the names in the model's table (scene_names.hpp).
-template <typename Kind>
-std::string apply_name(Kind& target, std::string_view value, std::optional<Kind> (*from_name)(std::string_view),
-                       std::vector<std::string> (*names)()) {
-  const std::optional<Kind> kind = from_name(value);
-  if (!kind) return quoted(value) + " is not one of " + model::join_names(names());
-  target = *kind;
-  return {};
-}
-
 // The value names --help shows: "phillips|jonswap" and "cos2s|donelan-banner|hasselmann".
 const std::string kSpectrumChoices = model::join_names(model::spectrum_names(), "|", "|");
 const std::string kSpreadingChoices = model::join_names(model::spreading_names(), "|", "|");
@@ -107,24 +28,6 @@ std::string profiles_help() {
   return "comma-separated stream profiles to offer (" + names + "); each grid <= --size";
 }
 const std::string kProfilesHelp = profiles_help();
-
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const std::string& item : items) out += (out.empty() ? "" : ",") + item;
-  return out;
-}
-
-// "a, b,,c" -> {"a", "b", "c"}: items trimmed, empty ones left out.
-std::vector<std::string> split_list(std::string_view v) {
-  std::vector<std::string> items;
-  std::size_t start = 0;
-  while (start <= v.size()) {
-    const std::size_t comma = std::min(v.find(',', start), v.size());
-    if (std::string item = trim(std::string(v.substr(start, comma - start))); !item.empty()) items.push_back(item);
-    start = comma + 1;
-  }
-  return items;
-}
 
 std::string hex_digit_error(std::string_view path) {
   return "file '" + std::string(path) + "' must hold exactly 64 hex digits (a 32-byte key)";
