@@ -1,6 +1,7 @@
 #version 100
-// Ocean surface fragment stage: per-fragment Phong from the streamed slopes, a Schlick-weighted
-// sky reflection, a sun highlight, deep-water colour with a little scatter, foam and distance fog.
+// Ocean surface fragment stage: per-fragment light from the streamed slopes - a Schlick-weighted
+// sky reflection, the sun's glitter, deep-water colour with a little scatter and the sun's light
+// through thin crests - then foam and distance fog.
 #ifdef GL_FRAGMENT_PRECISION_HIGH
 precision highp float;
 #else
@@ -12,7 +13,9 @@ uniform vec3 u_sun_dir;        // unit, toward the sun
 uniform vec3 u_sun_colour;
 uniform vec3 u_deep_colour;
 uniform vec3 u_scatter_colour;
-uniform float u_shininess;
+uniform float u_shininess;     // the resolved facets' sharp highlight
+uniform vec2 u_glitter;        // the unresolved ripples' broad lobe: its exponent and weight
+uniform vec3 u_glow;           // the sun's light through a crest (its colour after the water's absorption)
 uniform vec3 u_foam_colour;
 uniform vec4 u_overcast;       // as in sky.frag.glsl: the reflection shows the same sky
 uniform float u_foam_only;     // 1: the foam term alone (RendererDesc::foam_only)
@@ -67,8 +70,16 @@ void main() {
   float lit = max(dot(n, u_sun_dir), 0.0);
   float crest = clamp(0.35 + 0.25 * v_height, 0.0, 1.0);
   vec3 water = u_deep_colour * (0.4 + 0.6 * lit) + u_scatter_colour * crest * (1.0 - facing);
+  // A crest standing between the eye and a low sun lets its light through where it is thin: a
+  // green-blue glow (the water has taken the red), the more the more the eye looks into the sun.
+  float into_sun = max(dot(view, u_sun_dir), 0.0);
+  into_sun *= into_sun;
+  water += u_glow * (into_sun * into_sun) * clamp(0.4 * v_height, 0.0, 1.0);
   vec3 colour = mix(water, sky, fresnel);
-  colour += u_sun_colour * pow(max(dot(r, u_sun_dir), 0.0), u_shininess) * (0.3 + fresnel);
+  // The glitter: the facets the grid resolves flash sharply; the ripples it cannot resolve (the
+  // rougher, the more wind) spread the sun into a broad path toward it.
+  float toward = log2(max(dot(r, u_sun_dir), 1e-4));  // both lobes' powers from one logarithm
+  colour += u_sun_colour * (exp2(u_shininess * toward) + u_glitter.y * exp2(u_glitter.x * toward)) * (0.3 + fresnel);
   float foam = max(laced(v_foam.x), v_foam.y);  // a hull's churn has its own grain
   colour = mix(colour, u_foam_colour * (0.8 + 0.2 * lit), foam);
 

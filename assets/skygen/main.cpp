@@ -28,9 +28,8 @@ int main(int argc, char** argv) {
   app.add_option("--cloud-cover", cloud_cover, "0 clear .. 1 overcast")->check(CLI::Range(0.0f, 1.0f));
   CLI11_PARSE(app, argc, argv);
 
-  ocean::assets::SkyModel sky;
-  const float az = sun_azimuth_deg * 3.14159265f / 180.0f, el = sun_elevation_deg * 3.14159265f / 180.0f;
-  sky.sun_direction = {std::sin(az) * std::cos(el), std::sin(el), -std::cos(az) * std::cos(el)};
+  ocean::assets::SkyModel sky =
+      ocean::assets::sky_for_sun(sun_azimuth_deg * 3.14159265f / 180.0f, sun_elevation_deg * 3.14159265f / 180.0f);
   sky.cloud_cover = cloud_cover;
 
   std::error_code ec;

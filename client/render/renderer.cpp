@@ -17,6 +17,7 @@
 #include "client/render/shader_sources.hpp"
 #include "client/render/sky_faces.hpp"
 #include "client/render/sky_texture.hpp"
+#include "client/render/sun_light.hpp"
 #include "client/render/tile_selection.hpp"
 
 namespace ocean::render {
@@ -48,7 +49,7 @@ bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake
   program.u = {loc("u_clip_from_rel"), loc("u_tile_offset"), loc("u_eye_height"), loc("u_choppiness"),
                loc("u_detail_fade"), loc("u_far_roughness"), loc("u_foam"), loc("u_sky"),
                loc("u_sun_dir"), loc("u_sun_colour"), loc("u_deep_colour"), loc("u_scatter_colour"),
-               loc("u_shininess"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast"),
+               loc("u_shininess"), loc("u_glitter"), loc("u_glow"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast"),
                loc("u_coarse_shape"), loc("u_coarse_chop"), loc("u_coarse_scale"), loc("u_coarse_origin"),
                loc("u_wake_shape"), loc("u_wake_chop"), loc("u_wake_scale"), loc("u_wake_origin"),
                loc("u_trail[0]"), loc("u_trails"), loc("u_eye_xz"), loc("u_foam_only"), loc("u_lace")};
@@ -72,9 +73,9 @@ bool Renderer::init(const RendererDesc& in) {
   // Foam where the surface compresses, from J 0.75, full at 0.55, until a frame's whitecaps are
   // set (WhitecapCover: the threshold that covers the share observed at the wind).
   desc_.foam_threshold = or_default(in.foam_threshold, 0.75f);
-  desc_.sun_colour = or_default(in.sun_colour, glm::vec3(2.6f, 2.35f, 1.9f));
   desc_.deep_colour = or_default(in.deep_colour, glm::vec3(0.01f, 0.06f, 0.10f));
   desc_.scatter_colour = or_default(in.scatter_colour, glm::vec3(0.02f, 0.12f, 0.11f));
+  desc_.glow_colour = or_default(in.glow_colour, glm::vec3(0.05f, 0.24f, 0.20f));
   desc_.shininess = or_default(in.shininess, 600.0f);
   desc_.fog_density = or_default(in.fog_density, 3.2f / desc_.view_distance_m);
   if (desc_.view_distance_m < 0.0f || desc_.lod0_distance_m < 0.0f || desc_.max_lod_level < 0)
@@ -97,10 +98,23 @@ bool Renderer::init(const RendererDesc& in) {
     error_.clear();
   }
   // Each with the foam's lace too (a choppy stream's whitecaps): a fragment noise that costs
-  // llvmpipe about a sixth of a frame, so a calm stream's program goes without it.
-  for (int i = 0; i < 4; ++i)
-    if (programs_[i].id && !build_ocean_program(programs_[i + 4], i & 1, i & 2, true))
-      std::fprintf(stderr, "ocean renderer: warning: the foam is drawn without its lace (%s)\n", error_.c_str());
+  // llvmpipe about a sixth of a frame, so a calm stream's program goes without it. Its hash needs
+  // highp: at mediump it would draw stripes, so such a GL draws the foam as smooth patches.
+  GLint range[2] = {0, 0}, precision = 0;
+  glGetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
+  lace_unsupported_ = in.without_foam_lace ? "RendererDesc::without_foam_lace"
+                      : precision == 0     ? "this GL has no highp float in fragment shaders"
+                                           : "";
+  for (int i = 0; i < 4 && lace_unsupported_.empty(); ++i)
+    if (programs_[i].id && !build_ocean_program(programs_[i + 4], i & 1, i & 2, true)) lace_unsupported_ = error_;
+  if (!lace_unsupported_.empty()) {
+    for (int i = 4; i < 8; ++i) {  // every variant laced or none: never a mix by GL
+      if (programs_[i].id) glDeleteProgram(programs_[i].id);
+      programs_[i] = {};
+    }
+    std::fprintf(stderr, "ocean renderer: warning: the foam is drawn without its lace, as smooth patches (%s)\n",
+                 lace_unsupported_.c_str());
+  }
   error_.clear();
   namespace src = shader_source;
   sky_program_ = build_program("sky", src::sky_vert, src::sky_frag, {{0, "a_ndc"}}, error_);
@@ -114,6 +128,7 @@ bool Renderer::init(const RendererDesc& in) {
   if (!load_sky(in.sky_dir, faces, error_)) return false;
   if (desc_.sun_direction == glm::vec3(0.0f)) desc_.sun_direction = estimate_sun_direction(faces);
   desc_.sun_direction = glm::normalize(desc_.sun_direction);
+  desc_.sun_colour = or_default(in.sun_colour, sunlight(std::asin(std::clamp(desc_.sun_direction.y, -1.0f, 1.0f))));
   const auto ring = horizon_ring(faces, 0.01f);  // matches the sky shader's below-horizon colour
   horizon_ring_.assign(ring.begin(), ring.end());
   set_overcast(overcast_);  // the haze the ocean fades into, under the weather set so far
@@ -252,80 +267,6 @@ TileSelection Renderer::visible_tiles(const Camera& camera, const glm::mat4& cli
   sel.chunks_per_side = chunks_per_side_;
   sel.far_block_tiles = far_span_;
   return select_tiles(sel);
-}
-
-glm::vec3 Renderer::horizon_colour() const {
-  glm::vec3 sum(0.0f);
-  for (const glm::vec3& c : weathered_ring_) sum += c;
-  return weathered_ring_.empty() ? glm::vec3(0.6f) : sum / static_cast<float>(weathered_ring_.size());
-}
-
-void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_from_rel) {
-  const OceanProgram& program = ocean_program();
-  const OceanUniforms& u = program.u;
-  glUseProgram(program.id);
-  glUniformMatrix4fv(u.clip_from_rel, 1, GL_FALSE, glm::value_ptr(clip_from_rel));
-  glUniform1f(u.eye_height, static_cast<float>(camera.position.y));
-  glUniform1f(u.choppiness, desc_.choppiness);
-  glUniform1f(u.detail_fade, 2.0f / desc_.view_distance_m);
-  glUniform1f(u.far_roughness, 0.35f);
-  glUniform4f(u.foam, whitecaps_ ? whitecaps_->threshold : desc_.foam_threshold, 1.0f / (whitecaps_ ? whitecaps_->band : kFoamBand),
-              whitecaps_ ? whitecaps_->cover : 0.0f, whitecaps_ ? 1.0f : 0.0f);
-  glUniform1f(u.foam_only, desc_.foam_only ? 1.0f : 0.0f);
-  if (whitecaps_) glUniform2f(u.lace, whitecaps_->wind_x, whitecaps_->wind_z);
-  glUniform1i(u.sky, 0);
-  glUniform3fv(u.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
-  // Under a cloud deck the sun barely shows and the water turns a darker grey-green.
-  const glm::vec3 sun = sun_colour();
-  const glm::vec3 deep = desc_.deep_colour * (1.0f - 0.3f * overcast_);
-  const glm::vec3 scatter = desc_.scatter_colour * (1.0f - 0.3f * overcast_);
-  glUniform3fv(u.sun_colour, 1, glm::value_ptr(sun));
-  glUniform3fv(u.deep_colour, 1, glm::value_ptr(deep));
-  glUniform3fv(u.scatter_colour, 1, glm::value_ptr(scatter));
-  glUniform4f(u.overcast, kOvercastDeck.r, kOvercastDeck.g, kOvercastDeck.b, overcast_);
-  glUniform1f(u.shininess, desc_.shininess);
-  glUniform2fv(u.fog, 1, glm::value_ptr(fog()));
-  glUniform3f(u.foam_colour, 0.92f, 0.95f, 0.97f);
-  glUniform3fv(u.horizon, static_cast<GLsizei>(weathered_ring_.size()), glm::value_ptr(weathered_ring_[0]));
-  if (coarse_.active()) {
-    coarse_.bind(GL_TEXTURE1);
-    glUniform1i(u.coarse_shape, 1);
-    glUniform1i(u.coarse_chop, 2);
-    glUniform3f(u.coarse_scale, 1.0f / coarse_.patch_x(), 1.0f / coarse_.patch_z(), static_cast<float>(coarse_.n()));
-  }
-  set_trail_uniforms(camera);
-  if (wake_.active()) {
-    wake_.bind(GL_TEXTURE3);
-    glUniform1i(u.wake_shape, 3);
-    glUniform1i(u.wake_chop, 4);
-    glUniform3f(u.wake_scale, 1.0f / wake_.patch_x(), 1.0f / wake_.patch_z(), static_cast<float>(wake_.n()));
-  }
-}
-
-void Renderer::set_trail_uniforms(const Camera& camera) {
-  const OceanUniforms& u = ocean_program().u;
-  // The nearest kMaxTrails of those with foam, by their squared distance from the eye.
-  std::array<std::pair<double, const FoamTrail*>, 32> near{};  // a fleet has at most 32 tracks (PROTOCOL.md 8)
-  std::size_t count = 0;
-  for (const FoamTrail& t : trails_)
-    if (t.strength > 0.0f && t.length_m > 0.0f && count < near.size()) {
-      const double dx = t.stern_x_m - camera.position.x, dz = t.stern_z_m - camera.position.z;
-      near[count++] = {dx * dx + dz * dz, &t};
-    }
-  const std::size_t kept = std::min(count, kMaxTrails);
-  std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(kept), near.begin() + static_cast<std::ptrdiff_t>(count),
-                    [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::array<glm::vec4, 2 * kMaxTrails> packed{};
-  for (std::size_t i = 0; i < kept; ++i) {
-    const FoamTrail& t = *near[i].second;
-    packed[2 * i] = {static_cast<float>(t.stern_x_m - camera.position.x), static_cast<float>(t.stern_z_m - camera.position.z),
-                     -t.dir_x * t.length_m, -t.dir_z * t.length_m};
-    packed[2 * i + 1] = {t.half_width_m, t.spread, t.strength, 0.0f};
-  }
-  glUniform4fv(u.trail, static_cast<GLsizei>(packed.size()), glm::value_ptr(packed[0]));
-  glUniform1f(u.trails, static_cast<float>(kept));
-  glUniform2f(u.eye_xz, static_cast<float>(std::fmod(camera.position.x, 1024.0)),
-              static_cast<float>(std::fmod(camera.position.z, 1024.0)));
 }
 
 void Renderer::draw_tiles(const TileSelection& tiles) {

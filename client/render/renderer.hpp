@@ -33,9 +33,10 @@ struct RendererDesc {
   float choppiness = 0.0f;            // 1: scale applied to the streamed displacement
   float foam_threshold = 0.0f;        // 0.75: foam where the Jacobian is below this, full 0.2 lower (without set_whitecaps)
   glm::vec3 sun_direction{0.0f};      // estimated from the sky's brightest spot
-  glm::vec3 sun_colour{0.0f};         // (2.6, 2.35, 1.9): > 1 so the glitter saturates
+  glm::vec3 sun_colour{0.0f};         // the sunlight at the sun's elevation (sun_light.hpp)
   glm::vec3 deep_colour{0.0f};        // (0.01, 0.06, 0.10)
   glm::vec3 scatter_colour{0.0f};     // (0.02, 0.12, 0.11)
+  glm::vec3 glow_colour{0.0f};        // (0.05, 0.24, 0.20): what of the sunlight a thin crest lets through
   float shininess = 0.0f;             // 600: Phong exponent of the sun highlight
   float fog_density = 0.0f;           // 3.2 / view distance, per metre; the fog is full at the view distance
   // Leave the coarse cascade undrawn even where the GL could: what a GL without vertex texture
@@ -44,6 +45,9 @@ struct RendererDesc {
   // Draw the water's foam term alone: red the foam (0..1), green 1 on water, black where no water
   // is (no sky): what a test measures the foam's share of the water with.
   bool foam_only = false;
+  // Draw the foam without its lace (smooth patches): what a GL without highp fragment floats shows
+  // (tests).
+  bool without_foam_lace = false;
 };
 
 // One frame of samples, each n x n floats, row-major with rows along +z (index row * n + col).
@@ -95,6 +99,8 @@ class Renderer {
   bool coarse_cascade_supported() const { return programs_[1].id != 0; }
   const std::string& coarse_cascade_unsupported() const { return coarse_unsupported_; }  // why not
   bool set_coarse_grid(int n, float patch_x_m, float patch_z_m);
+  // Why the foam is drawn without its lace (empty where it has it); init says so on stderr too.
+  const std::string& foam_lace_unsupported() const { return lace_unsupported_; }
   bool has_coarse_grid() const { return coarse_.active(); }
   bool upload_coarse_frame(const FrameStreams& frame);
 
@@ -109,6 +115,8 @@ class Renderer {
   // sun and greys the sky, its reflection and the water.
   void set_overcast(float overcast);
   float overcast() const { return overcast_; }
+  // The wind over the sea (m/s): the rougher the sea, the broader the sun's glitter.
+  void set_wind_speed(float wind_mps) { wind_mps_ = wind_mps; }
   // The sun's colour under the weather: a cloud deck lets a tenth of it through.
   glm::vec3 sun_colour() const { return desc_.sun_colour * (1.0f - 0.9f * overcast_); }
   // The distance fog of a point d metres away horizontally: min((1 - exp(-x d)) y, 1), normalised
@@ -158,7 +166,7 @@ class Renderer {
 
   struct OceanUniforms {
     GLint clip_from_rel, tile_offset, eye_height, choppiness, detail_fade, far_roughness, foam;
-    GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, fog, foam_colour, horizon, overcast;
+    GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, glitter, glow, fog, foam_colour, horizon, overcast;
     GLint coarse_shape, coarse_chop, coarse_scale, coarse_origin;  // -1 in the plain program
     GLint wake_shape, wake_chop, wake_scale, wake_origin;          // -1 without the wake
     GLint trail, trails, eye_xz, foam_only, lace;
@@ -181,6 +189,7 @@ class Renderer {
 
   OceanProgram programs_[8];  // by ocean_program()'s index; all but the plain one optional
   std::string coarse_unsupported_;                // why not, where it does not
+  std::string lace_unsupported_;                  // why the foam has no lace, where it has none
   CoarseCascade coarse_;
   CoarseCascade wake_;  // the vessels' wake lattice, the same two textures
   float wake_origin_x_ = 0.0f, wake_origin_z_ = 0.0f;
@@ -210,6 +219,7 @@ class Renderer {
 
   GLint sky_u_rel_from_clip_ = -1, sky_u_sky_ = -1, sky_u_overcast_ = -1;
   float overcast_ = 0.0f;
+  float wind_mps_ = 0.0f;
   std::vector<FoamTrail> trails_;
   std::optional<WhitecapShading> whitecaps_;
   std::vector<glm::vec3> weathered_ring_;

@@ -15,6 +15,12 @@ glm::vec3 weathered(glm::vec3 c, float overcast) {
   return glm::mix(c, kOvercastDeck * (0.6f + 0.4f * light), overcast);
 }
 
+GlitterLobe glitter_for_wind(double wind_mps, float sharp_exponent) {
+  const double unresolved = 0.5 * (0.003 + 5.12e-3 * std::max(0.0, wind_mps));
+  const float exponent = std::min(sharp_exponent, static_cast<float>(2.0 / unresolved - 2.0));
+  return {exponent, (exponent + 1.0f) / (sharp_exponent + 1.0f)};
+}
+
 float WeatherEase::update(double wind_mps, double dt_s) {
   const float target = overcast_for_wind(wind_mps);
   if (!started_) {

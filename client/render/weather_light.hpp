@@ -19,6 +19,17 @@ float overcast_for_wind(double wind_mps);
 // (weathered() in sky.frag.glsl and ocean.frag.glsl), for the colours the CPU keeps.
 glm::vec3 weathered(glm::vec3 c, float overcast);
 
+// The sun's glitter off ripples the grid does not resolve: a Phong lobe on the resolved normal's
+// reflection whose width is their mean square slope, half of Cox and Munk's (1954) clean-surface
+// 0.003 + 5.12e-3 U (the other half the grid resolves), and whose weight keeps its energy that of
+// a sharp lobe of `sharp_exponent` (a wider lobe is dimmer at its peak): a calm's highlight stays a
+// point, a gale's sun spreads into a long path of light.
+struct GlitterLobe {
+  float exponent = 0.0f;
+  float weight = 0.0f;
+};
+GlitterLobe glitter_for_wind(double wind_mps, float sharp_exponent);
+
 // Eases the shown overcast toward the wind's, time constant 3 s; the first value is taken at once.
 class WeatherEase {
  public:

@@ -39,6 +39,7 @@ bool StreamView::update(NetworkThread& net, double now) {
     shape_.vessels_serial = shape.vessels_serial;
   }
   scene_.renderer.set_overcast(weather_.update(shape.wind_speed_mps, now - last_weather_s_));
+  scene_.renderer.set_wind_speed(static_cast<float>(shape.wind_speed_mps));
   whitecaps_.set_wind({shape.wind_speed_mps, shape.wind_dir_deg});
   last_weather_s_ = now;
   const double t0 = thread_cpu_ms();

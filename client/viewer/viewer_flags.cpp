@@ -12,6 +12,7 @@ render::RendererDesc CommonViewerOptions::renderer_desc() const {
   desc.view_distance_m = view_distance_m;
   desc.lod0_distance_m = lod0_distance_m;
   desc.foam_only = foam_only;
+  desc.sky_dir = sky_dir.empty() ? nullptr : sky_dir.c_str();
   return desc;
 }
 
@@ -28,6 +29,9 @@ void add_output_flags(CLI::App& app, CommonViewerOptions& o, const OutputFlagsHe
   app.add_flag("--hud", o.hud, "draw the HUD in headless mode too");
   app.add_flag("--foam-only", o.foam_only,
                "draw the water's foam term alone (red: foam 0..1, green: water; no sky), to measure whitecap cover");
+  app.add_option("--sky", o.sky_dir,
+                 "folder with the sky's six faces (px.png .. nz.png, as ocean-skygen paints them): its sun lights the sea")
+      ->check(CLI::ExistingDirectory);
 }
 
 void add_camera_flags(CLI::App& app, CommonViewerOptions& o) {

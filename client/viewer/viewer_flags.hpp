@@ -23,6 +23,7 @@ struct CommonViewerOptions {
   bool json = false;
   bool hud = false;  // headless only; the window toggles it with H
   bool foam_only = false;
+  std::string sky_dir;  // empty: the built or installed sky (render::default_sky_dirs)
   float view_distance_m = 0.0f;
   float lod0_distance_m = 0.0f;
   float eye_height_m = 10.0f;

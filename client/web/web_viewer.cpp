@@ -229,8 +229,10 @@ void WebViewer::frame(double now_s, int width, int height) {
       ++uploads_;
     }
   }
-  if (session_ && session_->state() == client::ClientSession::State::streaming)
+  if (session_ && session_->state() == client::ClientSession::State::streaming) {
     renderer_.set_overcast(weather_.update(session_->scene().wind_speed_mps, dt));
+    renderer_.set_wind_speed(static_cast<float>(session_->scene().wind_speed_mps));
+  }
   in_gl([&] {
     renderer_.draw(camera_, width, height, now_s);
     hulls_in_view_ = hull_renderer_.draw(camera_, width, height, hulls_, render::hull_light(renderer_));

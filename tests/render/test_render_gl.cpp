@@ -1,10 +1,12 @@
 // One real frame through EGL (llvmpipe here and in CI): every shader compiles and links, and the
 // synthetic sea renders as "sky above, water below". No GL context is a failure, not a skip.
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <unistd.h>
 
 #include "client/render/channel_upload.hpp"
 #include "client/render/framebuffer_readback.hpp"
@@ -143,6 +145,20 @@ double period_correlation(const std::vector<std::uint8_t>& rgba, int width, int 
   return total / rows;
 }
 
+// A 160 x 90 picture of the sea from 40 m up at t = 10 s.
+std::vector<std::uint8_t> draw_from_40_m(render::Renderer& renderer, float pitch_rad) {
+  render::OffscreenTarget target;
+  std::string error;
+  REQUIRE(target.create(160, 90, error));
+  target.bind();
+  render::Camera camera;
+  camera.position = {0.3, 40.0, 0.7};
+  camera.pitch_rad = pitch_rad;
+  renderer.draw(camera, 160, 90, 10.0);
+  CHECK(glGetError() == GL_NO_ERROR);
+  return render::read_framebuffer_rgba(160, 90);
+}
+
 }  // namespace
 
 TEST_CASE("a coarse cascade hides the tile's period from 400 m up", "[cascade]") {
@@ -242,17 +258,58 @@ TEST_CASE("a GL that cannot draw the coarse cascade draws a cascaded stream's ti
     render::Whitecaps whitecaps;
     INFO(renderer.error());
     REQUIRE(render::upload_channels(renderer, channels, layout, whitecaps, 0.033));
-    render::OffscreenTarget target;
-    std::string error;
-    REQUIRE(target.create(160, 90, error));
-    target.bind();
-    render::Camera camera;
-    camera.position = {0.3, 40.0, 0.7};
-    camera.pitch_rad = -0.3f;
-    renderer.draw(camera, 160, 90, 10.0);
-    CHECK(glGetError() == GL_NO_ERROR);
-    const auto picture = render::read_framebuffer_rgba(160, 90);
+    const auto picture = draw_from_40_m(renderer, -0.3f);
     CHECK(region(picture, 60, 90, 160).luminance_variance > 1e-5);  // a sea, not a blank
+  }
+}
+
+TEST_CASE("a GL that cannot draw the foam's lace draws smooth foam, and says so on stderr", "[foam]") {
+  context();
+  // A 20 m/s storm's single tile, as a choppy stream carries it, and its whitecaps.
+  model::SceneParams storm;
+  storm.spectrum = model::SpectrumKind::jonswap;
+  storm.wind_speed_mps = 20.0;
+  storm.choppiness = 1.2;
+  storm.size_x = storm.size_z = 64;
+  storm.patch_x_m = storm.patch_z_m = 64.0;
+  sim::Frame f;
+  sim::Ocean(storm).evaluate(10.0, f, {true, true});
+  const client::FrameChannels channels{f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.jacobian};
+  render::StreamLayout layout;
+  layout.tile = {64, 64.0f, 64.0f};
+  for (const bool without : {true, false}) {
+    INFO("without the lace: " << without);
+    render::RendererDesc desc;
+    desc.without_foam_lace = without;
+    desc.foam_only = true;
+    render::Renderer renderer;
+    // What init writes on stderr, from a file put in its place.
+    std::fflush(stderr);
+    const int saved = dup(2);
+    FILE* captured = std::tmpfile();
+    REQUIRE(captured);
+    dup2(fileno(captured), 2);
+    const bool ok = renderer.init(desc);
+    std::fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    std::string said(4096, '\0');
+    std::rewind(captured);
+    said.resize(std::fread(said.data(), 1, said.size(), captured));
+    std::fclose(captured);
+    REQUIRE(ok);
+    const std::string line = "the foam is drawn without its lace, as smooth patches (RendererDesc::without_foam_lace)";
+    CHECK((said.find(line) != std::string::npos) == without);
+    CHECK((renderer.foam_lace_unsupported() == "RendererDesc::without_foam_lace") == without);
+    std::string warning;
+    REQUIRE(render::apply_layout(renderer, layout, warning));
+    render::Whitecaps whitecaps;
+    whitecaps.set_wind({20.0, 0.0});
+    for (int i = 0; i < 10; ++i) REQUIRE(render::upload_channels(renderer, channels, layout, whitecaps, 0.033));
+    const auto picture = draw_from_40_m(renderer, -0.6f);
+    int foamed = 0;
+    for (std::size_t i = 0; i < picture.size(); i += 4) foamed += picture[i] > 64 && picture[i + 1] > 128;
+    CHECK(foamed > 20);  // whitecaps either way, on the water
   }
 }
 

@@ -1,5 +1,6 @@
 // The generated sky: the sun disc is the one brightest spot (the renderer finds the sun by it),
 // the zenith is bluer and darker than the horizon.
+#include <algorithm>
 #include <cmath>
 
 #include <catch2/catch.hpp>
@@ -48,4 +49,26 @@ TEST_CASE("value noise stays in [0, 1], is continuous and depends on the seed") 
     differs = differs || std::abs(v - value_noise(x, 0.3f, 2)) > 0.1f;
   }
   CHECK(differs);
+}
+
+TEST_CASE("a sun at the default 12 degrees paints the default sky; a low one reddens round it", "[sun]") {
+  const float degree = 3.14159265f / 180.0f;
+  const SkyModel noon_ish = sky_for_sun(20.0f * degree, 12.0f * degree);
+  const SkyModel plain;
+  CHECK(noon_ish.sunset == 0.0f);
+  CHECK(noon_ish.glow_colour == plain.glow_colour);
+  CHECK(noon_ish.glow_strength == plain.glow_strength);
+  CHECK(glm::length(noon_ish.sun_direction - plain.sun_direction) < 0.01f);
+
+  SkyModel low = sky_for_sun(0.0f, 3.0f * degree);
+  SkyModel high = sky_for_sun(0.0f, 12.0f * degree);
+  low.cloud_cover = high.cloud_cover = 0.0f;
+  CHECK(low.sunset > 0.5f);
+  // Just above the horizon, 10 degrees to the side of the sun: warmer under the low sun.
+  const glm::vec3 beside = glm::normalize(glm::vec3(std::sin(10.0f * degree), 0.05f, -std::cos(10.0f * degree)));
+  const glm::vec3 a = sky_colour(low, beside), b = sky_colour(high, beside);
+  CHECK(a.b / a.r < b.b / b.r - 0.2f);
+  // The disc is still the one brightest spot, so the renderer finds the low sun.
+  CHECK(glm::all(glm::equal(sky_colour(low, low.sun_direction), glm::vec3(1.0f))));
+  CHECK(std::max({a.r, a.g, a.b}) < 0.95f);
 }

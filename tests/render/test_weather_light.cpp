@@ -32,3 +32,20 @@ TEST_CASE("a weather front eases in over seconds", "[weather]") {
   for (int i = 0; i < 30; ++i) ease.update(20.0, 1.0);
   CHECK(ease.update(20.0, 1.0) == Approx(0.85f).margin(1e-3));
 }
+
+TEST_CASE("the glitter spreads with the wind and keeps its energy", "[weather]") {
+  const float sharp = 600.0f;
+  const GlitterLobe calm = glitter_for_wind(0.0, sharp);
+  CHECK(calm.exponent == sharp);  // no wind: the sharp highlight alone (the lobe is the same)
+  CHECK(calm.weight == Approx(1.0f));
+  float previous = sharp;
+  for (double wind = 2.0; wind <= 30.0; wind += 2.0) {
+    const GlitterLobe lobe = glitter_for_wind(wind, sharp);
+    REQUIRE(lobe.exponent < previous);
+    REQUIRE(lobe.weight == Approx((lobe.exponent + 1.0f) / (sharp + 1.0f)));
+    previous = lobe.exponent;
+  }
+  // Half of Cox and Munk's mean square slope at 10 and 20 m/s: 0.0271 and 0.0527.
+  CHECK(glitter_for_wind(10.0, sharp).exponent == Approx(2.0 / 0.02710 - 2.0).epsilon(1e-3));
+  CHECK(glitter_for_wind(20.0, sharp).exponent == Approx(2.0 / 0.05270 - 2.0).epsilon(1e-3));
+}
