@@ -20,20 +20,25 @@ uniform vec3 u_foam_colour;
 uniform vec4 u_overcast;       // as in sky.frag.glsl: the reflection shows the same sky
 uniform float u_foam_only;     // 1: the foam term alone (RendererDesc::foam_only)
 uniform vec2 u_lace;           // the wind's unit direction (x, z): the foam's lace is drawn out along it
+uniform vec2 u_lace_eye;       // the eye along and across the wind, modulo the lace's period (640, 160 m)
 
 varying vec3 v_rel;
 varying vec2 v_slope;
 varying vec2 v_foam;     // the sea's whitecaps, the hulls' churned water and wake crests
 varying float v_height;
 varying vec4 v_haze;
-varying vec2 v_world;
 
 vec3 weathered(vec3 c) {
   return mix(c, u_overcast.rgb * (0.6 + 0.4 * dot(c, vec3(0.3, 0.5, 0.2))), u_overcast.a);
 }
 
 #ifdef FOAM_LACE
-float hash(vec2 c) { return fract(sin(dot(c, vec2(12.9898, 78.233))) * 43758.5453); }
+// Periodic over 256 lattice cells, so the lace repeats every 640 m along the wind and 160 m across
+// (its 0.4 and 1.6 cells a metre): the eye's offset taken modulo that never makes it jump.
+float hash(vec2 c) {
+  c = mod(c, 256.0);
+  return fract(sin(dot(c, vec2(12.9898, 78.233))) * 43758.5453);
+}
 
 float value_noise(vec2 p) {
   vec2 i = floor(p);
@@ -48,7 +53,7 @@ float value_noise(vec2 p) {
 // branch on a uniform, so a calm stream's program leaves it out.
 float laced(float foam) {
   if (foam <= 0.0 || foam >= 1.0) return foam;
-  vec2 q = vec2(dot(v_world, u_lace.xy), dot(v_world, vec2(-u_lace.y, u_lace.x)));
+  vec2 q = vec2(dot(v_rel.xz, u_lace.xy), dot(v_rel.xz, vec2(-u_lace.y, u_lace.x))) + u_lace_eye;
   float n = clamp((value_noise(q * vec2(0.4, 1.6)) - 0.5) * 2.5, -1.0, 1.0);
   return foam + n * min(foam, 1.0 - foam);
 }

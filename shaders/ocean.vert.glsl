@@ -58,7 +58,6 @@ varying vec2 v_slope;    // slopes, flattened with distance to keep far tiles fr
 varying vec2 v_foam;     // the sea's whitecaps, the hulls' churned water and wake crests
 varying float v_height;
 varying vec4 v_haze;     // horizon colour in this direction, fog amount
-varying vec2 v_world;    // world x, z modulo 1024 m: where the foam's texture is
 
 // The foam of the trails at a camera-relative point: white at the stern, fading and widening
 // behind it, broken into patches by a hash of the place (churned water is not uniform).
@@ -129,7 +128,6 @@ void main() {
                                    : clamp((u_foam.x - a_jacobian - folds) * u_foam.y, 0.0, 1.0);
   v_foam = vec2(mix(u_foam.z, whitecap, detail), max(wake_foam, trail_foam(xz)) * detail);
   v_height = height;
-  v_world = xz + u_eye_xz;
   // Fog per vertex: smooth over a triangle, and it keeps the fragment stage to one texture fetch.
   // Normalised to reach exactly 1 at the view distance, where the tiles end and the sky below
   // the horizon (drawn in the horizon colour) takes over without a visible edge.

@@ -52,7 +52,7 @@ bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake
                loc("u_shininess"), loc("u_glitter"), loc("u_glow"), loc("u_fog"), loc("u_foam_colour"), loc("u_horizon[0]"), loc("u_overcast"),
                loc("u_coarse_shape"), loc("u_coarse_chop"), loc("u_coarse_scale"), loc("u_coarse_origin"),
                loc("u_wake_shape"), loc("u_wake_chop"), loc("u_wake_scale"), loc("u_wake_origin"),
-               loc("u_trail[0]"), loc("u_trails"), loc("u_eye_xz"), loc("u_foam_only"), loc("u_lace")};
+               loc("u_trail[0]"), loc("u_trails"), loc("u_eye_xz"), loc("u_foam_only"), loc("u_lace"), loc("u_lace_eye")};
   return true;
 }
 

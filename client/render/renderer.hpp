@@ -169,7 +169,7 @@ class Renderer {
     GLint sky, sun_dir, sun_colour, deep_colour, scatter_colour, shininess, glitter, glow, fog, foam_colour, horizon, overcast;
     GLint coarse_shape, coarse_chop, coarse_scale, coarse_origin;  // -1 in the plain program
     GLint wake_shape, wake_chop, wake_scale, wake_origin;          // -1 without the wake
-    GLint trail, trails, eye_xz, foam_only, lace;
+    GLint trail, trails, eye_xz, foam_only, lace, lace_eye;
   };
   struct OceanProgram {
     GLuint id = 0;

@@ -30,7 +30,15 @@ void Renderer::set_ocean_uniforms(const Camera& camera, const glm::mat4& clip_fr
   glUniform4f(u.foam, whitecaps_ ? whitecaps_->threshold : desc_.foam_threshold, 1.0f / (whitecaps_ ? whitecaps_->band : kFoamBand),
               whitecaps_ ? whitecaps_->cover : 0.0f, whitecaps_ ? 1.0f : 0.0f);
   glUniform1f(u.foam_only, desc_.foam_only ? 1.0f : 0.0f);
-  if (whitecaps_) glUniform2f(u.lace, whitecaps_->wind_x, whitecaps_->wind_z);
+  if (whitecaps_) {
+    // The eye along and across the wind, modulo the lace's period there (ocean.frag.glsl: 256
+    // lattice cells at 0.4 and 1.6 cells a metre): the lace stays put however far the eye goes.
+    const double wx = whitecaps_->wind_x, wz = whitecaps_->wind_z;
+    const auto wrap = [](double v, double period) { return static_cast<float>(v - period * std::floor(v / period)); };
+    glUniform2f(u.lace, whitecaps_->wind_x, whitecaps_->wind_z);
+    glUniform2f(u.lace_eye, wrap(camera.position.x * wx + camera.position.z * wz, 640.0),
+                wrap(camera.position.z * wx - camera.position.x * wz, 160.0));
+  }
   glUniform1i(u.sky, 0);
   glUniform3fv(u.sun_dir, 1, glm::value_ptr(desc_.sun_direction));
   // Under a cloud deck the sun barely shows and the water turns a darker grey-green.

@@ -159,6 +159,25 @@ std::vector<std::uint8_t> draw_from_40_m(render::Renderer& renderer, float pitch
   return render::read_framebuffer_rgba(160, 90);
 }
 
+// A 20 m/s storm's single 64 m tile at t = 10 s, as a choppy stream carries it.
+client::FrameChannels storm_tile() {
+  model::SceneParams storm;
+  storm.spectrum = model::SpectrumKind::jonswap;
+  storm.wind_speed_mps = 20.0;
+  storm.choppiness = 1.2;
+  storm.size_x = storm.size_z = 64;
+  storm.patch_x_m = storm.patch_z_m = 64.0;
+  sim::Frame f;
+  sim::Ocean(storm).evaluate(10.0, f, {true, true});
+  return {f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.jacobian};
+}
+
+render::StreamLayout storm_layout() {
+  render::StreamLayout layout;
+  layout.tile = {64, 64.0f, 64.0f};
+  return layout;
+}
+
 }  // namespace
 
 TEST_CASE("a coarse cascade hides the tile's period from 400 m up", "[cascade]") {
@@ -265,18 +284,8 @@ TEST_CASE("a GL that cannot draw the coarse cascade draws a cascaded stream's ti
 
 TEST_CASE("a GL that cannot draw the foam's lace draws smooth foam, and says so on stderr", "[foam]") {
   context();
-  // A 20 m/s storm's single tile, as a choppy stream carries it, and its whitecaps.
-  model::SceneParams storm;
-  storm.spectrum = model::SpectrumKind::jonswap;
-  storm.wind_speed_mps = 20.0;
-  storm.choppiness = 1.2;
-  storm.size_x = storm.size_z = 64;
-  storm.patch_x_m = storm.patch_z_m = 64.0;
-  sim::Frame f;
-  sim::Ocean(storm).evaluate(10.0, f, {true, true});
-  const client::FrameChannels channels{f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.jacobian};
-  render::StreamLayout layout;
-  layout.tile = {64, 64.0f, 64.0f};
+  const client::FrameChannels channels = storm_tile();
+  const render::StreamLayout layout = storm_layout();
   for (const bool without : {true, false}) {
     INFO("without the lace: " << without);
     render::RendererDesc desc;
@@ -311,6 +320,44 @@ TEST_CASE("a GL that cannot draw the foam's lace draws smooth foam, and says so 
     for (std::size_t i = 0; i < picture.size(); i += 4) foamed += picture[i] > 64 && picture[i + 1] > 128;
     CHECK(foamed > 20);  // whitecaps either way, on the water
   }
+}
+
+TEST_CASE("the foam's lace stays put where the eye's coordinates wrap", "[foam]") {
+  context();
+  const client::FrameChannels channels = storm_tile();
+  render::RendererDesc desc;
+  desc.foam_only = true;
+  render::Renderer renderer;
+  REQUIRE(renderer.init(desc));
+  REQUIRE(renderer.foam_lace_unsupported().empty());
+  std::string warning;
+  REQUIRE(render::apply_layout(renderer, storm_layout(), warning));
+  render::Whitecaps whitecaps;
+  whitecaps.set_wind({20.0, 30.0});  // the lace drawn out across the world's axes
+  for (int i = 0; i < 10; ++i) REQUIRE(render::upload_channels(renderer, channels, storm_layout(), whitecaps, 0.033));
+  render::OffscreenTarget target;
+  std::string error;
+  REQUIRE(target.create(160, 90, error));
+  target.bind();
+  // The foam term from 20 m up, eyes 0.1 m apart along x: the mean change of a pixel.
+  const auto change = [&](double x) {
+    std::vector<std::uint8_t> pictures[2];
+    for (int k = 0; k < 2; ++k) {
+      render::Camera camera;
+      camera.position = {x + 0.1 * k, 20.0, 64.0 * 20 + 0.3};
+      camera.pitch_rad = -0.9f;
+      renderer.draw(camera, 160, 90, 10.0);
+      pictures[k] = render::read_framebuffer_rgba(160, 90);
+    }
+    double sum = 0.0;
+    for (std::size_t i = 0; i < pictures[0].size(); i += 4) sum += std::abs(pictures[0][i] - pictures[1][i]);
+    return sum / static_cast<double>(pictures[0].size() / 4);
+  };
+  // Across 1024 m, where the eye's offset in the vertex stage wraps, and where nothing wraps.
+  const double across_wrap = change(64.0 * 16 - 0.05), elsewhere = change(64.0 * 11 - 0.05);
+  INFO("mean change across the wrap " << across_wrap << ", elsewhere " << elsewhere);
+  CHECK(elsewhere > 0.0);  // the foam moved with the eye: the measure sees a move
+  CHECK(across_wrap < 2.0 * elsewhere + 0.5);
 }
 
 TEST_CASE("a headless EGL context with OpenGL ES 2 can be created") {
