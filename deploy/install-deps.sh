@@ -10,6 +10,7 @@ packages=(
   libstb-dev catch2
   libglfw3-dev libglm-dev libgles-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri
   xvfb xauth gnuplot-nox python3-numpy python3-yaml python3-jsonschema procps
+  nlohmann-json3-dev etcd-server
 )
 # The browser viewer (-DOCEAN_BUILD_WEB=ON) and its test in headless Chromium over WebDriver.
 # OCEAN_WEB=0 leaves them out (the server image's builder needs none of it).

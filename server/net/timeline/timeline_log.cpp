@@ -1,0 +1,107 @@
+#include "timeline_log.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <charconv>
+#include <cstdio>
+#include <random>
+#include <thread>
+
+namespace ocean::server {
+namespace {
+
+constexpr int kAppendAttempts = 16;  // each lost to a replica that appended first, then caught up
+
+// N from "<head><N as 20 digits>"; false for any other key.
+bool parse_index(const std::string& key, const std::string& head, std::uint64_t& index) {
+  if (key.size() != head.size() + 20 || key.compare(0, head.size(), head) != 0) return false;
+  const auto [end, ec] = std::from_chars(key.data() + head.size(), key.data() + key.size(), index);
+  return ec == std::errc() && end == key.data() + key.size();
+}
+
+}  // namespace
+
+std::optional<TimelineAddress> parse_timeline_url(std::string_view url, std::string& error) {
+  constexpr std::string_view scheme = "etcd://";
+  if (url.substr(0, scheme.size()) != scheme) {
+    error = "'" + std::string(url) + "' is not etcd://HOST:PORT/PREFIX";
+    return std::nullopt;
+  }
+  const std::string_view rest = url.substr(scheme.size());
+  const std::size_t slash = rest.find('/');
+  const std::string_view authority = rest.substr(0, slash);
+  TimelineAddress address;
+  address.prefix = slash == std::string_view::npos ? "" : std::string(rest.substr(slash));
+  while (!address.prefix.empty() && address.prefix.back() == '/') address.prefix.pop_back();
+  if (address.prefix.empty()) {
+    error = "'" + std::string(url) + "' names no key prefix (etcd://HOST:PORT/PREFIX, e.g. /ocean/harbour-1)";
+    return std::nullopt;
+  }
+  const std::size_t colon = authority.rfind(':');
+  address.store.host = std::string(authority.substr(0, colon));
+  if (colon != std::string_view::npos) {
+    const std::string_view port = authority.substr(colon + 1);
+    unsigned value = 0;
+    const auto [end, ec] = std::from_chars(port.data(), port.data() + port.size(), value);
+    if (ec != std::errc() || end != port.data() + port.size() || value == 0 || value > 65535) {
+      error = "'" + std::string(url) + "' has no port 1..65535 after its host";
+      return std::nullopt;
+    }
+    address.store.port = static_cast<std::uint16_t>(value);
+  }
+  if (address.store.host.empty()) {
+    error = "'" + std::string(url) + "' names no host";
+    return std::nullopt;
+  }
+  return address;
+}
+
+std::string TimelineLog::key(std::uint64_t index) const {
+  char digits[24];
+  std::snprintf(digits, sizeof digits, "%020llu", static_cast<unsigned long long>(index));
+  return address_.prefix + "/log/" + digits;
+}
+
+TimelineLog::Appended TimelineLog::append(const std::string& bytes) {
+  for (int attempt = 0; attempt < kAppendAttempts; ++attempt) {
+    const EtcdResult put = store_.put_if_absent(key(next_), bytes);
+    if (!put.error.empty()) return {put.error, 0};
+    if (put.succeeded) return {"", next_++};
+    // Taken: another replica appended there. Find the log's last entry and try after it.
+    const EtcdResult last = store_.range(key(next_), address_.prefix + "/log0", 1, true);
+    if (!last.error.empty()) return {last.error, 0};
+    const std::string head = address_.prefix + "/log/";
+    std::uint64_t index = 0;
+    if (last.kvs.empty() || !parse_index(last.kvs.front().key, head, index)) {
+      return {"the log at " + address_.prefix + " holds a key that is not an entry's", 0};
+    }
+    next_ = index + 1;
+    // A few milliseconds at random before trying again: replicas that keep colliding fall out of step.
+    thread_local std::minstd_rand jitter{std::random_device{}()};
+    std::this_thread::sleep_for(std::chrono::microseconds(1000 + jitter() % (4000u << std::min(attempt, 3))));
+  }
+  return {"the log at " + address_.prefix + " kept growing under " + std::to_string(kAppendAttempts) +
+              " attempts to append (too many replicas appending at once)",
+          0};
+}
+
+TimelineLog::Read TimelineLog::read_from(std::uint64_t from, std::size_t max) const {
+  Read read;
+  const EtcdResult range = store_.range(key(from), address_.prefix + "/log0", static_cast<std::int64_t>(max));
+  if (!range.error.empty()) {
+    read.error = range.error;
+    return read;
+  }
+  const std::string head = address_.prefix + "/log/";
+  for (const EtcdKeyValue& kv : range.kvs) {
+    std::uint64_t index = 0;
+    if (!parse_index(kv.key, head, index)) {
+      read.error = "the log at " + address_.prefix + " holds a key that is not an entry's: " + kv.key;
+      return read;
+    }
+    read.entries.push_back({index, kv.value});
+  }
+  return read;
+}
+
+}  // namespace ocean::server

@@ -1,0 +1,58 @@
+// TimelineLog: the fleet's scene timeline as an ordered log in etcd, the one source every replica
+// follows. Entry N lives under <prefix>/log/<N as 20 digits>, written only where nothing ever was
+// (EtcdGateway::put_if_absent), so replicas appending at once take distinct places and every
+// reader sees one order; etcd's Raft commit makes an acknowledged entry survive a member's loss.
+// The entries are opaque bytes here: what they say (a scene change, a vessel command, each with its
+// effective tick) is the server's.
+#pragma once
+
+#include "etcd_gateway.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ocean::server {
+
+struct TimelineAddress {
+  EtcdEndpoint store;
+  std::string prefix;  // "/ocean/harbour-1": the log's keys start with it
+};
+
+// "etcd://HOST:PORT/PREFIX" (PORT defaults to 2379); nullopt with `error` naming what is wrong.
+std::optional<TimelineAddress> parse_timeline_url(std::string_view url, std::string& error);
+
+struct TimelineEntry {
+  std::uint64_t index = 0;  // 1, 2, ...: the log's order
+  std::string bytes;
+};
+
+class TimelineLog {
+ public:
+  TimelineLog(TimelineAddress address, double timeout_s) : address_(std::move(address)), store_(address_.store, timeout_s) {}
+
+  struct Appended {
+    std::string error;  // empty: written at `index`
+    std::uint64_t index = 0;
+  };
+  // Appends after the last entry written, whoever wrote it.
+  Appended append(const std::string& bytes);
+
+  struct Read {
+    std::string error;  // empty: `entries` are every entry from `from` on, up to `max`, in order
+    std::vector<TimelineEntry> entries;
+  };
+  Read read_from(std::uint64_t from, std::size_t max) const;
+
+  std::string key(std::uint64_t index) const;  // <prefix>/log/<index, 20 digits>
+  const TimelineAddress& address() const { return address_; }
+
+ private:
+  TimelineAddress address_;
+  EtcdGateway store_;
+  std::uint64_t next_ = 1;  // where the next append tries first
+};
+
+}  // namespace ocean::server

@@ -1,0 +1,194 @@
+// The fleet's timeline log against a real etcd (Debian's etcd-server, started here on free
+// ports): entries come back in the order they were appended, replicas appending at once each get
+// their own place in one order, and a store that goes away is named in the error, then found again
+// with nothing lost.
+#include "timeline_log.hpp"
+
+#include <asio/io_context.hpp>
+#include <asio/ip/tcp.hpp>
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+using namespace ocean::server;
+
+namespace {
+
+std::uint16_t free_port() {
+  asio::io_context io;
+  asio::ip::tcp::acceptor acceptor(io, {asio::ip::make_address("127.0.0.1"), 0});
+  return acceptor.local_endpoint().port();
+}
+
+// One etcd member on loopback, its data in a folder of its own; SIGKILLed with the test process.
+class EtcdProcess {
+ public:
+  EtcdProcess() : data_(std::filesystem::temp_directory_path() / ("ocean-etcd-" + std::to_string(::getpid()))) {
+    // A port probed free may be taken before etcd binds it (parallel tests): then new ports.
+    for (int attempt = 0; attempt < 3 && pid_ <= 0; ++attempt) {
+      std::filesystem::remove_all(data_);  // a member bootstrapped on other ports would refuse new ones
+      client_port_ = free_port();
+      peer_port_ = free_port();
+      start(attempt == 2);
+    }
+  }
+  ~EtcdProcess() {
+    stop();
+    std::error_code ignored;
+    std::filesystem::remove_all(data_, ignored);
+  }
+  // Starts etcd and waits until it answers; when it exits first, false (or, `must`, a failure).
+  bool start(bool must = true) {
+    const std::string client = "http://127.0.0.1:" + std::to_string(client_port_);
+    const std::string peer = "http://127.0.0.1:" + std::to_string(peer_port_);
+    const std::string log = data_.string() + ".log";
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      FILE* out = std::freopen(log.c_str(), "a", stdout);
+      if (out) ::dup2(::fileno(stdout), 2);
+      ::execl("/usr/bin/etcd", "etcd", "--data-dir", data_.c_str(), "--listen-client-urls", client.c_str(),
+              "--advertise-client-urls", client.c_str(), "--listen-peer-urls", peer.c_str(),
+              "--initial-advertise-peer-urls", peer.c_str(), "--initial-cluster", ("default=" + peer).c_str(),
+              static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    REQUIRE(pid_ > 0);
+    const EtcdGateway probe({"127.0.0.1", client_port_}, 0.5);
+    for (int i = 0; i < 200; ++i) {
+      if (probe.range("a", "b", 1).error.empty()) return true;
+      if (!must && ::waitpid(pid_, nullptr, WNOHANG) == pid_) {
+        pid_ = -1;
+        return false;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    FAIL("etcd did not answer on port " << client_port_ << " within 10 s (is etcd-server installed? see " << log << ")");
+    return false;
+  }
+  void stop() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGKILL);
+    ::waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+  std::string url(const std::string& prefix) const { return "etcd://127.0.0.1:" + std::to_string(client_port_) + prefix; }
+
+ private:
+  std::filesystem::path data_;
+  std::uint16_t client_port_ = 0, peer_port_ = 0;
+  pid_t pid_ = -1;
+};
+
+TimelineLog log_at(const std::string& url) {
+  std::string error;
+  const auto address = parse_timeline_url(url, error);
+  REQUIRE(address);
+  return TimelineLog(*address, 2.0);
+}
+
+}  // namespace
+
+TEST_CASE("a timeline URL names the store and the log's prefix", "[timeline]") {
+  std::string error;
+  const auto a = parse_timeline_url("etcd://store.example:2380/ocean/harbour-1/", error);
+  REQUIRE(a);
+  CHECK(a->store.host == "store.example");
+  CHECK(a->store.port == 2380);
+  CHECK(a->prefix == "/ocean/harbour-1");
+  const auto b = parse_timeline_url("etcd://10.0.0.5/ocean/x", error);
+  REQUIRE(b);
+  CHECK(b->store.port == 2379);
+  for (const char* bad : {"redis://h:1/p", "etcd://h:1", "etcd://h:1/", "etcd://h:0/p", "etcd://h:x/p", "etcd://:2379/p"}) {
+    INFO(bad);
+    error.clear();
+    CHECK_FALSE(parse_timeline_url(bad, error));
+    CHECK(error.find(bad) != std::string::npos);
+  }
+}
+
+TEST_CASE("base64 as etcd's JSON gateway writes it", "[timeline]") {
+  const std::string bytes("\0\x01\xff scene", 9);
+  std::string back;
+  CHECK(to_base64("foo") == "Zm9v");
+  REQUIRE(from_base64(to_base64(bytes), back));
+  CHECK(back == bytes);
+  CHECK_FALSE(from_base64("not base64!", back));
+}
+
+TEST_CASE("entries come back in the order they were appended, bytes intact", "[timeline]") {
+  EtcdProcess etcd;
+  TimelineLog log = log_at(etcd.url("/ocean/harbour-1"));
+  const std::string binary("\0wind\xff", 6);
+  for (const std::string& bytes : {std::string("first"), binary, std::string("third")}) {
+    const auto appended = log.append(bytes);
+    REQUIRE(appended.error.empty());
+  }
+  const auto all = log.read_from(1, 100);
+  REQUIRE(all.error.empty());
+  REQUIRE(all.entries.size() == 3);
+  CHECK(all.entries[0].index == 1);
+  CHECK(all.entries[0].bytes == "first");
+  CHECK(all.entries[1].bytes == binary);
+  CHECK(all.entries[2].index == 3);
+  const auto second = log.read_from(2, 1);
+  REQUIRE(second.entries.size() == 1);
+  CHECK(second.entries[0].bytes == binary);
+  // Another fleet's log beside it is its own.
+  TimelineLog other = log_at(etcd.url("/ocean/harbour-2"));
+  CHECK(other.read_from(1, 100).entries.empty());
+  CHECK(other.append("elsewhere").index == 1);
+  CHECK(log.read_from(1, 100).entries.size() == 3);
+}
+
+TEST_CASE("replicas appending at once each get a place of their own, in one order", "[timeline]") {
+  EtcdProcess etcd;
+  constexpr int kReplicas = 3, kEach = 15;
+  std::vector<std::thread> replicas;
+  std::vector<std::string> errors(kReplicas);
+  for (int r = 0; r < kReplicas; ++r)
+    replicas.emplace_back([&, r] {
+      TimelineLog log = log_at(etcd.url("/ocean/race"));
+      for (int i = 0; i < kEach; ++i)
+        if (const auto a = log.append("replica " + std::to_string(r) + " change " + std::to_string(i)); !a.error.empty())
+          errors[r] = a.error;
+    });
+  for (auto& t : replicas) t.join();
+  for (const auto& e : errors) CHECK(e == "");
+  const auto a = log_at(etcd.url("/ocean/race")).read_from(1, 1000);
+  const auto b = log_at(etcd.url("/ocean/race")).read_from(1, 1000);
+  REQUIRE(a.entries.size() == kReplicas * kEach);
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < a.entries.size(); ++i) {
+    CHECK(a.entries[i].index == i + 1);  // no gap, no place taken twice
+    CHECK(a.entries[i].bytes == b.entries[i].bytes);  // every reader, one order
+    seen.insert(a.entries[i].bytes);
+  }
+  CHECK(seen.size() == kReplicas * kEach);  // each change exactly once
+}
+
+TEST_CASE("a store that is down is named in the error, and once back it has lost nothing", "[timeline]") {
+  EtcdProcess etcd;
+  TimelineLog log = log_at(etcd.url("/ocean/faults"));
+  REQUIRE(log.append("before").error.empty());
+  etcd.stop();
+  const auto refused = log.append("while down");
+  CHECK(refused.error.find("unreachable") != std::string::npos);
+  CHECK(log.read_from(1, 10).error.find("127.0.0.1") != std::string::npos);
+  etcd.start();
+  const auto after = log.append("after");
+  REQUIRE(after.error.empty());
+  CHECK(after.index == 2);
+  const auto all = log.read_from(1, 10);
+  REQUIRE(all.entries.size() == 2);
+  CHECK(all.entries[0].bytes == "before");
+  CHECK(all.entries[1].bytes == "after");
+}
