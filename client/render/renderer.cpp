@@ -61,28 +61,9 @@ bool Renderer::fail(std::string reason) {
   return false;
 }
 
-bool Renderer::init(const RendererDesc& in) {
-  shutdown();
-  if (!glGetString(GL_VERSION)) return fail("Renderer::init needs a current GLES 2 context (glGetString returned null)");
-  desc_ = in;
-  desc_.view_distance_m = or_default(in.view_distance_m, 2500.0f);
-  desc_.max_lod_level = or_default(in.max_lod_level, 5);
-  desc_.chunks_per_side = or_default(in.chunks_per_side, 2);
-  desc_.far_block_tiles = std::max(0, in.far_block_tiles);  // resolved per patch size in set_grid
-  desc_.choppiness = or_default(in.choppiness, 1.0f);
-  // Foam where the surface compresses, from J 0.75, full at 0.55, until a frame's whitecaps are
-  // set (WhitecapCover: the threshold that covers the share observed at the wind).
-  desc_.foam_threshold = or_default(in.foam_threshold, 0.75f);
-  desc_.deep_colour = or_default(in.deep_colour, glm::vec3(0.01f, 0.06f, 0.10f));
-  desc_.scatter_colour = or_default(in.scatter_colour, glm::vec3(0.02f, 0.12f, 0.11f));
-  desc_.glow_colour = or_default(in.glow_colour, glm::vec3(0.05f, 0.24f, 0.20f));
-  desc_.shininess = or_default(in.shininess, 600.0f);
-  desc_.fog_density = or_default(in.fog_density, 3.2f / desc_.view_distance_m);
-  if (desc_.view_distance_m < 0.0f || desc_.lod0_distance_m < 0.0f || desc_.max_lod_level < 0)
-    return fail("RendererDesc: view_distance_m, lod0_distance_m and max_lod_level must be >= 0");
-  if (desc_.chunks_per_side < 1 || desc_.chunks_per_side > 8)
-    return fail("RendererDesc: chunks_per_side must be 1..8, got " + std::to_string(desc_.chunks_per_side));
-
+// The plain program, then the variants this GL can build (coarse cascade, wake, each laced): a GL
+// that cannot build one still draws what the others can, and says what it lacks.
+bool Renderer::build_ocean_programs(const RendererDesc& in) {
   if (!build_ocean_program(programs_[0], false, false)) return false;
   // The coarse and wake variants are optional: a GL that cannot build them still draws the tile.
   coarse_unsupported_ = in.without_coarse_cascade
@@ -115,7 +96,12 @@ bool Renderer::init(const RendererDesc& in) {
     std::fprintf(stderr, "ocean renderer: warning: the foam is drawn without its lace, as smooth patches (%s)\n",
                  lace_unsupported_.c_str());
   }
-  error_.clear();
+  return true;
+}
+
+// The sky's program and texture, and what the water takes from the sky: the sun (its direction,
+// and its colour from its elevation unless the desc sets one) and the horizon's haze.
+bool Renderer::load_sky_and_sun(const RendererDesc& in) {
   namespace src = shader_source;
   sky_program_ = build_program("sky", src::sky_vert, src::sky_frag, {{0, "a_ndc"}}, error_);
   if (!sky_program_) return false;
@@ -133,6 +119,36 @@ bool Renderer::init(const RendererDesc& in) {
   horizon_ring_.assign(ring.begin(), ring.end());
   set_overcast(overcast_);  // the haze the ocean fades into, under the weather set so far
   sky_texture_ = create_sky_texture(faces);
+
+  return true;
+}
+
+bool Renderer::init(const RendererDesc& in) {
+  shutdown();
+  if (!glGetString(GL_VERSION)) return fail("Renderer::init needs a current GLES 2 context (glGetString returned null)");
+  desc_ = in;
+  desc_.view_distance_m = or_default(in.view_distance_m, 2500.0f);
+  desc_.max_lod_level = or_default(in.max_lod_level, 5);
+  desc_.chunks_per_side = or_default(in.chunks_per_side, 2);
+  desc_.far_block_tiles = std::max(0, in.far_block_tiles);  // resolved per patch size in set_grid
+  desc_.choppiness = or_default(in.choppiness, 1.0f);
+  // Foam where the surface compresses, from J 0.75, full at 0.55, until a frame's whitecaps are
+  // set (WhitecapCover: the threshold that covers the share observed at the wind).
+  desc_.foam_threshold = or_default(in.foam_threshold, 0.75f);
+  desc_.deep_colour = or_default(in.deep_colour, glm::vec3(0.01f, 0.06f, 0.10f));
+  desc_.scatter_colour = or_default(in.scatter_colour, glm::vec3(0.02f, 0.12f, 0.11f));
+  desc_.glow_colour = or_default(in.glow_colour, glm::vec3(0.05f, 0.24f, 0.20f));
+  desc_.shininess = or_default(in.shininess, 600.0f);
+  desc_.fog_density = or_default(in.fog_density, 3.2f / desc_.view_distance_m);
+  if (desc_.view_distance_m < 0.0f || desc_.lod0_distance_m < 0.0f || desc_.max_lod_level < 0)
+    return fail("RendererDesc: view_distance_m, lod0_distance_m and max_lod_level must be >= 0");
+  if (desc_.chunks_per_side < 1 || desc_.chunks_per_side > 8)
+    return fail("RendererDesc: chunks_per_side must be 1..8, got " + std::to_string(desc_.chunks_per_side));
+
+  if (!build_ocean_programs(in)) return false;
+  error_.clear();
+  if (!load_sky_and_sun(in)) return false;
+  desc_.sky_dir = nullptr;  // read: the caller's string need not outlive init
 
   const float triangle[] = {-1.0f, -1.0f, 3.0f, -1.0f, -1.0f, 3.0f};
   glGenBuffers(1, &sky_triangle_);

@@ -150,6 +150,8 @@ class Renderer {
 
  private:
   bool fail(std::string reason);
+  bool build_ocean_programs(const RendererDesc& in);
+  bool load_sky_and_sun(const RendererDesc& in);
   void release_grid();
   void build_tile_indices(int n, int chunk_cells, bool wide);
   void build_far_blocks(int n, float patch_x_m, float patch_z_m, bool wide);

@@ -18,7 +18,9 @@ glm::vec3 weathered(glm::vec3 c, float overcast) {
 GlitterLobe glitter_for_wind(double wind_mps, float sharp_exponent) {
   const double unresolved = 0.5 * (0.003 + 5.12e-3 * std::max(0.0, wind_mps));
   const float exponent = std::min(sharp_exponent, static_cast<float>(2.0 / unresolved - 2.0));
-  return {exponent, (exponent + 1.0f) / (sharp_exponent + 1.0f)};
+  // The sharp lobe's energy times how much wider than it the ripples make the broad one: nothing
+  // on a calm, where the two would be one lobe drawn twice.
+  return {exponent, (exponent + 1.0f) / (sharp_exponent + 1.0f) * (1.0f - exponent / sharp_exponent)};
 }
 
 float WeatherEase::update(double wind_mps, double dt_s) {

@@ -21,9 +21,9 @@ glm::vec3 weathered(glm::vec3 c, float overcast);
 
 // The sun's glitter off ripples the grid does not resolve: a Phong lobe on the resolved normal's
 // reflection whose width is their mean square slope, half of Cox and Munk's (1954) clean-surface
-// 0.003 + 5.12e-3 U (the other half the grid resolves), and whose weight keeps its energy that of
-// a sharp lobe of `sharp_exponent` (a wider lobe is dimmer at its peak): a calm's highlight stays a
-// point, a gale's sun spreads into a long path of light.
+// 0.003 + 5.12e-3 U (the other half the grid resolves), and whose energy is the sharp lobe's
+// (`sharp_exponent`) times the share by which it is wider: none on a calm, whose highlight stays a
+// point; a gale's sun spreads into a long path of light.
 struct GlitterLobe {
   float exponent = 0.0f;
   float weight = 0.0f;

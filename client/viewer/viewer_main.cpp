@@ -21,11 +21,8 @@ std::string profile_names() {
   return names;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  ocean::viewer::ViewerOptions o;
-  CLI::App app{"Render the ocean an ocean-server streams, with the GLES 2 renderer"};
+// Every flag ocean-viewer takes, its help and checks, and the exit codes' table.
+void add_viewer_flags(CLI::App& app, ocean::viewer::ViewerOptions& o) {
   app.add_option("--server", o.server,
                  "HOST:PORT of the server's TCP listener; a comma list (or the flag repeated) names replicas to "
                  "fail over to, round robin")
@@ -49,6 +46,14 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 10.0));
   ocean::viewer::add_camera_flags(app, o);
   app.footer(ocean::viewer::kExitTable);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ocean::viewer::ViewerOptions o;
+  CLI::App app{"Render the ocean an ocean-server streams, with the GLES 2 renderer"};
+  add_viewer_flags(app, o);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help

@@ -70,6 +70,7 @@ class WebViewer {
   void on_welcome(const protocol::Welcome& welcome);
   void on_scene_update(const protocol::SceneUpdate& update);
   void pose_vessels(const client::TimelineSample& sample);
+  double draw_hud(int width, int height);  // the milliseconds its GL calls took
   void on_frame(const codec::ReconstructedFrame& frame, Tick tick);
   void on_message(std::span<const std::uint8_t> bytes);
   void end_session(const std::string& why);

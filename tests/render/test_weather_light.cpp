@@ -36,13 +36,14 @@ TEST_CASE("a weather front eases in over seconds", "[weather]") {
 TEST_CASE("the glitter spreads with the wind and keeps its energy", "[weather]") {
   const float sharp = 600.0f;
   const GlitterLobe calm = glitter_for_wind(0.0, sharp);
-  CHECK(calm.exponent == sharp);  // no wind: the sharp highlight alone (the lobe is the same)
-  CHECK(calm.weight == Approx(1.0f));
+  CHECK(calm.exponent == sharp);  // no wind: the sharp highlight alone, not drawn twice
+  CHECK(calm.weight == 0.0f);
   float previous = sharp;
   for (double wind = 2.0; wind <= 30.0; wind += 2.0) {
     const GlitterLobe lobe = glitter_for_wind(wind, sharp);
     REQUIRE(lobe.exponent < previous);
-    REQUIRE(lobe.weight == Approx((lobe.exponent + 1.0f) / (sharp + 1.0f)));
+    REQUIRE(lobe.weight == Approx((lobe.exponent + 1.0f) / (sharp + 1.0f) * (1.0f - lobe.exponent / sharp)));
+    REQUIRE(lobe.weight < 0.3f);  // the peak of a wider lobe is dimmer
     previous = lobe.exponent;
   }
   // Half of Cox and Munk's mean square slope at 10 and 20 m/s: 0.0271 and 0.0527.

@@ -6,11 +6,13 @@
 
 #include <asio/io_context.hpp>
 #include <asio/ip/tcp.hpp>
+#include <asio/write.hpp>
 #include <catch2/catch.hpp>
 
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <sys/prctl.h>
@@ -31,7 +33,12 @@ std::uint16_t free_port() {
 // One etcd member on loopback, its data in a folder of its own; SIGKILLed with the test process.
 class EtcdProcess {
  public:
-  EtcdProcess() : data_(std::filesystem::temp_directory_path() / ("ocean-etcd-" + std::to_string(::getpid()))) {
+  EtcdProcess() {
+    if (::access("/usr/bin/etcd", X_OK) != 0) FAIL("/usr/bin/etcd is missing: deploy/install-deps.sh installs etcd-server");
+    std::string folder = (std::filesystem::temp_directory_path() / "ocean-etcd-XXXXXX").string();
+    REQUIRE(::mkdtemp(folder.data()));
+    home_ = folder;
+    data_ = home_ / "data";
     // A port probed free may be taken before etcd binds it (parallel tests): then new ports.
     for (int attempt = 0; attempt < 3 && pid_ <= 0; ++attempt) {
       std::filesystem::remove_all(data_);  // a member bootstrapped on other ports would refuse new ones
@@ -43,13 +50,13 @@ class EtcdProcess {
   ~EtcdProcess() {
     stop();
     std::error_code ignored;
-    std::filesystem::remove_all(data_, ignored);
+    std::filesystem::remove_all(home_, ignored);
   }
   // Starts etcd and waits until it answers; when it exits first, false (or, `must`, a failure).
   bool start(bool must = true) {
     const std::string client = "http://127.0.0.1:" + std::to_string(client_port_);
     const std::string peer = "http://127.0.0.1:" + std::to_string(peer_port_);
-    const std::string log = data_.string() + ".log";
+    const std::string log = (home_ / "etcd.log").string();
     pid_ = ::fork();
     if (pid_ == 0) {
       ::prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -83,7 +90,7 @@ class EtcdProcess {
   std::string url(const std::string& prefix) const { return "etcd://127.0.0.1:" + std::to_string(client_port_) + prefix; }
 
  private:
-  std::filesystem::path data_;
+  std::filesystem::path home_, data_;  // a folder of its own: its data and its log
   std::uint16_t client_port_ = 0, peer_port_ = 0;
   pid_t pid_ = -1;
 };
@@ -139,6 +146,7 @@ TEST_CASE("entries come back in the order they were appended, bytes intact", "[t
   CHECK(all.entries[0].bytes == "first");
   CHECK(all.entries[1].bytes == binary);
   CHECK(all.entries[2].index == 3);
+  CHECK(log.read_from(1, 0).entries.empty());  // etcd's limit 0 is "all": asking for none gets none
   const auto second = log.read_from(2, 1);
   REQUIRE(second.entries.size() == 1);
   CHECK(second.entries[0].bytes == binary);
@@ -154,9 +162,10 @@ TEST_CASE("replicas appending at once each get a place of their own, in one orde
   constexpr int kReplicas = 3, kEach = 15;
   std::vector<std::thread> replicas;
   std::vector<std::string> errors(kReplicas);
+  const TimelineLog fresh = log_at(etcd.url("/ocean/race"));  // parsed here: Catch's checks are not thread-safe
   for (int r = 0; r < kReplicas; ++r)
     replicas.emplace_back([&, r] {
-      TimelineLog log = log_at(etcd.url("/ocean/race"));
+      TimelineLog log = fresh;
       for (int i = 0; i < kEach; ++i)
         if (const auto a = log.append("replica " + std::to_string(r) + " change " + std::to_string(i)); !a.error.empty())
           errors[r] = a.error;
@@ -182,6 +191,7 @@ TEST_CASE("a store that is down is named in the error, and once back it has lost
   etcd.stop();
   const auto refused = log.append("while down");
   CHECK(refused.error.find("unreachable") != std::string::npos);
+  CHECK(refused.error.find("unknown") == std::string::npos);  // refused before it was sent: known not written
   CHECK(log.read_from(1, 10).error.find("127.0.0.1") != std::string::npos);
   etcd.start();
   const auto after = log.append("after");
@@ -191,4 +201,56 @@ TEST_CASE("a store that is down is named in the error, and once back it has lost
   REQUIRE(all.entries.size() == 2);
   CHECK(all.entries[0].bytes == "before");
   CHECK(all.entries[1].bytes == "after");
+}
+
+namespace {
+
+// A one-connection HTTP server on loopback that answers with `reply` (or, empty, never answers).
+struct FakeStore {
+  asio::io_context io;
+  asio::ip::tcp::acceptor acceptor{io, {asio::ip::make_address("127.0.0.1"), 0}};
+  std::thread thread;
+  explicit FakeStore(std::string reply) {
+    thread = std::thread([this, reply] {
+      asio::ip::tcp::socket socket(io);
+      acceptor.accept(socket);
+      char request[4096];
+      std::error_code ignored;
+      socket.read_some(asio::buffer(request), ignored);
+      if (reply.empty()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(800));
+        return;
+      }
+      asio::write(socket, asio::buffer(reply), ignored);
+    });
+  }
+  ~FakeStore() { thread.join(); }
+  EtcdGateway gateway(double timeout_s) const { return EtcdGateway({"127.0.0.1", acceptor.local_endpoint().port()}, timeout_s); }
+};
+
+}  // namespace
+
+TEST_CASE("a store that takes the request and never answers is a timeout, its outcome unknown", "[timeline]") {
+  FakeStore silent("");
+  const EtcdResult result = silent.gateway(0.3).put_if_absent("k", "v");
+  CHECK(result.error.find("did not answer within") != std::string::npos);
+  CHECK(result.maybe_applied);
+}
+
+TEST_CASE("a chunked reply is read; a malformed one is named", "[timeline]") {
+  {
+    FakeStore chunked("HTTP/1.1 200 OK\r\nTransfer-Encoding: chunked\r\n\r\n"
+                      "d\r\n{\"header\":{\"r\r\ne\r\nevision\":\"7\"}}\r\n0\r\n\r\n");
+    const EtcdResult result = chunked.gateway(2.0).range("a", "b", 1);
+    CHECK(result.error == "");
+    CHECK(result.revision == 7);
+  }
+  {
+    FakeStore broken("HTTP/1.1 200 OK\r\nTransfer-Encoding: chunked\r\n\r\nffffffffffffffff\r\nshort\r\n");
+    CHECK(broken.gateway(2.0).range("a", "b", 1).error.find("malformed chunked body") != std::string::npos);
+  }
+  {
+    FakeStore not_etcd("HTTP/1.1 503 Service Unavailable\r\nContent-Length: 4\r\n\r\nbusy");
+    CHECK(not_etcd.gateway(2.0).range("a", "b", 1).error.find("answered 503") != std::string::npos);
+  }
 }

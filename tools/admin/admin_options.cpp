@@ -121,6 +121,32 @@ struct VesselFlags {
   }
 };
 
+// The scene change flags. Their ranges are the protocol's (PROTOCOL.md 8, ParamChange): refusing
+// here names the flag, where the server could only name the wire field.
+struct SceneFlags {
+  std::string spectrum;
+  double wind_speed = 0, wind_dir = 0, amplitude = 0, choppiness = 0;
+  CLI::Option *ws = nullptr, *wd = nullptr, *am = nullptr, *ch = nullptr, *sp = nullptr;
+
+  void add_to(CLI::App& app) {
+    ws = app.add_option("--wind-speed", wind_speed, "wind speed, m/s, [0, 100]")->check(CLI::Range(0.0, 100.0));
+    wd = app.add_option("--wind-dir", wind_dir, "direction the wind blows towards, degrees from +x towards +z, "
+                                                "[-1e6, 1e6]")->check(CLI::Range(-1e6, 1e6));
+    am = app.add_option("--amplitude", amplitude, "scale on the spectrum's energy, [0, 1e6]")->check(CLI::Range(0.0, 1e6));
+    ch = app.add_option("--choppiness", choppiness, "horizontal displacement scale, [0, 100]")->check(CLI::Range(0.0, 100.0));
+    sp = app.add_option("--spectrum", spectrum, model::join_names(model::spectrum_names(), ", ", " or "))
+             ->check(CLI::IsMember(model::spectrum_names()));
+  }
+  bool any() const { return *ws || *wd || *am || *ch || *sp; }
+  void apply(protocol::ParamChange& c) const {
+    if (*ws) c.wind_speed_mps = wind_speed;
+    if (*wd) c.wind_dir_deg = wind_dir;
+    if (*am) c.amplitude = amplitude;
+    if (*ch) c.choppiness = choppiness;
+    if (*sp) c.spectrum = scene_wire::to_wire(*model::spectrum_from_name(spectrum));  // IsMember checked it
+  }
+};
+
 }  // namespace
 
 AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, const char* env_token) {
@@ -128,20 +154,12 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
   AdminOptions& o = result.options;
   CLI::App app{std::string(kDescription)};
   app.footer(kExitCodes);
-  std::string server, token_file, spectrum;
-  double wind_speed = 0, wind_dir = 0, amplitude = 0, choppiness = 0;
+  std::string server, token_file;
   app.add_option("--server", server, "HOST:PORT of the server's TCP listener")->required();
   app.add_option("--token-file", token_file, "file whose first line is the admin token (default: $OCEAN_ADMIN_TOKEN)");
   app.add_flag("--show", o.show, "print the scene in force (and any announced for later ticks) as JSON; needs no token");
-  // The ranges are the protocol's (PROTOCOL.md 8, ParamChange): refusing here names the flag,
-  // where the server could only name the wire field.
-  auto* ws = app.add_option("--wind-speed", wind_speed, "wind speed, m/s, [0, 100]")->check(CLI::Range(0.0, 100.0));
-  auto* wd = app.add_option("--wind-dir", wind_dir, "direction the wind blows towards, degrees from +x towards +z, "
-                                                    "[-1e6, 1e6]")->check(CLI::Range(-1e6, 1e6));
-  auto* am = app.add_option("--amplitude", amplitude, "scale on the spectrum's energy, [0, 1e6]")->check(CLI::Range(0.0, 1e6));
-  auto* ch = app.add_option("--choppiness", choppiness, "horizontal displacement scale, [0, 100]")->check(CLI::Range(0.0, 100.0));
-  auto* sp = app.add_option("--spectrum", spectrum, model::join_names(model::spectrum_names(), ", ", " or "))
-                 ->check(CLI::IsMember(model::spectrum_names()));
+  SceneFlags scene;
+  scene.add_to(app);
   VesselFlags vessel;
   const CLI::Option* va = vessel.add_to(app);
   QueryFlags query;
@@ -169,13 +187,9 @@ AdminOptionsResult parse_admin_options(const std::vector<std::string>& args, con
   }
   o.server = servers.front();
   protocol::ParamChange& c = o.change;
-  if (*ws) c.wind_speed_mps = wind_speed;
-  if (*wd) c.wind_dir_deg = wind_dir;
-  if (*am) c.amplitude = amplitude;
-  if (*ch) c.choppiness = choppiness;
-  if (*sp) c.spectrum = scene_wire::to_wire(*model::spectrum_from_name(spectrum));  // IsMember checked it
+  scene.apply(c);
   if (*va && !vessel.command(o.change, result.error)) return result;
-  const bool change = *ws || *wd || *am || *ch || *sp || *va;
+  const bool change = scene.any() || *va;
   if (query_command->parsed()) {
     if (change || o.show) {
       result.error = "query asks and changes nothing: leave out --show and the change flags";

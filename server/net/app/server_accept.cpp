@@ -6,6 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cerrno>
 #include <chrono>
 #include <sys/resource.h>
 

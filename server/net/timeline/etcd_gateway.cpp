@@ -9,8 +9,10 @@
 #include <sodium.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cctype>
+#include <charconv>
+#include <chrono>
+#include <stdexcept>
 
 namespace ocean::server {
 namespace {
@@ -28,65 +30,21 @@ bool unchunk(const std::string& body, std::string& out) {
   while (true) {
     const std::size_t eol = body.find("\r\n", at);
     if (eol == std::string::npos) return false;
-    std::size_t size = 0;
-    try {
-      size = std::stoul(body.substr(at, eol - at), nullptr, 16);
-    } catch (...) {
-      return false;
-    }
+    std::uint64_t size = 0;
+    const auto [end, ec] = std::from_chars(body.data() + at, body.data() + eol, size, 16);
+    if (ec != std::errc() || end == body.data() + at) return false;  // a chunk extension ends the digits: taken as none
     if (size == 0) return true;
-    if (eol + 2 + size > body.size()) return false;
-    out.append(body, eol + 2, size);
-    at = eol + 2 + size + 2;
+    const std::size_t data = eol + 2;
+    if (size > body.size() - data || body.size() - data - size < 2 || body.compare(data + size, 2, "\r\n") != 0)
+      return false;
+    out.append(body, data, size);
+    at = data + size + 2;
   }
 }
 
-// One POST with "Connection: close", read to the end, within timeout_s; the body of a 200.
-std::string post(const EtcdEndpoint& endpoint, const std::string& path, const std::string& body, double timeout_s,
-                 std::string& error) {
-  asio::io_context io;
-  asio::ip::tcp::socket socket(io);
-  std::error_code ec;
-  asio::ip::tcp::resolver resolver(io);
-  const auto addresses = resolver.resolve(endpoint.host, std::to_string(endpoint.port), ec);
-  const std::string where = endpoint.host + ":" + std::to_string(endpoint.port);
-  if (ec) {
-    error = "cannot resolve the store's host " + where + ": " + ec.message();
-    return {};
-  }
-  const std::string request = "POST " + path + " HTTP/1.1\r\nHost: " + where +
-                              "\r\nContent-Type: application/json\r\nConnection: close\r\nContent-Length: " +
-                              std::to_string(body.size()) + "\r\n\r\n" + body;
-  std::string response;
-  std::error_code failure;
-  bool done = false;
-  asio::async_connect(socket, addresses, [&](std::error_code e, const auto&) {
-    if (e) {
-      failure = e;
-      done = true;
-      return;
-    }
-    asio::async_write(socket, asio::buffer(request), [&](std::error_code w, std::size_t) {
-      if (w) {
-        failure = w;
-        done = true;
-        return;
-      }
-      asio::async_read(socket, asio::dynamic_buffer(response), [&](std::error_code r, std::size_t) {
-        if (r && r != asio::error::eof) failure = r;
-        done = true;
-      });
-    });
-  });
-  io.run_for(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(timeout_s)));
-  if (!done) {
-    error = "the store at " + where + " did not answer within " + std::to_string(timeout_s).substr(0, 4) + " s";
-    return {};
-  }
-  if (failure) {
-    error = "the store at " + where + " is unreachable: " + failure.message();
-    return {};
-  }
+// A 200's body from a whole HTTP/1.1 response, or the error naming what came instead.
+std::string reply_body(const std::string& response, const std::string& where, const std::string& path,
+                       std::string& error) {
   const std::size_t head_end = response.find("\r\n\r\n");
   if (response.compare(0, 9, "HTTP/1.1 ") != 0 || head_end == std::string::npos) {
     error = "the store at " + where + " did not answer in HTTP/1.1";
@@ -102,16 +60,64 @@ std::string post(const EtcdEndpoint& endpoint, const std::string& path, const st
     }
     content = std::move(data);
   }
-  if (status != "200") {
-    error = "the store at " + where + " answered " + status + " to " + path + ": " + content.substr(0, 200);
-    return {};
-  }
+  if (status != "200") error = "the store at " + where + " answered " + status + " to " + path + ": " + content.substr(0, 200);
   return content;
 }
 
+// One POST with "Connection: close", read to the end, within timeout_s; the body of a 200. `sent`
+// tells whether the request went out (an error after it leaves what the store did unknown).
+std::string post(const EtcdEndpoint& endpoint, const std::string& path, const std::string& body, double timeout_s,
+                 std::string& error, bool& sent) {
+  asio::io_context io;
+  asio::ip::tcp::socket socket(io);
+  std::error_code ec;
+  const std::string where = endpoint.host + ":" + std::to_string(endpoint.port);
+  // A numeric host needs no lookup; a name's lookup (getaddrinfo) is not bounded by the timeout.
+  asio::ip::tcp::resolver resolver(io);
+  const auto addresses = resolver.resolve(endpoint.host, std::to_string(endpoint.port),
+                                          asio::ip::resolver_base::numeric_service, ec);
+  if (ec) {
+    error = "cannot resolve the store's host " + where + ": " + ec.message();
+    return {};
+  }
+  const std::string request = "POST " + path + " HTTP/1.1\r\nHost: " + where +
+                              "\r\nContent-Type: application/json\r\nConnection: close\r\nContent-Length: " +
+                              std::to_string(body.size()) + "\r\n\r\n" + body;
+  std::string response;
+  std::error_code failure;
+  bool done = false;
+  const auto finish = [&](std::error_code e) {
+    failure = e;
+    done = true;
+  };
+  asio::async_connect(socket, addresses, [&](std::error_code e, const auto&) {
+    if (e) return finish(e);
+    asio::async_write(socket, asio::buffer(request), [&](std::error_code w, std::size_t) {
+      if (w) return finish(w);
+      sent = true;
+      asio::async_read(socket, asio::dynamic_buffer(response),
+                       [&](std::error_code r, std::size_t) { finish(r == asio::error::eof ? std::error_code() : r); });
+    });
+  });
+  io.run_for(std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(timeout_s)));
+  if (!done) {
+    error = "the store at " + where + " did not answer within " + std::to_string(timeout_s).substr(0, 4) + " s";
+    return {};
+  }
+  if (failure) {
+    error = "the store at " + where + " is unreachable: " + failure.message();
+    return {};
+  }
+  return reply_body(response, where, path, error);
+}
+
 std::int64_t number(const json& value) {  // the gateway writes 64-bit integers as strings
-  if (value.is_string()) return std::stoll(value.get<std::string>());
-  return value.is_number_integer() ? value.get<std::int64_t>() : 0;
+  if (!value.is_string()) return value.is_number_integer() ? value.get<std::int64_t>() : 0;
+  const std::string& text = value.get_ref<const std::string&>();
+  std::int64_t n = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (ec != std::errc() || end != text.data() + text.size()) throw std::invalid_argument("'" + text + "' is not an integer");
+  return n;
 }
 
 }  // namespace
@@ -136,7 +142,8 @@ bool from_base64(const std::string& text, std::string& bytes) {
 
 EtcdResult EtcdGateway::call(const std::string& path, const std::string& body) const {
   EtcdResult result;
-  const std::string content = post(endpoint_, path, body, timeout_s_, result.error);
+  const std::string content = post(endpoint_, path, body, timeout_s_, result.error, result.maybe_applied);
+  if (result.error.empty()) result.maybe_applied = false;  // answered: the reply says what happened
   if (!result.error.empty()) return result;
   const json answer = json::parse(content, nullptr, false);
   if (answer.is_discarded() || !answer.is_object() || !answer.contains("header")) {

@@ -1,7 +1,8 @@
 // EtcdGateway: the calls the fleet's timeline makes to etcd, through etcd's own v3 API as its
 // JSON gateway serves it (POST /v3/kv/range and /v3/kv/txn, keys and values in base64) - no client
-// protocol of our own. Blocking, one short HTTP/1.1 request per call, each within a deadline: the
-// timeline calls it from a thread of its own, never from the tick loop or the network thread.
+// protocol of our own. Blocking, one short HTTP/1.1 request per call, each within a deadline (a
+// host name's lookup excepted: give the store as an address where that matters): the timeline
+// calls it from a thread of its own, never from the tick loop or the network thread.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +27,7 @@ struct EtcdResult {
   bool succeeded = false;      // a transaction's comparison held (put_if_absent wrote)
   std::vector<EtcdKeyValue> kvs;  // a range's keys and values, in key order
   bool more = false;           // a range stopped at its limit
+  bool maybe_applied = false;  // an error after the request was sent: the store may have done it
 };
 
 class EtcdGateway {

@@ -63,22 +63,24 @@ std::string TimelineLog::key(std::uint64_t index) const {
 }
 
 TimelineLog::Appended TimelineLog::append(const std::string& bytes) {
+  thread_local std::minstd_rand jitter{std::random_device{}()};
   for (int attempt = 0; attempt < kAppendAttempts; ++attempt) {
+    if (attempt > 0) {
+      // Taken: another replica appended there. A few milliseconds at random (replicas that keep
+      // colliding fall out of step), then after the log's last entry as it is now.
+      std::this_thread::sleep_for(std::chrono::microseconds(1000 + jitter() % (4000u << std::min(attempt, 3))));
+      const EtcdResult last = store_.range(key(next_), address_.prefix + "/log0", 1, true);
+      if (!last.error.empty()) return {last.error, 0};
+      std::uint64_t index = 0;
+      if (last.kvs.empty() || !parse_index(last.kvs.front().key, address_.prefix + "/log/", index))
+        return {"the log at " + address_.prefix + " holds a key that is not an entry's", 0};
+      next_ = index + 1;
+    }
     const EtcdResult put = store_.put_if_absent(key(next_), bytes);
+    if (!put.error.empty() && put.maybe_applied)
+      return {"the append's outcome is unknown (it may have been written at " + std::to_string(next_) + "): " + put.error, 0};
     if (!put.error.empty()) return {put.error, 0};
     if (put.succeeded) return {"", next_++};
-    // Taken: another replica appended there. Find the log's last entry and try after it.
-    const EtcdResult last = store_.range(key(next_), address_.prefix + "/log0", 1, true);
-    if (!last.error.empty()) return {last.error, 0};
-    const std::string head = address_.prefix + "/log/";
-    std::uint64_t index = 0;
-    if (last.kvs.empty() || !parse_index(last.kvs.front().key, head, index)) {
-      return {"the log at " + address_.prefix + " holds a key that is not an entry's", 0};
-    }
-    next_ = index + 1;
-    // A few milliseconds at random before trying again: replicas that keep colliding fall out of step.
-    thread_local std::minstd_rand jitter{std::random_device{}()};
-    std::this_thread::sleep_for(std::chrono::microseconds(1000 + jitter() % (4000u << std::min(attempt, 3))));
   }
   return {"the log at " + address_.prefix + " kept growing under " + std::to_string(kAppendAttempts) +
               " attempts to append (too many replicas appending at once)",
@@ -87,6 +89,7 @@ TimelineLog::Appended TimelineLog::append(const std::string& bytes) {
 
 TimelineLog::Read TimelineLog::read_from(std::uint64_t from, std::size_t max) const {
   Read read;
+  if (max == 0) return read;  // etcd's limit 0 would mean no limit
   const EtcdResult range = store_.range(key(from), address_.prefix + "/log0", static_cast<std::int64_t>(max));
   if (!range.error.empty()) {
     read.error = range.error;

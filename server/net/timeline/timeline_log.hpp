@@ -37,7 +37,9 @@ class TimelineLog {
     std::string error;  // empty: written at `index`
     std::uint64_t index = 0;
   };
-  // Appends after the last entry written, whoever wrote it.
+  // Appends after the last entry written, whoever wrote it. An error after the write was sent
+  // (the store went away, or timed out) leaves its outcome unknown, and says so: a caller that
+  // would retry puts an id of its own in the entry and looks for it first.
   Appended append(const std::string& bytes);
 
   struct Read {
