@@ -61,8 +61,9 @@ bool load_sky(const char* dir, SkyFaces& out, std::string& error) {
     if (load_sky_faces(d, out, why)) return true;
     tried += "\n  " + why;
   }
-  error = "no sky cube map found (build the ocean_sky_assets target, or set RendererDesc::sky_dir or "
-          "$OCEAN_SKY_DIR to a folder holding px.png .. nz.png); tried:" + (tried.empty() ? std::string(" nothing") : tried);
+  error = "no sky cube map found (build the ocean_sky_assets target, or give ocean-viewer --sky, "
+          "RendererDesc::sky_dir or $OCEAN_SKY_DIR a folder holding px.png .. nz.png, as ocean-skygen "
+          "paints them); tried:" + (tried.empty() ? std::string(" nothing") : tried);
   return false;
 }
 
