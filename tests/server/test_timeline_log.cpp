@@ -4,19 +4,19 @@
 // with nothing lost.
 #include "timeline_log.hpp"
 
+#include "server_process.hpp"
+
 #include <asio/io_context.hpp>
 #include <asio/ip/tcp.hpp>
 #include <asio/write.hpp>
 #include <catch2/catch.hpp>
 
 #include <chrono>
-#include <csignal>
 #include <filesystem>
+#include <optional>
 #include <cstdlib>
 #include <set>
 #include <string>
-#include <sys/prctl.h>
-#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
@@ -40,7 +40,7 @@ class EtcdProcess {
     home_ = folder;
     data_ = home_ / "data";
     // A port probed free may be taken before etcd binds it (parallel tests): then new ports.
-    for (int attempt = 0; attempt < 3 && pid_ <= 0; ++attempt) {
+    for (int attempt = 0; attempt < 3 && !process_; ++attempt) {
       std::filesystem::remove_all(data_);  // a member bootstrapped on other ports would refuse new ones
       client_port_ = free_port();
       peer_port_ = free_port();
@@ -57,23 +57,18 @@ class EtcdProcess {
     const std::string client = "http://127.0.0.1:" + std::to_string(client_port_);
     const std::string peer = "http://127.0.0.1:" + std::to_string(peer_port_);
     const std::string log = (home_ / "etcd.log").string();
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-      FILE* out = std::freopen(log.c_str(), "a", stdout);
-      if (out) ::dup2(::fileno(stdout), 2);
-      ::execl("/usr/bin/etcd", "etcd", "--data-dir", data_.c_str(), "--listen-client-urls", client.c_str(),
-              "--advertise-client-urls", client.c_str(), "--listen-peer-urls", peer.c_str(),
-              "--initial-advertise-peer-urls", peer.c_str(), "--initial-cluster", ("default=" + peer).c_str(),
-              static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    REQUIRE(pid_ > 0);
+    ocean::test_support::ServerOptions options;
+    options.program = "/usr/bin/etcd";
+    options.args = {"--data-dir", data_.string(), "--listen-client-urls", client, "--advertise-client-urls", client,
+                    "--listen-peer-urls", peer, "--initial-advertise-peer-urls", peer, "--initial-cluster", "default=" + peer};
+    options.log_path = log;
+    options.wait_listening = false;
+    process_.emplace(options);
     const EtcdGateway probe({"127.0.0.1", client_port_}, 0.5);
     for (int i = 0; i < 200; ++i) {
       if (probe.range("a", "b", 1).error.empty()) return true;
-      if (!must && ::waitpid(pid_, nullptr, WNOHANG) == pid_) {
-        pid_ = -1;
+      if (!must && !process_->alive()) {
+        process_.reset();
         return false;
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -81,18 +76,13 @@ class EtcdProcess {
     FAIL("etcd did not answer on port " << client_port_ << " within 10 s (is etcd-server installed? see " << log << ")");
     return false;
   }
-  void stop() {
-    if (pid_ <= 0) return;
-    ::kill(pid_, SIGKILL);
-    ::waitpid(pid_, nullptr, 0);
-    pid_ = -1;
-  }
+  void stop() { process_.reset(); }  // SIGKILL
   std::string url(const std::string& prefix) const { return "etcd://127.0.0.1:" + std::to_string(client_port_) + prefix; }
 
  private:
   std::filesystem::path home_, data_;  // a folder of its own: its data and its log
   std::uint16_t client_port_ = 0, peer_port_ = 0;
-  pid_t pid_ = -1;
+  std::optional<ocean::test_support::ServerProcess> process_;  // killed with the test process too
 };
 
 TimelineLog log_at(const std::string& url) {

@@ -50,6 +50,7 @@ std::string temporary_log_path() {
 }  // namespace
 
 std::string build_binary(const std::string& program) {
+  if (!program.empty() && program.front() == '/') return program;  // a system program, as it is
   const char* build = std::getenv("OCEAN_BUILD_DIR");
   return std::string(build ? build : ".") + "/" + program;
 }

@@ -23,7 +23,7 @@ namespace ocean::test_support {
 
 // $OCEAN_BUILD_DIR/server/ocean-server; CTest sets OCEAN_BUILD_DIR (ocean_add_test), "." otherwise.
 std::string server_binary();
-// $OCEAN_BUILD_DIR/`program`.
+// $OCEAN_BUILD_DIR/`program`; an absolute `program` as it is (a store a test runs beside).
 std::string build_binary(const std::string& program);
 
 // The ports of the first "listening" line in `log`; 0 for one that is "off".
