@@ -27,6 +27,10 @@ double median(const std::deque<double>& values) {
   std::sort(sorted.begin(), sorted.end());
   return sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
 }
+void keep_recent(std::deque<double>& recent, double ms) {
+  recent.push_back(ms);
+  if (recent.size() > kRecentDecodes) recent.pop_front();
+}
 }  // namespace
 
 double WebViewer::now() const { return emscripten_get_now() / 1000.0; }
@@ -117,8 +121,8 @@ void WebViewer::on_message(std::span<const std::uint8_t> bytes) {
   const std::uint64_t completed = session_->stats().frames_complete - before;
   if (completed > 0) {  // handling of messages that carry no frame is not decode
     decode_ms_ += spent_ms;
-    recent_decode_ms_.push_back(spent_ms);
-    if (recent_decode_ms_.size() > kRecentDecodes) recent_decode_ms_.pop_front();
+    keep_recent(recent_decode_ms_, spent_ms);
+    keep_recent(recent_message_ms_, handled_ms / static_cast<double>(completed));
   }
   if (!pending_end_.empty()) end_session(pending_end_);
   else if (session_->state() == client::ClientSession::State::closed) end_session(session_->close_reason());
@@ -245,10 +249,10 @@ void WebViewer::frame(double now_s, int width, int height) {
   }
   if (hud_on_) gl_ms += draw_hud(width, height);
   ++rendered_;
-  recent_page_ms_.push_back(emscripten_get_now() - started_ms - gl_ms + messages_ms_);
-  if (recent_page_ms_.size() > kRecentDecodes) recent_page_ms_.pop_front();
-  recent_gl_ms_.push_back(gl_ms);
-  if (recent_gl_ms_.size() > kRecentDecodes) recent_gl_ms_.pop_front();
+  const double frame_work_ms = emscripten_get_now() - started_ms - gl_ms;
+  keep_recent(recent_frame_work_ms_, frame_work_ms);
+  keep_recent(recent_page_ms_, frame_work_ms + messages_ms_);
+  keep_recent(recent_gl_ms_, gl_ms);
   messages_ms_ = 0.0;
 }
 
@@ -277,7 +281,11 @@ std::string WebViewer::report() const {
   json.integer("connects", connects_).integer("messages", messages_in_).integer("bytes", bytes_in_);
   json.integer("frames", frames_).integer("uploads", uploads_).integer("rendered", rendered_);
   json.fixed("decode_ms_per_frame", frames_ ? decode_ms_ / static_cast<double>(frames_) : 0.0, 4);
-  json.fixed("decode_ms_median", median(recent_decode_ms_), 4).fixed("page_ms_median", median(recent_page_ms_), 4);
+  json.fixed("decode_ms_median", median(recent_decode_ms_), 4)
+      .fixed("page_ms_median", median(recent_frame_work_ms_) + median(recent_message_ms_), 4)
+      .fixed("frame_work_ms_median", median(recent_frame_work_ms_), 4)
+      .fixed("message_ms_median", median(recent_message_ms_), 4)
+      .fixed("page_ms_per_animation_frame_median", median(recent_page_ms_), 4);
   json.fixed("gl_ms_median", median(recent_gl_ms_), 4);
   json.fixed("connect_ms", connect_ms_, 1).fixed("open_ms", open_ms_, 1).fixed("welcome_ms", welcome_ms_, 1);
   json.fixed("first_frame_ms", first_frame_ms_, 1);

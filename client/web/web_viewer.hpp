@@ -114,12 +114,15 @@ class WebViewer {
   // a decode budget is held to (a joining key, which may compute a wake's history, is one of them).
   std::deque<double> recent_decode_ms_;
   double frame_callback_ms_ = 0.0;  // on_frame's own time within the message being handled
-  // The page's own cost per animation frame (issue 38: what transfers to a phone, whose GPU
-  // rasterizes): frame()'s JavaScript and WebAssembly outside the calls that issue GL, plus every
-  // message handled since the last one; and apart, the time inside those GL calls, which here
-  // includes waiting for the browser's software rasterizer.
+  // The page's own cost (issue 38: what transfers to a phone, whose GPU rasterizes): frame()'s
+  // JavaScript and WebAssembly outside the calls that issue GL, and apart the handling of each
+  // message that completed a frame (on_frame included). Their medians' sum is the cost of a frame
+  // at the stream's rate, whatever the rasterizer's: under a software one the page draws half as
+  // often as frames arrive and each animation frame handles two, which a phone's GPU does not
+  // make it do. Kept too: the cost per animation frame as it falls here (messages since the last
+  // one included), and the time inside the GL calls, waiting for the software rasterizer.
   double messages_ms_ = 0.0;
-  std::deque<double> recent_page_ms_, recent_gl_ms_;
+  std::deque<double> recent_frame_work_ms_, recent_message_ms_, recent_page_ms_, recent_gl_ms_;
   // Startup, in the page's milliseconds from navigation (performance.now()); -1 until it happens.
   double connect_ms_ = -1.0, open_ms_ = -1.0, welcome_ms_ = -1.0, first_frame_ms_ = -1.0;
   double last_frame_s_ = 0.0, fps_ = 0.0, kbps_sampled_s_ = 0.0;

@@ -145,7 +145,8 @@ def main():
         if args.follow >= 0 and report.get("vessels_in_view", 0) == 0:
             failures.append(f"following vessel {args.follow}, the page draws no hull")
         # issue 38: the page's own work per frame (its JavaScript, WebAssembly and GL calls, and the
-        # messages it handled), which a phone's CPU pays whatever its GPU; not SwiftShader's raster.
+        # message that brought the frame), which a phone's CPU pays whatever its GPU; not
+        # SwiftShader's raster, nor the second message each of its slow animation frames handles.
         if report["page_ms_median"] > MAX_PAGE_MS:
             failures.append(f"the page's own cost is {report['page_ms_median']} ms a frame (median), over {MAX_PAGE_MS}")
         socket_url = browser.run("return document.getElementById('server').value;")
@@ -158,7 +159,10 @@ def main():
                           "frames": report["frames"], "keyframes": report.get("keyframes"), "fps": round(fps, 2),
                           "triangles": report.get("triangles"), "draw_calls": report.get("draw_calls"),
                           "decode_ms_per_frame": report["decode_ms_per_frame"],
-                          "decode_ms_median": report["decode_ms_median"], "page_ms_median": report["page_ms_median"], "gl_ms_median": report["gl_ms_median"],
+                          "decode_ms_median": report["decode_ms_median"], "page_ms_median": report["page_ms_median"],
+                          "frame_work_ms_median": report["frame_work_ms_median"], "message_ms_median": report["message_ms_median"],
+                          "page_ms_per_animation_frame_median": report["page_ms_per_animation_frame_median"],
+                          "gl_ms_median": report["gl_ms_median"],
                           "first_frame_ms": report["first_frame_ms"], "kbps": report["kbps"],
                           "frames_compared_with_native": len(compared), "mismatched": len(mismatched),
                           "sky_rgb": [round(v, 3) for v in sky], "water_rgb": [round(v, 3) for v in water],
