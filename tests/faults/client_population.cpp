@@ -56,6 +56,7 @@ ClientPopulation::ClientPopulation(std::uint16_t port, int udp_clients, int tcp_
     config.session.profile_id = profile_id;
     config.session.transport = track.udp ? wire::Transport::udp : wire::Transport::tcp;
     config.session.client_name = "faults-good-" + std::to_string(i);
+    config.session.decode_memo = [this](const codec::StreamConfig& stream) { return memo_for(stream); };
     const auto index = static_cast<std::size_t>(i);
     track.connection = client::ClientConnection::create(
         io_, config, [this, index](const codec::ReconstructedFrame&, std::uint32_t tick, double arrival_s) {
@@ -70,6 +71,12 @@ ClientPopulation::ClientPopulation(std::uint16_t port, int udp_clients, int tcp_
   asio::post(io_, [this] {
     for (Track& t : tracks_) t.connection->start();
   });
+}
+
+codec::DecodeMemo* ClientPopulation::memo_for(const codec::StreamConfig& config) {
+  for (const auto& memo : memos_)
+    if (memo->config() == config) return memo.get();
+  return memos_.emplace_back(std::make_unique<codec::DecodeMemo>(config)).get();
 }
 
 ClientPopulation::~ClientPopulation() {

@@ -1,7 +1,10 @@
 // ClientPopulation: well-behaved ClientConnections (UDP and TCP) on one io_context thread, each
 // frame judged on time as the load test judges it (frame_verdict's arrived_on_time against the
 // client's fastest arrival so far, plus the interpolation delay), so a test can ask what share of
-// the frames a window of ticks owed each client arrived in time.
+// the frames a window of ticks owed each client arrived in time. Its clients share their decoding
+// as the load test's do (a DecodeMemo per stream): on one thread, 13 clients each building a new
+// scene's model at its first frame held the last one's frames 100 ms and more, which a fault test
+// took for the server's lateness.
 #pragma once
 
 #include <asio/executor_work_guard.hpp>
@@ -18,6 +21,7 @@
 #include <vector>
 
 #include "client_connection.hpp"
+#include "decode_memo.hpp"
 #include "message_types.hpp"
 
 namespace ocean::faults {
@@ -80,6 +84,8 @@ class ClientPopulation {
   template <typename F>
   auto on_io(F&& f) const;  // runs f on the io thread and waits for its result
 
+  codec::DecodeMemo* memo_for(const codec::StreamConfig& config);  // on the io thread only
+  std::vector<std::unique_ptr<codec::DecodeMemo>> memos_;
   mutable asio::io_context io_;
   asio::executor_work_guard<asio::io_context::executor_type> work_;
   std::vector<Track> tracks_;

@@ -1,6 +1,6 @@
 // Issue 33, the real server: nobody locks others out. Connections churned from one address range
-// at the rate one process can, slow and idle page connections from many addresses, one address
-// holding every slot, an empty WebSocket Origin, token guessing from many addresses and the
+// 400 times faster than its connect rate, slow and idle page connections from many addresses, one
+// address holding every slot, an empty WebSocket Origin, token guessing from many addresses and the
 // operator behind the guessers' NAT, and a flood of admin changes - each beside viewers who must
 // keep streaming. Figures are printed ("[lockouts]" lines).
 #include <catch2/catch.hpp>
@@ -91,7 +91,7 @@ int page_loads(std::uint16_t web_port, int n) {
 
 }  // namespace
 
-TEST_CASE("connections churned from one address range at 60 000 a second let every probing newcomer in",
+TEST_CASE("connections churned from one address range at 20 000 a second let every probing newcomer in",
           "[lockouts]") {
   // 100 viewers (97 on UDP, 3 on TCP) share 127.0.0.1 with the newcomers: no per-address
   // connection limit, and room for them all to say Hello at once (they join within the default
@@ -107,14 +107,16 @@ TEST_CASE("connections churned from one address range at 60 000 a second let eve
   std::atomic<bool> stop{false};
   std::atomic<std::uint64_t> churned{0};
   std::vector<std::thread> churners;
-  // Four threads at 15 000 connections a second each: 1200 times the range's connect rate. Not
-  // "as fast as they go": that was 50 000-75 000 a second on the 2-core machines this test was
-  // written on and 150 000 on a later kernel, where the churner's own handshakes (loopback: both
-  // ends' kernel work on the server's two cores) starve every process, the server's included, and
-  // the test measured the kernel. A sanitizer's server is several times slower at everything,
-  // accepting included: one thread at 6400 a second there.
+  // Four threads at 5 000 connections a second each: 400 times the range's connect rate, and more
+  // than the 13 400 a second that let 1 of 11 newcomers in before the door was built. Not faster:
+  // "as fast as they go" was 50 000-75 000 a second on the 2-core machines this test was written
+  // on and 150 000 on a later kernel, and there, and at 66 000 on a CI machine, the churner's own
+  // handshakes (loopback: both ends' kernel work on the server's two cores) starved every
+  // process, the viewers' included (7 % on time): the test measured the kernel. A sanitizer's
+  // server is several times slower at everything, accepting included: one thread at 6400 a
+  // second there.
   const int threads = kTimingMeasurable ? 4 : 1;
-  const auto batch_interval = kTimingMeasurable ? microseconds(128'000'000 / 15'000) : milliseconds(20);
+  const auto batch_interval = kTimingMeasurable ? microseconds(128'000'000 / 5'000) : milliseconds(20);
   for (int t = 0; t < threads; ++t)
     churners.emplace_back([&, t] {
       const std::string from = loopback(1, 2 + t);
