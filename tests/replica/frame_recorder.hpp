@@ -1,6 +1,8 @@
 // FrameRecorder: a raw TCP client of one server, built from the protocol builders and readers
-// only (no decoder, no ClientSession), that asks for one profile on TCP - a keyframe, then deltas
-// each predicted from the frame before - and records every FrameChunk exactly as it arrived.
+// only, that asks for one profile on TCP - a keyframe, then deltas each predicted from the frame
+// before - and records every FrameChunk exactly as it arrived. Its messages also pass, as they
+// came, through a ClientSession that only listens (as ocean-web-replay does): the hash of each
+// decoded frame's heights, the sea the viewer would draw, by tick.
 #pragma once
 
 #include <asio/connect.hpp>
@@ -16,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "client_session.hpp"
+#include "height_hash.hpp"
 #include "message_builders.hpp"
 #include "frame_records.hpp"
 #include "message_readers.hpp"
@@ -39,7 +43,8 @@ class FrameRecorder {
  public:
   // Connects at once (blocking); the Hello waits for send_hello(), so a test can time it.
   FrameRecorder(asio::io_context& io, const asio::ip::tcp::endpoint& server, std::uint8_t profile_id)
-      : socket_(io), profile_id_(profile_id) {
+      : socket_(io), profile_id_(profile_id), decoder_(decoder_config(), decoder_events(sea_)) {
+    decoder_.start(0.0);
     socket_.connect(server);
     socket_.set_option(asio::ip::tcp::no_delay(true));
     do_read();
@@ -67,6 +72,10 @@ class FrameRecorder {
   const std::map<Tick, RecordedFrame>& frames() const { return frames_; }
   const std::optional<protocol::Welcome>& welcome() const { return welcome_; }
   std::optional<Tick> first_key_tick() const { return first_key_tick_; }
+  // hash_heights of each frame the listening ClientSession decoded, by tick.
+  const std::map<Tick, std::uint64_t>& sea() const { return sea_; }
+  // The scene changes announced since the Welcome, in arrival order.
+  const std::vector<protocol::SceneUpdate>& scene_updates() const { return scene_updates_; }
   std::optional<Tick> newest_tick() const {
     return frames_.empty() ? std::nullopt : std::optional<Tick>(frames_.rbegin()->first);
   }
@@ -99,7 +108,20 @@ class FrameRecorder {
     });
   }
 
+  static client::ClientSessionConfig decoder_config() {
+    client::ClientSessionConfig config;
+    config.transport = wire::Transport::tcp;
+    config.close_on_bad_tcp_message = false;  // a refusal shows as faults() below, not as a closed decoder
+    return config;
+  }
+  static client::ClientSessionEvents decoder_events(std::map<Tick, std::uint64_t>& sea) {
+    client::ClientSessionEvents events;
+    events.on_frame = [&sea](const codec::ReconstructedFrame& frame, Tick tick) { sea.emplace(tick, client::hash_heights(frame.height)); };
+    return events;
+  }
+
   void on_message(std::span<const std::uint8_t> bytes) {
+    decoder_.on_tcp_message(bytes, 0.0);
     const std::size_t limit = welcome_ ? welcome_->max_message_bytes : protocol::kDefaultMaxMessageBytes;
     const protocol::Verified v = protocol::verify_message(bytes, {protocol::Sender::server, wire::Transport::tcp, limit});
     if (!v) {
@@ -115,6 +137,8 @@ class FrameRecorder {
       if (const protocol::FrameBlockResult r = protocol::decode_frame_block(data->frames, records); !r)
         faults_.push_back("refused FrameData: " + r.rule);
       for (const protocol::FrameRecord& record : records) this->record(record);
+    } else if (const auto* update = std::get_if<protocol::SceneUpdate>(&message)) {
+      scene_updates_.push_back(*update);
     } else if (const auto* e = std::get_if<protocol::Error>(&message)) {
       faults_.push_back("Error: " + e->text);
     }
@@ -142,6 +166,9 @@ class FrameRecorder {
   std::optional<protocol::Welcome> welcome_;
   std::map<Tick, RecordedFrame> frames_;
   std::optional<Tick> first_key_tick_;
+  std::vector<protocol::SceneUpdate> scene_updates_;
+  std::map<Tick, std::uint64_t> sea_;  // before decoder_, which writes it
+  client::ClientSession decoder_;
   std::vector<std::string> faults_;
   bool closed_ = false;
 };

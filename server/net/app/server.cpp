@@ -362,9 +362,13 @@ HttpReply Server::handle_http(const HttpRequest& request) {
               "stalled: the network thread served no tick for " + std::to_string((steady_ms() - beat) / 1000) + " s\n"};
     return {200, "text/plain; charset=utf-8", "ok\n"};
   }
-  if (request.target == "/readyz")
-    return ready_.load() ? HttpReply{200, "text/plain; charset=utf-8", "ready\n"}
-                         : HttpReply{503, "text/plain; charset=utf-8", "starting\n"};
+  if (request.target == "/readyz") {
+    if (!ready_.load()) return {503, "text/plain; charset=utf-8", "starting\n"};
+    std::lock_guard lock(readiness_mutex_);
+    const std::string why_not = readiness_check_ ? readiness_check_() : std::string();
+    return why_not.empty() ? HttpReply{200, "text/plain; charset=utf-8", "ready\n"}
+                           : HttpReply{503, "text/plain; charset=utf-8", why_not + "\n"};
+  }
   return {404, "text/plain; charset=utf-8", "not found; try /metrics, /healthz or /readyz\n"};
 }
 

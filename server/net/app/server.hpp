@@ -71,6 +71,12 @@ class Server : public DatagramSocket {
   void set_datagram_handler(DatagramHandler handler) { datagram_handler_ = std::move(handler); }
   // Runs on the network thread when shutdown begins, before the context runs dry (Bye to all).
   void set_stop_handler(StopHandler handler) { stop_handler_ = std::move(handler); }
+  // Thread-safe; runs on the probes' thread at each /readyz once the first frame is out: "" when
+  // the server is ready, else why not (the fleet's timeline is stale).
+  void set_readiness_check(std::function<std::string()> check) {
+    std::lock_guard lock(readiness_mutex_);
+    readiness_check_ = std::move(check);
+  }
   // Thread-safe: the simulation switches to this scene at tick `from` (admin ParamChange; the
   // hub announced it to the clients first).
   void request_scene(const model::SceneParams& scene, std::int64_t from);
@@ -169,6 +175,8 @@ class Server : public DatagramSocket {
   FrameProducer producer_;  // used only on the simulation thread
   BoundedQueue<std::shared_ptr<const TickFrames>> frames_{4};
   std::atomic<bool> ready_{false};
+  std::mutex readiness_mutex_;
+  std::function<std::string()> readiness_check_;
   bool stopping_ = false;
   TickLoop tick_loop_;      // last: its thread must stop before anything it touches goes away
 };

@@ -52,6 +52,14 @@ class ServerMetrics {
   Counter& sighups;                 // SIGHUPs received (the TLS certificate is read again; nothing else)
   Counter& tls_reload_failures;     // SIGHUPs whose certificate could not be read (the old one stays)
   Counter& log_write_failures;      // log lines that could not be written (a reader gone, a full disk)
+  // The fleet's timeline (--timeline): entries applied, entries read after their tick, this
+  // replica's appends the store refused or never confirmed; entries read, and seconds since the
+  // store last answered a read (-1 before the first).
+  Counter& timeline_entries;
+  Counter& timeline_late_entries;
+  Counter& timeline_refused;
+  Gauge& timeline_index;
+  Gauge& timeline_age_seconds;
 
   Counter& frames_computed(std::string_view profile);
   Summary& encode_seconds(std::string_view profile);  // encoder time of that profile in a tick that encoded

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <malloc.h>
+#include <random>
 
 namespace ocean::server {
 
@@ -17,14 +18,20 @@ Tick tick_now(const ServerConfig& config) {
   return static_cast<Tick>(std::max<std::int64_t>(0, tick));
 }
 
-SessionCoreHost host_of(Server& server) {
+SessionCoreHost host_of(Server& server, std::function<void(TimelineChange)> propose, std::uint64_t origin) {
   return SessionCoreHost{server.config(), server.schedule(), server.metrics(), server.cookie_key(), server,
                          server.config().udp_public_port ? static_cast<std::uint16_t>(server.config().udp_public_port)
                                                          : server.udp_port(),
                          [&server](const model::SceneParams& scene, std::int64_t from) { server.request_scene(scene, from); },
                          [&server](const std::vector<model::VesselTrack>& vessels, std::int64_t from) {
                            server.request_vessels(vessels, from);
-                         }};
+                         },
+                         std::move(propose), origin};
+}
+
+std::uint64_t random_origin() {
+  std::random_device random;
+  return (static_cast<std::uint64_t>(random()) << 32 | random()) | 1;  // never 0
 }
 
 // A warning about overload at most this often.
@@ -34,7 +41,12 @@ constexpr double kWarnEvery_s = 10.0;
 
 SessionHub::SessionHub(Server& server, SessionCoreOptions options)
     : server_(server),
-      core_(host_of(server), options, tick_now(server.config())),
+      timeline_origin_(random_origin()),
+      core_(host_of(server,
+                    server.config().timeline.empty() ? std::function<void(TimelineChange)>()
+                                                     : [this](TimelineChange change) { timeline_->propose(std::move(change)); },
+                    timeline_origin_),
+            options, tick_now(server.config())),
       budget_(server.config().admission_target.value_or(AdmissionBudget::kDefaultTarget)),
       connect_rate_(server.config().connect_rate_per_ip, std::max(10.0, 2.0 * server.config().connect_rate_per_ip)),
       connect_rate_rejects_(server.metrics().rejects("connect_rate")) {
@@ -48,7 +60,10 @@ SessionHub::SessionHub(Server& server, SessionCoreOptions options)
   });
   server_.set_frame_sink([this](const std::shared_ptr<const TickFrames>& frames) { on_frames(frames); });
   server_.set_stop_handler([this] { core_.stop(); });
+  if (!server.config().timeline.empty()) follow_timeline();
 }
+
+SessionHub::~SessionHub() { timeline_.reset(); }
 
 void SessionHub::on_connection(asio::ip::tcp::socket socket, const StreamTransport& transport) {
   {
@@ -96,6 +111,7 @@ void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
     trim_until_tick_ = frames->tick + 10 * tick_rate;
   }
   if (frames->tick <= trim_until_tick_ && frames->tick % tick_rate == 0) malloc_trim(0);
+  if (timeline_ && frames->tick % tick_rate == 0) publish_timeline_metrics();
   const double served_s = now_instant().monotonic_s - now.monotonic_s;
   server_.metrics().serve_seconds.observe(served_s);
   window_session_ticks_ += static_cast<double>(core_.session_count());

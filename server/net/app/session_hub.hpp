@@ -10,7 +10,10 @@
 #include "server.hpp"
 #include "session_core.hpp"
 #include "thread_schedule.hpp"
+#include "timeline_follower.hpp"
 
+#include <atomic>
+#include <memory>
 #include <optional>
 
 namespace ocean::server {
@@ -18,6 +21,7 @@ namespace ocean::server {
 class SessionHub {
  public:
   SessionHub(Server& server, SessionCoreOptions options = {});
+  ~SessionHub();
   SessionHub(const SessionHub&) = delete;
   SessionHub& operator=(const SessionHub&) = delete;
 
@@ -30,8 +34,16 @@ class SessionHub {
   // thread's time running and waiting for a CPU (the kernel's figures; the timed work where the
   // kernel keeps none).
   void account(double busy_s, double now_s);
+  // The fleet's timeline (--timeline): its follower hands entries and refusals to the network
+  // thread; /readyz says not ready while the store has not answered for kTimelineStaleS, or once
+  // an entry came after its tick.
+  void follow_timeline();
+  std::uint64_t read_timeline_history(const TimelineAddress& address);  // the next entry to read
+  std::string timeline_readiness() const;
+  void publish_timeline_metrics();
 
   Server& server_;
+  const std::uint64_t timeline_origin_;  // this replica's mark on the timeline entries it appends
   SessionCore core_;
   AdmissionBudget budget_;
   ConnectRate connect_rate_;
@@ -44,6 +56,14 @@ class SessionHub {
   std::uint64_t streams_released_ = 0;  // core_.streams_released() last seen
   std::int64_t trim_until_tick_ = -1;    // memory is handed back to the system until this tick
   double last_warning_s_ = -1e9;
+  std::atomic<std::uint64_t> timeline_diverged_{0};  // the first entry read after its tick; 0 none
+  std::unique_ptr<TimelineFollower> timeline_;  // last: stopped before anything its handlers reach
 };
+
+// A replica whose timeline store has not answered a read for this long says it is not ready: an
+// entry appended meanwhile could take effect before this replica reads it (the lead is 1 s).
+inline constexpr double kTimelineStaleS = 0.5;
+// A replica that cannot read the timeline within this long at its start exits (status 1).
+inline constexpr double kTimelineStartS = 10.0;
 
 }  // namespace ocean::server

@@ -5,6 +5,7 @@
 #include "profile.hpp"
 #include "quoted.hpp"
 #include "scene_names.hpp"
+#include "timeline_log.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -281,6 +282,17 @@ const ConfigOption kOptions[] = {
        return {};
      },
      [](const ServerConfig& c) { return std::string(c.cookie_key.empty() ? "unset" : "set"); }},
+    {"timeline", "URL",
+     "the fleet's timeline, etcd://HOST:PORT/PREFIX: admin changes are appended to its log in etcd and every "
+     "server following it applies them at the same tick; unset = this server's changes are its own",
+     ValueKind::text, false,
+     [](ServerConfig& c, std::string_view v) -> std::string {
+       std::string error;
+       if (!parse_timeline_url(v, error)) return error;
+       c.timeline = std::string(v);
+       return {};
+     },
+     [](const ServerConfig& c) { return c.timeline.empty() ? std::string("unset") : c.timeline; }},
     {"idle-timeout", "SECONDS", "drop a client silent for this long, in (0, 3600]", ValueKind::number, false,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.idle_timeout_s); },
      [](const ServerConfig& c) { return show_number(c.idle_timeout_s); }},

@@ -86,6 +86,9 @@ struct ServerConfig {
   std::string admin_token_file;                   // empty = admin interface disabled
   std::string admin_token;                        // read from admin_token_file; never logged
   std::vector<std::uint8_t> cookie_key;           // empty = a random key per process
+  // The fleet's timeline (etcd://HOST:PORT/PREFIX, issue 37): admin changes go through its log and
+  // every replica following it applies them at the same ticks. Empty = this server's alone.
+  std::string timeline;
   double idle_timeout_s = 10.0;
   std::string log_level = "info";
 };

@@ -110,6 +110,12 @@ void SessionCore::apply_param_change(Session& session, const protocol::ParamChan
                         fmt::format("rate_limited: at most {:g} scene changes a second (a burst of {:g}); retry in {:.1f} s",
                                     options_.scene_changes_per_s, options_.scene_change_burst, wait_s + 0.05));
   }
+  if (host_.propose) {  // the fleet's timeline: applied when its log hands it back (core_timeline.cpp)
+    spdlog::info("param_change sent to the timeline session={} peer={} request={} for tick {}", session.id, session.peer(),
+                 change.request_id, from);
+    return host_.propose(
+        TimelineChange{host_.timeline_origin, session.id, protocol::SceneUpdate{change.request_id, from, scene, 0, std::move(fleet)}});
+  }
   if (host_.request_scene) host_.request_scene(scene, static_cast<std::int64_t>(from));
   const std::size_t vessels = fleet ? fleet->size() : 0;
   announce({scenes_.add_admin(tick_, scene, std::move(fleet))}, session.id, change.request_id);

@@ -19,6 +19,7 @@
 #include "server_metrics.hpp"
 #include "session.hpp"
 #include "session_table.hpp"
+#include "timeline_change.hpp"
 #include "udp_cookie.hpp"
 #include "wire_limits.hpp"
 
@@ -97,6 +98,11 @@ struct SessionCoreHost {
   std::function<void(const model::SceneParams& scene, std::int64_t from)> request_scene;
   // An accepted vessel command: the simulation's fleet from tick `from` on.
   std::function<void(const std::vector<model::VesselTrack>& vessels, std::int64_t from)> request_vessels = nullptr;
+  // With a fleet timeline (--timeline): an accepted change goes to its log, stamped with its tick,
+  // and is applied when the log hands it back (apply_logged), here as on every other replica.
+  // timeline_origin tells this replica's own entries from the others'.
+  std::function<void(TimelineChange change)> propose = nullptr;
+  std::uint64_t timeline_origin = 0;
 };
 
 // What the last tick did, for metrics and tests.
@@ -132,6 +138,16 @@ class SessionCore {
   // The sessions the host can serve (its measured capacity, AdmissionBudget): a Hello beyond it
   // is refused as server_full with a retry hint; admitted sessions keep their service.
   void set_session_limit(std::size_t limit) { session_limit_ = limit; }
+
+  // The fleet timeline's entry `index`, in log order: announced and applied at its tick, its admin
+  // answered when this replica took it. `history`: read before the first tick is served (the log
+  // as it stood when this replica started), so an entry whose tick has passed still sets the sea
+  // from that tick. Read later, such an entry is not applied (the replica no longer streams the
+  // log's sea: timeline_diverged() says from which entry).
+  void apply_logged(std::uint64_t index, const TimelineChange& change, bool history = false);
+  // A change this replica took that its log refused or never confirmed: its admin is told why.
+  void refuse_logged(const TimelineChange& change, const std::string& reason);
+  std::optional<std::uint64_t> timeline_diverged() const { return timeline_diverged_; }
 
   void set_frame_observer(FrameObserver observer) { observer_ = std::move(observer); }
   void set_tick_observer(TickObserver observer) { tick_observer_ = std::move(observer); }
@@ -247,6 +263,7 @@ class SessionCore {
   // The newest tick's frames and the one before (a HeightQuery's heights and their rate of change).
   std::shared_ptr<const TickFrames> newest_frames_, previous_frames_;
   std::vector<model::VesselTrack> vessels_;  // the fleet, as the newest announcement leaves it
+  std::optional<std::uint64_t> timeline_diverged_;  // the first log entry that came after its tick
   std::vector<const ProfileStream*> roots_full_;
   std::uint64_t streams_released_ = 0;  // this key tick: no new root, joiners wait
 };

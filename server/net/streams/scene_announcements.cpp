@@ -40,10 +40,25 @@ std::vector<AnnouncedScene> SceneAnnouncements::announce(Tick now) {
   return out;
 }
 
-const AnnouncedScene& SceneAnnouncements::add_admin(Tick now, const model::SceneParams& scene,
-                                                    std::optional<std::vector<model::VesselTrack>> vessels) {
-  const Tick from = now + lead_;
+const AnnouncedScene& SceneAnnouncements::add_at(Tick from, const model::SceneParams& scene,
+                                                 std::optional<std::vector<model::VesselTrack>> vessels) {
   const std::uint32_t serial = in_force(from).serial + 128;
+  return announced_[from] = AnnouncedScene{from, serial, scene, std::move(vessels)};
+}
+
+const AnnouncedScene& SceneAnnouncements::add_logged(Tick from, const model::SceneParams& scene,
+                                                     std::optional<std::vector<model::VesselTrack>> vessels) {
+  std::uint32_t predecessor = 0;  // the base scene's
+  Tick predecessor_from = 0;
+  const auto& changes = schedule_.changes();
+  for (std::size_t i = 0; i < changes.size() && static_cast<Tick>(changes[i].tick) <= from; ++i) {
+    predecessor = static_cast<std::uint32_t>(i + 1);
+    predecessor_from = static_cast<Tick>(changes[i].tick);
+  }
+  if (auto logged = logged_.upper_bound(from); logged != logged_.begin() && std::prev(logged)->first >= predecessor_from)
+    predecessor = std::prev(logged)->second;
+  const std::uint32_t serial = predecessor + 128;
+  logged_[from] = serial;
   return announced_[from] = AnnouncedScene{from, serial, scene, std::move(vessels)};
 }
 

@@ -37,7 +37,17 @@ class SceneAnnouncements {
   std::vector<AnnouncedScene> announce(Tick now);
   // An admin's scene from now + lead on (until the next schedule entry), already announced.
   const AnnouncedScene& add_admin(Tick now, const model::SceneParams& scene,
-                                  std::optional<std::vector<model::VesselTrack>> vessels = std::nullopt);
+                                  std::optional<std::vector<model::VesselTrack>> vessels = std::nullopt) {
+    return add_at(now + lead_, scene, std::move(vessels));
+  }
+  const AnnouncedScene& add_at(Tick from, const model::SceneParams& scene,
+                               std::optional<std::vector<model::VesselTrack>> vessels = std::nullopt);
+  // A fleet timeline's entry from tick `from`, past or future. Its serial is its predecessor's +
+  // 128, the predecessor found from the schedule and the entries logged before it alone (an entry
+  // wins over a schedule entry of its tick): a replica started after the entry numbers it as the
+  // replicas that announced it did.
+  const AnnouncedScene& add_logged(Tick from, const model::SceneParams& scene,
+                                   std::optional<std::vector<model::VesselTrack>> vessels = std::nullopt);
 
   // The announced scene in force at `tick` (start() must have run).
   const AnnouncedScene& in_force(Tick tick) const;
@@ -51,6 +61,7 @@ class SceneAnnouncements {
   Tick lead_;
   std::size_t next_entry_ = 0;           // the first schedule entry not announced yet
   std::map<Tick, AnnouncedScene> announced_;
+  std::map<Tick, std::uint32_t> logged_;  // every timeline entry's serial, by its first tick
 };
 
 }  // namespace ocean::server

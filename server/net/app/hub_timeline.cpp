@@ -1,0 +1,88 @@
+// SessionHub's side of the fleet's timeline (--timeline, issue 37): the follower's thread reads
+// and appends; what it brings is handed to the network thread, where the core applies each entry
+// in log order. /readyz and /metrics say how fresh the timeline is.
+#include "session_hub.hpp"
+
+#include "server_log.hpp"
+
+#include <asio/post.hpp>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <spdlog/spdlog.h>
+
+namespace ocean::server {
+
+void SessionHub::follow_timeline() {
+  std::string error;
+  std::optional<TimelineAddress> address = parse_timeline_url(server_.config().timeline, error);
+  if (!address) throw std::invalid_argument("--timeline: " + error);  // validate_server_config checked it
+  TimelineFollower::Handlers handlers;
+  handlers.entry = [this](std::uint64_t index, TimelineChange change) {
+    asio::post(server_.context(), [this, index, change = std::move(change)] {
+      core_.apply_logged(index, change);
+      if (const auto diverged = core_.timeline_diverged()) timeline_diverged_.store(*diverged);
+    });
+  };
+  handlers.refused = [this](const TimelineChange& change, const std::string& reason) {
+    asio::post(server_.context(), [this, change, reason] { core_.refuse_logged(change, reason); });
+  };
+  handlers.unreadable = [](std::uint64_t index, const std::string& reason) {
+    spdlog::error("timeline entry {} skipped (every replica skips it): {}", index, reason);
+  };
+  const std::uint64_t next = read_timeline_history(*address);
+  spdlog::info("following the fleet's timeline at etcd {}:{} prefix {} from entry {}", address->store.host,
+               address->store.port, address->prefix, next);
+  timeline_ = std::make_unique<TimelineFollower>(std::move(*address), std::move(handlers), next);
+  server_.set_readiness_check([this] { return timeline_readiness(); });
+}
+
+// The log as it stands, before the first tick is served: its entries set the sea from their ticks,
+// past ones included, so a replica started late streams the log's sea from its first frame. A
+// store that does not answer stops the start (exit 1): the config's sea is not the fleet's.
+std::uint64_t SessionHub::read_timeline_history(const TimelineAddress& address) {
+  TimelineLog log(address, 1.0);
+  std::uint64_t next = 1;
+  std::string last_error;
+  const double deadline = timeline_clock_s() + kTimelineStartS;
+  while (timeline_clock_s() < deadline) {
+    const TimelineLog::Read read = log.read_from(next, 256);
+    if (!read.error.empty()) {
+      last_error = read.error;
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      continue;
+    }
+    for (const TimelineEntry& entry : read.entries) {
+      std::string error;
+      if (const std::optional<TimelineChange> change = decode_change(entry.bytes, error))
+        core_.apply_logged(entry.index, *change, true);
+      else
+        spdlog::error("timeline entry {} skipped (every replica skips it): {}", entry.index, error);
+      next = entry.index + 1;
+    }
+    if (read.entries.size() < 256) return next;
+  }
+  throw std::runtime_error("--timeline: the store at " + address.store.host + ":" + std::to_string(address.store.port) +
+                           " did not answer within " + std::to_string(static_cast<int>(kTimelineStartS)) +
+                           " s (" + last_error + "); a server that cannot read the fleet's timeline does not start");
+}
+
+std::string SessionHub::timeline_readiness() const {
+  if (const std::uint64_t diverged = timeline_diverged_.load())
+    return "timeline: entry " + std::to_string(diverged) + " came after its tick; this server's sea is not the log's";
+  const double last = timeline_->last_read_s();
+  if (last < 0.0) return "timeline: the store has not answered yet";
+  const double age = timeline_clock_s() - last;
+  if (age > kTimelineStaleS)
+    return "timeline: stale, the store last answered " + std::to_string(age).substr(0, 5) + " s ago";
+  return {};
+}
+
+void SessionHub::publish_timeline_metrics() {
+  ServerMetrics& metrics = server_.metrics();
+  metrics.timeline_index.set(static_cast<double>(timeline_->entries_read()));
+  const double last = timeline_->last_read_s();
+  metrics.timeline_age_seconds.set(last < 0.0 ? -1.0 : timeline_clock_s() - last);
+}
+
+}  // namespace ocean::server

@@ -1,0 +1,50 @@
+// SessionCore's side of the fleet's timeline (--timeline, issue 37): the entries of the log, in
+// its order, each announced and applied at the tick the replica that took it stamped, as an admin
+// change is on a server of its own. Every replica runs this on the same entries, so all announce
+// the same scenes with the same serials from the same ticks and stream the same bytes.
+#include "session_core.hpp"
+
+#include "server_log.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace ocean::server {
+
+void SessionCore::apply_logged(std::uint64_t index, const TimelineChange& change, bool history) {
+  const protocol::SceneUpdate& update = change.update;
+  Session* requester = change.origin == host_.timeline_origin ? sessions_.find(change.session) : nullptr;
+  if ((update.effective_tick <= tick_ && !history) || timeline_diverged_) {
+    // Its tick has passed here (this replica read the log too late): whatever it streams from
+    // that tick on is not the log's sea. It says so, and applies nothing more.
+    if (!timeline_diverged_) {
+      timeline_diverged_ = index;
+      spdlog::error("timeline entry {} takes effect at tick {}, which this server has passed (tick {}): its sea is no "
+                    "longer the timeline's; not ready until restarted",
+                    index, update.effective_tick, tick_);
+    }
+    host_.metrics.timeline_late_entries.inc();
+    if (requester)
+      answer_error(*requester, protocol::Reason::internal_error,
+                   "the fleet's timeline handed the change back after its tick; retry", "param_change");
+    return;
+  }
+  std::optional<std::vector<model::VesselTrack>> fleet = update.vessels;
+  if (host_.request_scene) host_.request_scene(update.scene, static_cast<std::int64_t>(update.effective_tick));
+  const AnnouncedScene& announced = scenes_.add_logged(update.effective_tick, update.scene, std::move(fleet));
+  announce({announced}, requester ? std::optional(requester->id) : std::nullopt, update.request_id);
+  host_.metrics.timeline_entries.inc();
+  if (requester) host_.metrics.param_changes.inc();
+  spdlog::info("timeline entry {} applied: scene {} from tick {}{}", index, announced.serial, update.effective_tick,
+               requester ? " (taken here)" : history ? " (the log's history at start)" : "");
+}
+
+void SessionCore::refuse_logged(const TimelineChange& change, const std::string& reason) {
+  host_.metrics.timeline_refused.inc();
+  spdlog::warn("timeline append refused for request {} of session {}: {}", change.update.request_id, change.session, reason);
+  if (Session* session = sessions_.find(change.session))
+    answer_error(*session, protocol::Reason::internal_error,
+                 "the fleet's timeline did not confirm the change: " + reason,
+                 "param_change");
+}
+
+}  // namespace ocean::server
