@@ -43,7 +43,7 @@ class FrameRecorder {
  public:
   // Connects at once (blocking); the Hello waits for send_hello(), so a test can time it.
   FrameRecorder(asio::io_context& io, const asio::ip::tcp::endpoint& server, std::uint8_t profile_id)
-      : socket_(io), profile_id_(profile_id), decoder_(decoder_config(), decoder_events(sea_)) {
+      : socket_(io), profile_id_(profile_id), decoder_(decoder_config(), decoder_events(sea_, heights_)) {
     decoder_.start(0.0);
     socket_.connect(server);
     socket_.set_option(asio::ip::tcp::no_delay(true));
@@ -72,8 +72,9 @@ class FrameRecorder {
   const std::map<Tick, RecordedFrame>& frames() const { return frames_; }
   const std::optional<protocol::Welcome>& welcome() const { return welcome_; }
   std::optional<Tick> first_key_tick() const { return first_key_tick_; }
-  // hash_heights of each frame the listening ClientSession decoded, by tick.
+  // hash_heights of each frame the listening ClientSession decoded, by tick, and the heights.
   const std::map<Tick, std::uint64_t>& sea() const { return sea_; }
+  const std::map<Tick, std::vector<float>>& heights() const { return heights_; }
   // The scene changes announced since the Welcome, in arrival order.
   const std::vector<protocol::SceneUpdate>& scene_updates() const { return scene_updates_; }
   std::optional<Tick> newest_tick() const {
@@ -114,9 +115,13 @@ class FrameRecorder {
     config.close_on_bad_tcp_message = false;  // a refusal shows as faults() below, not as a closed decoder
     return config;
   }
-  static client::ClientSessionEvents decoder_events(std::map<Tick, std::uint64_t>& sea) {
+  static client::ClientSessionEvents decoder_events(std::map<Tick, std::uint64_t>& sea,
+                                                   std::map<Tick, std::vector<float>>& heights) {
     client::ClientSessionEvents events;
-    events.on_frame = [&sea](const codec::ReconstructedFrame& frame, Tick tick) { sea.emplace(tick, client::hash_heights(frame.height)); };
+    events.on_frame = [&sea, &heights](const codec::ReconstructedFrame& frame, Tick tick) {
+      sea.emplace(tick, client::hash_heights(frame.height));
+      heights.emplace(tick, frame.height);
+    };
     return events;
   }
 
@@ -167,7 +172,8 @@ class FrameRecorder {
   std::map<Tick, RecordedFrame> frames_;
   std::optional<Tick> first_key_tick_;
   std::vector<protocol::SceneUpdate> scene_updates_;
-  std::map<Tick, std::uint64_t> sea_;  // before decoder_, which writes it
+  std::map<Tick, std::uint64_t> sea_;  // before decoder_, which writes them
+  std::map<Tick, std::vector<float>> heights_;
   client::ClientSession decoder_;
   std::vector<std::string> faults_;
   bool closed_ = false;

@@ -29,11 +29,11 @@ inline constexpr std::int64_t kEpochUnixMs = 1767225600000;
 inline constexpr int kTickRateHz = 30;
 
 // With `vessels`, two vessels sail: the wake is the server's own sea (CODEC.md 7.9), and replicas
-// must author it alike.
-inline std::string replica_config_toml(bool vessels) {
+// must author it alike. With `metrics`, each replica serves /metrics and /readyz on a port of its own.
+inline std::string replica_config_toml(bool vessels, bool metrics = false) {
   return R"(# Written by tests/replica: every replica of this test reads this one file.
 listen = "127.0.0.1:0"
-metrics-listen = "off"
+metrics-listen = ")" + std::string(metrics ? "127.0.0.1:0" : "off") + R"("
 size = 64
 patch = 64.0
 spectrum = "jonswap"

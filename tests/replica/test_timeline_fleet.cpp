@@ -1,244 +1,20 @@
 // The fleet's timeline (issue 37) with real processes: one etcd and three ocean-server replicas of
-// one config following its log (--timeline). A scene change and a vessel command sent to replica A
-// by ocean-admin are announced by all three for the same tick with the same serial, and raw TCP
-// recordings of the three streams, from one keyframe tick across both changes, are byte-identical
-// frame for frame; a fourth replica started after the changes streams the same bytes from its first
-// keyframe. The time from ocean-admin's start to the last replica's announcement is printed.
+// one config following its log (--timeline). Changes sent to replica A by ocean-admin are announced
+// by all three for the same tick with the same serial; recordings of the three streams are
+// byte-identical and decode to the same sea across them, and a fourth replica started afterwards
+// streams that sea from its first frame. The store killed: the replicas go on and changes are
+// refused; back: changes flow again. One replica cut off from the store: it applies what it missed
+// when it reads it, and keys its viewers again. Figures are printed ("[timeline]" lines).
 #include <catch2/catch.hpp>
 
-#include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
-#include <limits>
-#include <map>
-#include <memory>
-#include <optional>
-#include <string>
-#include <thread>
-#include <vector>
+#include <cmath>
 
 #include "etcd_process.hpp"
-#include "frame_recorder.hpp"
-#include "profile.hpp"
-#include "replica_pair.hpp"
-#include "run_until.hpp"
-#include "stream_overlap.hpp"
+#include "timeline_fleet.hpp"
 
 using namespace ocean;
 using namespace ocean::replica_test;
-using ocean::test::run_until;
 using test_support::EtcdProcess;
-
-namespace {
-
-constexpr int kReplicas = 3;
-constexpr std::uint8_t kMobile = 1;
-
-// Three replicas of one config that follows the timeline at `timeline_url`.
-class TimelineFleet {
- public:
-  TimelineFleet(const std::string& timeline_url) {
-    std::ofstream(dir_.file("token")) << "fleet-admin-token\n";
-    // Top-level keys before the config's [[vessel]] tables (after them they would be a vessel's).
-    std::ofstream(dir_.file("ocean.toml")) << "timeline = \"" << timeline_url << "\"\n"
-                                           << "admin-token-file = \"" << dir_.file("token") << "\"\n"
-                                           << replica_config_toml(true);
-    for (int i = 0; i < kReplicas; ++i) start_replica();
-    for (auto& server : servers_) wait_listening(*server);
-  }
-  // One more replica of the same config (a restarted or rescheduled pod); its index.
-  int add_replica() {
-    start_replica();
-    wait_listening(*servers_.back());
-    return static_cast<int>(servers_.size()) - 1;
-  }
-  asio::ip::tcp::endpoint endpoint(int i) const { return {asio::ip::address_v4::loopback(), servers_[i]->tcp_port()}; }
-  std::string token_file() const { return dir_.file("token"); }
-  std::vector<asio::ip::tcp::endpoint> endpoints(std::initializer_list<int> which) const {
-    std::vector<asio::ip::tcp::endpoint> out;
-    for (int i : which) out.push_back(endpoint(i));
-    return out;
-  }
-  std::string logs() const {
-    std::string all;
-    for (std::size_t i = 0; i < servers_.size(); ++i) all += "replica " + std::to_string(i) + ":\n" + servers_[i]->log();
-    return all;
-  }
-
- private:
-  void start_replica() {
-    test_support::ServerOptions options;
-    options.args = {"--config", dir_.file("ocean.toml")};
-    options.log_path = dir_.file("replica-" + std::to_string(servers_.size()) + ".log");
-    options.wait_listening = false;
-    servers_.push_back(std::make_unique<ServerProcess>(std::move(options)));
-  }
-  void wait_listening(ServerProcess& server) const {
-    const bool listening = server.wait_listening(30.0);
-    INFO(logs());
-    REQUIRE(listening);
-  }
-
-  TempDir dir_;
-  std::vector<std::unique_ptr<ServerProcess>> servers_;
-};
-
-// ocean-admin against one replica, on a thread of its own (the recordings go on meanwhile).
-class AdminRun {
- public:
-  AdminRun(const asio::ip::tcp::endpoint& server, const std::string& token_file, const std::string& args) {
-    const std::string command = test_support::build_binary("tools/admin/ocean-admin") + " --server 127.0.0.1:" +
-                                std::to_string(server.port()) + " --token-file " + token_file + " " + args + " >/dev/null";
-    started_ = std::chrono::steady_clock::now();
-    thread_ = std::thread([this, command] {
-      status_ = std::system(command.c_str());
-      done_ = true;
-    });
-  }
-  ~AdminRun() { thread_.join(); }
-  bool done() const { return done_; }
-  int exit_code() const { return WIFEXITED(status_.load()) ? WEXITSTATUS(status_.load()) : -1; }
-  std::chrono::steady_clock::time_point started() const { return started_; }
-
- private:
-  std::chrono::steady_clock::time_point started_;
-  std::atomic<int> status_{-1};
-  std::atomic<bool> done_{false};
-  std::thread thread_;
-};
-
-// One profile's stream from every replica, recorded from one keyframe tick.
-struct ProfileRecordings {
-  const Profile* profile;
-  std::vector<std::unique_ptr<FrameRecorder>> replicas;
-  const FrameRecorder& first() const { return *replicas.front(); }
-};
-
-// Records each profile from every replica, each profile's three streams keyed at one tick (a
-// Hello that straddles a key tick starts another: then again).
-std::vector<ProfileRecordings> record(asio::io_context& io, const std::vector<asio::ip::tcp::endpoint>& replicas,
-                                      const std::vector<const Profile*>& profiles) {
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    std::vector<ProfileRecordings> all;
-    for (const Profile* profile : profiles) {
-      all.push_back({profile, {}});
-      for (const auto& replica : replicas) all.back().replicas.push_back(std::make_unique<FrameRecorder>(io, replica, profile->id));
-    }
-    sleep_to_frame_phase(2, 0.25);  // mid-tick for a 30 Hz and a 15 Hz profile alike
-    for (auto& p : all)
-      for (auto& r : p.replicas) r->send_hello();
-    const auto keyed = [&](auto&& same) {
-      return std::all_of(all.begin(), all.end(), [&](const ProfileRecordings& p) {
-        return std::all_of(p.replicas.begin(), p.replicas.end(), [&](const auto& r) { return same(p, *r); });
-      });
-    };
-    REQUIRE(run_until(io, [&] { return keyed([](const ProfileRecordings&, const FrameRecorder& r) { return r.first_key_tick().has_value(); }); }, 10.0));
-    if (keyed([](const ProfileRecordings& p, const FrameRecorder& r) { return r.first_key_tick() == p.first().first_key_tick(); }))
-      return all;
-  }
-  FAIL("no attempt keyed the three replicas' streams at one tick");
-  return {};
-}
-
-// ocean-admin through replica A; true once every recording has had `n` SceneUpdates. Returns the
-// milliseconds from ocean-admin's start to the last replica's announcement.
-double change_through_a(asio::io_context& io, const TimelineFleet& fleet, const std::vector<ProfileRecordings>& all,
-                        const std::string& change, std::size_t n) {
-  AdminRun admin(fleet.endpoint(0), fleet.token_file(), change);
-  const auto announced = [&] {
-    return std::all_of(all.begin(), all.end(), [&](const ProfileRecordings& p) {
-      return std::all_of(p.replicas.begin(), p.replicas.end(), [&](const auto& r) { return r->scene_updates().size() >= n; });
-    });
-  };
-  double ms = -1.0;
-  REQUIRE(run_until(io, [&] {
-    if (announced() && ms < 0.0) ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - admin.started()).count();
-    return admin.done() && ms >= 0.0;
-  }, 15.0));
-  INFO("ocean-admin " << change);
-  CHECK(admin.exit_code() == 0);
-  return ms;
-}
-
-// The replicas' tick now, from the config's epoch and rate on this machine's clock.
-Tick tick_now() {
-  const auto unix_ms = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-  return static_cast<Tick>((unix_ms - kEpochUnixMs) * kTickRateHz / 1000);
-}
-
-// Frames of a second and a half of a profile's stream, less a few.
-std::size_t enough_frames(const Profile& profile) { return static_cast<std::size_t>(45 * profile.rate_hz / kTickRateHz) - 3; }
-
-// Each replica's recording against the first: byte-identical wherever both reached a tick along
-// the same baselines from the same keyframe. Returns, of the replicas, the most frames so compared
-// from tick `from` on. (A busy replica may predict a delta from an older frame than the others,
-// when its socket had not yet taken the newest: from there on the two streams are other chains
-// and are not compared, as in test_replica.)
-std::size_t check_same_bytes(const ProfileRecordings& p, Tick from, const char* from_what) {
-  const FrameRecorder& a = p.first();
-  INFO("profile " << p.profile->name);
-  std::size_t most = 0;
-  for (std::size_t i = 1; i < p.replicas.size(); ++i) {
-    const Overlap o = compare(a, *p.replicas[i]);
-    std::string mismatches;
-    for (const std::string& m : o.mismatches) mismatches += m + "; ";
-    INFO("replica 0: " << describe(a) << "; replica " << i << ": " << describe(*p.replicas[i]) << "; mismatches: " << mismatches);
-    CHECK(o.mismatched_chunks == 0);
-    CHECK(o.keys >= 1);
-    std::size_t after = 0;
-    for (const auto& [tick, frame] : a.frames())
-      if (tick >= from && !lineage(a, tick).empty() && lineage(a, tick) == lineage(*p.replicas[i], tick)) ++after;
-    most = std::max(most, after);
-    std::printf("[timeline] %.*s, replica %zu against replica 0: %zu key(s) + %zu deltas compared (%zu chunks, %zu "
-                "bytes; %zu from %s), %zu chunks differ, %zu frames reached by other baselines\n",
-                static_cast<int>(p.profile->name.size()), p.profile->name.data(), i, o.keys, o.deltas, o.chunks, o.bytes,
-                after, from_what, o.mismatched_chunks, o.other_lineage);
-  }
-  return most;
-}
-
-// Each replica's decoded sea (the recorder's listening ClientSession) against the first's, tick by
-// tick: a frame's bytes may carry no wave at all - the client predicts the sea from the scenes and
-// fleets announced - so the sea itself is compared: a scene from another tick, or a late replica
-// that missed a change, shows in the heights, not in the bytes. The recordings began at one
-// keyframe tick (a decoder's rounding follows its path from its keyframe). Returns the fewest
-// ticks compared from `from` on; every one must be alike.
-std::size_t check_same_sea(const ProfileRecordings& p, Tick from, const char* from_what) {
-  std::size_t least = std::numeric_limits<std::size_t>::max();
-  for (std::size_t i = 1; i < p.replicas.size(); ++i) {
-    std::size_t same = 0, differ = 0;
-    std::optional<Tick> first_differ;
-    for (const auto& [tick, hash] : p.first().sea()) {
-      const auto other = p.replicas[i]->sea().find(tick);
-      if (tick < from || other == p.replicas[i]->sea().end()) continue;
-      if (other->second == hash) ++same;
-      else if (differ++ == 0) first_differ = tick;
-    }
-    INFO("profile " << p.profile->name << ", replica " << i << " against replica 0: " << same << " ticks alike from "
-                    << from_what << ", " << differ << " differ (the first at tick " << first_differ.value_or(0) << ")");
-    CHECK(differ == 0);
-    least = std::min(least, same);
-    std::printf("[timeline] %.*s, replica %zu against replica 0: the decoded sea alike at %zu ticks from %s, %zu differ\n",
-                static_cast<int>(p.profile->name.size()), p.profile->name.data(), i, same, from_what, differ);
-  }
-  return least == std::numeric_limits<std::size_t>::max() ? 0 : least;
-}
-
-// Runs the recordings until every stream has reached tick `until`.
-void record_until(asio::io_context& io, std::vector<ProfileRecordings>& all, Tick until) {
-  REQUIRE(run_until(io, [&] {
-    return std::all_of(all.begin(), all.end(), [&](const ProfileRecordings& p) {
-      return std::all_of(p.replicas.begin(), p.replicas.end(), [&](const auto& r) { return r->newest_tick() && *r->newest_tick() >= until; });
-    });
-  }, 10.0));
-  for (auto& p : all)
-    for (auto& r : p.replicas) r->close();
-}
-
-}  // namespace
 
 TEST_CASE("a scene change and a vessel command sent to one replica reach all three at the same tick, their streams "
           "stay byte-identical, and a replica started later streams the same bytes from its first frame",
@@ -262,7 +38,7 @@ TEST_CASE("a scene change and a vessel command sent to one replica reach all thr
     const Tick effective = all.front().first().scene_updates().back().effective_tick;
     INFO("ocean-admin " << changes[c] << " started at tick " << before << ", effective from tick " << effective);
     CHECK(effective >= before + kTickRateHz - 1);  // the lead stays a second (the admin's tick may be one old)
-    CHECK(effective <= before + kTickRateHz + 6);  // and the change was taken within 200 ms
+    if (kTimingMeasurable) CHECK(effective <= before + kTickRateHz + 6);  // and the change was taken within 200 ms
   }
   const Tick last_change = all.front().first().scene_updates().back().effective_tick;
   record_until(io, all, last_change + 45);  // a second and a half past the last change
@@ -294,14 +70,15 @@ TEST_CASE("a scene change and a vessel command sent to one replica reach all thr
   // Byte for byte across the changes: a busy replica may predict its deltas from other baselines
   // (then that pair is not compared further), but on a machine that keeps up most pairs are
   // compared to the end, and one at least must be.
-  CHECK(most_bytes_after_change >= 42);  // ticks: a second and a half, less a few
+  if (kTimingMeasurable) CHECK(most_bytes_after_change >= 42);  // ticks: a second and a half, less a few
 
   // A replica started after every change streams the log's sea from its first frame: the same
   // bytes as replica A, its first keyframe included.
   const int late = fleet.add_replica();
   for (const Profile* profile : profiles) {
-    std::size_t compared = 0;
-    for (int attempt = 0; attempt < 3 && compared < enough_frames(*profile); ++attempt) {
+    std::size_t bytes = 0, sea = 0;
+    const auto enough = [&] { return sea >= enough_frames(*profile) && (bytes >= enough_frames(*profile) || !kTimingMeasurable); };
+    for (int attempt = 0; attempt < 3 && !enough(); ++attempt) {
       std::vector<ProfileRecordings> joined = record(io, fleet.endpoints({0, late}), {profile});
       const Tick first_key = *joined.front().first().first_key_tick();
       record_until(io, joined, first_key + 45);
@@ -311,10 +88,10 @@ TEST_CASE("a scene change and a vessel command sent to one replica reach all thr
       CHECK(mine.scene_serial == first.scene_serial);
       CHECK(mine.stream == first.stream);
       CHECK(mine.vessels == first.vessels);
-      compared = std::min(check_same_bytes(joined.front(), first_key, "the late replica's first keyframe"),
-                          check_same_sea(joined.front(), first_key, "the late replica's first keyframe"));
+      bytes = check_same_bytes(joined.front(), first_key, "the late replica's first keyframe");
+      sea = check_same_sea(joined.front(), first_key, "the late replica's first keyframe");
     }
-    CHECK(compared >= enough_frames(*profile));
+    CHECK(enough());
   }
 
   std::vector<double> sorted = latencies_ms;
@@ -325,5 +102,135 @@ TEST_CASE("a scene change and a vessel command sent to one replica reach all thr
   std::fflush(stdout);
   // Within the lead, or the change would have missed its tick somewhere (p99 on an idle machine:
   // the issue's 200 ms, measured by this test's printout and quoted in the notes).
-  CHECK(sorted.back() < 1000.0);
+  if (kTimingMeasurable) CHECK(sorted.back() < 1000.0);
+}
+
+TEST_CASE("with the store killed the replicas go on and refuse changes with the reason, and when it is back a change "
+          "reaches all of them again, nothing lost or applied twice",
+          "[replica][timeline]") {
+  EtcdProcess etcd;
+  TimelineFleet fleet(etcd.url("/ocean/store-faults"));
+  asio::io_context io;
+  std::vector<ProfileRecordings> all = record(io, fleet.endpoints({0, 1, 2}), {find_profile("mobile")});
+  ProfileRecordings& p = all.front();
+  INFO(fleet.logs());
+  const auto announced = [&](std::size_t n) {
+    return std::all_of(p.replicas.begin(), p.replicas.end(), [&](const auto& r) { return r->scene_updates().size() == n; });
+  };
+  change_through_a(io, fleet, all, "--wind-speed 15", 1);
+
+  etcd.stop();  // SIGKILL: the store is gone
+  run_until(io, [] { return false; }, 1.5);
+  const Tick outage_start = *p.first().newest_tick();
+  for (int i = 0; i < kReplicas; ++i) {
+    INFO("replica " << i);
+    CHECK(fleet.readyz(i).rfind("503 timeline: stale", 0) == 0);
+    CHECK(fleet.metric(i, "ocean_timeline_age_seconds") > 0.5);
+  }
+  {  // refused through B, with the store's error
+    AdminRun refused(fleet.endpoint(1), fleet.token_file(), "--wind-speed 18");
+    REQUIRE(run_until(io, [&] { return refused.done(); }, 15.0));
+    CHECK(refused.exit_code() == 3);
+    CHECK(fleet.metric(1, "ocean_timeline_refused_total") == 1.0);
+  }
+  run_until(io, [] { return false; }, 1.0);
+  // The replicas went on streaming the timeline they hold.
+  for (const auto& r : p.replicas) CHECK(*r->newest_tick() >= outage_start + kTickRateHz - 5);
+
+  REQUIRE(etcd.start());  // back, with its data: the log as it was
+  REQUIRE(run_until(io, [&] {
+    for (int i = 0; i < kReplicas; ++i)
+      if (fleet.readyz(i).rfind("200", 0) != 0) return false;
+    return true;
+  }, 10.0));
+  change_through_a(io, fleet, all, "--wind-speed 12 --wind-dir 120", 2);
+  const Tick last_change = p.first().scene_updates().back().effective_tick;
+  record_until(io, all, last_change + 45);
+  CHECK(announced(2));  // the refused change never appears, none twice
+  CHECK(p.first().scene_updates()[1].scene.wind_dir_deg == 120.0);
+  for (int i = 0; i < kReplicas; ++i) {
+    CHECK(fleet.metric(i, "ocean_timeline_entries_total") == 2.0);
+    CHECK(fleet.metric(i, "ocean_timeline_late_entries_total") == 0.0);
+  }
+  for (const auto& r : p.replicas) {
+    REQUIRE(r->scene_updates().size() == 2);
+    CHECK(r->scene_updates()[1] == p.first().scene_updates()[1]);
+  }
+  const Tick first_change = p.first().scene_updates().front().effective_tick;
+  CHECK(check_same_sea(p, first_change, "the first change, across the outage") >= last_change + 40 - first_change);
+  std::printf("[timeline] store killed at tick %llu for about 3 s: the replicas streamed on, a change through B was "
+              "refused (exit 3); after it came back a change reached all three at tick %llu\n",
+              static_cast<unsigned long long>(outage_start), static_cast<unsigned long long>(last_change));
+  std::fflush(stdout);
+}
+
+TEST_CASE("a replica cut off from the store while a change is made through another applies it when it reads it, and "
+          "keys its viewers again onto the log's sea",
+          "[replica][timeline]") {
+  EtcdProcess etcd;
+  StoreRelay relay(etcd.client_port());
+  const std::string prefix = "/ocean/partition";
+  TimelineFleet fleet(etcd.url(prefix), {{}, {}, {"--timeline", "etcd://127.0.0.1:" + std::to_string(relay.port()) + prefix}});
+  asio::io_context io;
+  std::vector<ProfileRecordings> all = record(io, fleet.endpoints({0, 1, 2}), {find_profile("mobile")});
+  ProfileRecordings& p = all.front();
+  INFO(fleet.logs());
+  run_until(io, [] { return false; }, 0.5);
+
+  relay.cut();  // replica C alone loses the store
+  run_until(io, [] { return false; }, 0.8);
+  CHECK(fleet.readyz(2).rfind("503 timeline: stale", 0) == 0);
+  CHECK(fleet.readyz(0).rfind("200", 0) == 0);
+  {  // through A: A and B announce it, C cannot
+    AdminRun admin(fleet.endpoint(0), fleet.token_file(), "--wind-speed 17 --wind-dir 200");
+    REQUIRE(run_until(io, [&] { return admin.done() && p.replicas[1]->scene_updates().size() == 1; }, 15.0));
+    CHECK(admin.exit_code() == 0);
+  }
+  const Tick change = p.first().scene_updates().front().effective_tick;
+  run_until(io, [&] { return *p.replicas[2]->newest_tick() >= change + 15; }, 5.0);  // C streams past it
+  CHECK(p.replicas[2]->scene_updates().empty());
+  relay.restore();
+  REQUIRE(run_until(io, [&] { return p.replicas[2]->scene_updates().size() == 1; }, 5.0));
+  const Tick read_at = *p.replicas[2]->newest_tick();
+  CHECK(fleet.readyz(2).rfind("503 timeline: an entry came after its tick", 0) == 0);
+  record_until(io, all, read_at + 60);
+  CHECK(fleet.metric(2, "ocean_timeline_late_entries_total") == 1.0);
+  CHECK(fleet.metric(0, "ocean_timeline_late_entries_total") == 0.0);
+  // C announced the change as A did, and keyed its viewer again after reading it.
+  CHECK(p.replicas[2]->scene_updates().front() == p.first().scene_updates().front());
+  std::optional<Tick> rekeyed;
+  for (const auto& [tick, frame] : p.replicas[2]->frames())
+    if (frame.key && tick > change && !rekeyed) rekeyed = tick;
+  REQUIRE(rekeyed);
+  // Its sea: another from the change until the key, the log's from the key on - alike to the
+  // rounding of a decoder keyed at another tick than A's viewer (a micrometre, not bit for bit).
+  const auto worst_difference = [&](Tick tick) {
+    const auto a = p.first().heights().find(tick), c = p.replicas[2]->heights().find(tick);
+    if (a == p.first().heights().end() || c == p.replicas[2]->heights().end() || a->second.size() != c->second.size())
+      return -1.0f;
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < a->second.size(); ++i) worst = std::max(worst, std::abs(a->second[i] - c->second[i]));
+    return worst;
+  };
+  float while_cut = 0.0f, after_key = 0.0f;
+  std::size_t compared_after_key = 0;
+  for (const auto& [tick, heights] : p.replicas[2]->heights()) {
+    const float worst = worst_difference(tick);
+    if (worst < 0.0f || tick < change) continue;
+    if (tick < *rekeyed) {
+      while_cut = std::max(while_cut, worst);
+    } else {
+      after_key = std::max(after_key, worst);
+      ++compared_after_key;
+    }
+  }
+  CHECK(while_cut > 0.1f);  // what the cut cost its viewers (RUNNING.md says so)
+  CHECK(after_key < 1e-4f);
+  CHECK(compared_after_key >= 30);
+  std::printf("[timeline] replica C cut off from the store: the change from tick %llu read at tick %llu; its viewer "
+              "saw another sea until its key at tick %llu (up to %.2f m off), then the log's (%zu ticks within %.1e m of "
+              "replica A's viewer)\n",
+              static_cast<unsigned long long>(change), static_cast<unsigned long long>(read_at),
+              static_cast<unsigned long long>(*rekeyed), while_cut, compared_after_key, after_key);
+  std::fflush(stdout);
 }

@@ -71,6 +71,7 @@ class EtcdProcess {
     return false;
   }
   void stop() { process_.reset(); }  // SIGKILL
+  std::uint16_t client_port() const { return client_port_; }
   std::string url(const std::string& prefix) const { return "etcd://127.0.0.1:" + std::to_string(client_port_) + prefix; }
 
  private:

@@ -21,7 +21,7 @@ void SessionHub::follow_timeline() {
   handlers.entry = [this](std::uint64_t index, TimelineChange change) {
     asio::post(server_.context(), [this, index, change = std::move(change)] {
       core_.apply_logged(index, change);
-      if (const auto diverged = core_.timeline_diverged()) timeline_diverged_.store(*diverged);
+      if (core_.last_late_entry() == index) late_until_s_.store(timeline_clock_s() + kTimelineLateUnreadyS);
     });
   };
   handlers.refused = [this](const TimelineChange& change, const std::string& reason) {
@@ -68,8 +68,8 @@ std::uint64_t SessionHub::read_timeline_history(const TimelineAddress& address) 
 }
 
 std::string SessionHub::timeline_readiness() const {
-  if (const std::uint64_t diverged = timeline_diverged_.load())
-    return "timeline: entry " + std::to_string(diverged) + " came after its tick; this server's sea is not the log's";
+  if (timeline_clock_s() < late_until_s_.load())
+    return "timeline: an entry came after its tick; the viewers are being keyed again onto the log's sea";
   const double last = timeline_->last_read_s();
   if (last < 0.0) return "timeline: the store has not answered yet";
   const double age = timeline_clock_s() - last;

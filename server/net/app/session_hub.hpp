@@ -35,8 +35,8 @@ class SessionHub {
   // kernel keeps none).
   void account(double busy_s, double now_s);
   // The fleet's timeline (--timeline): its follower hands entries and refusals to the network
-  // thread; /readyz says not ready while the store has not answered for kTimelineStaleS, or once
-  // an entry came after its tick.
+  // thread; /readyz says not ready while the store has not answered for kTimelineStaleS, and for
+  // kTimelineLateUnreadyS after an entry came after its tick.
   void follow_timeline();
   std::uint64_t read_timeline_history(const TimelineAddress& address);  // the next entry to read
   std::string timeline_readiness() const;
@@ -56,13 +56,15 @@ class SessionHub {
   std::uint64_t streams_released_ = 0;  // core_.streams_released() last seen
   std::int64_t trim_until_tick_ = -1;    // memory is handed back to the system until this tick
   double last_warning_s_ = -1e9;
-  std::atomic<std::uint64_t> timeline_diverged_{0};  // the first entry read after its tick; 0 none
+  std::atomic<double> late_until_s_{-1.0};  // not ready until then: an entry came after its tick
   std::unique_ptr<TimelineFollower> timeline_;  // last: stopped before anything its handlers reach
 };
 
 // A replica whose timeline store has not answered a read for this long says it is not ready: an
 // entry appended meanwhile could take effect before this replica reads it (the lead is 1 s).
 inline constexpr double kTimelineStaleS = 0.5;
+// After an entry read past its tick, a replica says it is not ready this long (its viewers' keys).
+inline constexpr double kTimelineLateUnreadyS = 2.0;
 // A replica that cannot read the timeline within this long at its start exits (status 1).
 inline constexpr double kTimelineStartS = 10.0;
 

@@ -13,27 +13,24 @@ namespace ocean::server {
 void SessionCore::apply_logged(std::uint64_t index, const TimelineChange& change, bool history) {
   const protocol::SceneUpdate& update = change.update;
   Session* requester = change.origin == host_.timeline_origin ? sessions_.find(change.session) : nullptr;
-  if ((update.effective_tick <= tick_ && !history) || timeline_diverged_) {
-    // Its tick has passed here (this replica read the log too late): whatever it streams from
-    // that tick on is not the log's sea. It says so, and applies nothing more.
-    if (!timeline_diverged_) {
-      timeline_diverged_ = index;
-      spdlog::error("timeline entry {} takes effect at tick {}, which this server has passed (tick {}): its sea is no "
-                    "longer the timeline's; not ready until restarted",
-                    index, update.effective_tick, tick_);
-    }
-    host_.metrics.timeline_late_entries.inc();
-    if (requester)
-      answer_error(*requester, protocol::Reason::internal_error,
-                   "the fleet's timeline handed the change back after its tick; retry", "param_change");
-    return;
-  }
+  // Read after its tick (the store was away from this replica longer than the lead, or the append
+  // took that long): its viewers have seen another sea since. It is applied all the same - the sea
+  // from now on is the log's - and every viewer is keyed again, its decoder holding the other.
+  const bool late = update.effective_tick <= tick_ && !history;
   std::optional<std::vector<model::VesselTrack>> fleet = update.vessels;
   if (host_.request_scene) host_.request_scene(update.scene, static_cast<std::int64_t>(update.effective_tick));
   const AnnouncedScene& announced = scenes_.add_logged(update.effective_tick, update.scene, std::move(fleet));
   announce({announced}, requester ? std::optional(requester->id) : std::nullopt, update.request_id);
   host_.metrics.timeline_entries.inc();
   if (requester) host_.metrics.param_changes.inc();
+  if (late) {
+    host_.metrics.timeline_late_entries.inc();
+    last_late_entry_ = index;
+    for (const auto& session : sessions_) session->need_key = true;
+    spdlog::error("timeline entry {} takes effect at tick {}, which this server had passed (tick {}): its viewers saw "
+                  "another sea for {} ticks; applied now, every viewer keyed again",
+                  index, update.effective_tick, tick_, tick_ - update.effective_tick + 1);
+  }
   spdlog::info("timeline entry {} applied: scene {} from tick {}{}", index, announced.serial, update.effective_tick,
                requester ? " (taken here)" : history ? " (the log's history at start)" : "");
 }

@@ -141,13 +141,13 @@ class SessionCore {
 
   // The fleet timeline's entry `index`, in log order: announced and applied at its tick, its admin
   // answered when this replica took it. `history`: read before the first tick is served (the log
-  // as it stood when this replica started), so an entry whose tick has passed still sets the sea
-  // from that tick. Read later, such an entry is not applied (the replica no longer streams the
-  // log's sea: timeline_diverged() says from which entry).
+  // as it stood when this replica started): an entry whose tick has passed sets the sea from that
+  // tick. Read later, such an entry is late: applied as well, counted, and every session keyed
+  // again (last_late_entry() names the newest).
   void apply_logged(std::uint64_t index, const TimelineChange& change, bool history = false);
   // A change this replica took that its log refused or never confirmed: its admin is told why.
   void refuse_logged(const TimelineChange& change, const std::string& reason);
-  std::optional<std::uint64_t> timeline_diverged() const { return timeline_diverged_; }
+  std::optional<std::uint64_t> last_late_entry() const { return last_late_entry_; }
 
   void set_frame_observer(FrameObserver observer) { observer_ = std::move(observer); }
   void set_tick_observer(TickObserver observer) { tick_observer_ = std::move(observer); }
@@ -263,7 +263,7 @@ class SessionCore {
   // The newest tick's frames and the one before (a HeightQuery's heights and their rate of change).
   std::shared_ptr<const TickFrames> newest_frames_, previous_frames_;
   std::vector<model::VesselTrack> vessels_;  // the fleet, as the newest announcement leaves it
-  std::optional<std::uint64_t> timeline_diverged_;  // the first log entry that came after its tick
+  std::optional<std::uint64_t> last_late_entry_;  // the newest timeline entry read after its tick
   std::vector<const ProfileStream*> roots_full_;
   std::uint64_t streams_released_ = 0;  // this key tick: no new root, joiners wait
 };
