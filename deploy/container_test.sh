@@ -8,10 +8,12 @@
 #      ocean-loadtest clients over UDP through the published port (--udp-public-port: no client
 #      may fall back to TCP; >= 99 % on time) and 5 over TCP (every frame checked
 #      against the sim: 0 bad frames), then SIGTERM must stop it with exit status 0 within 5 s;
-#   4. `podman kube play` of a manifest derived from deploy/k8s (ConfigMap, Secret, Deployment
-#      with 3 replicas): the 3 pods must send byte-identical frames for the same tick
-#      (tests/replica's hidden [external] case), then a load test given two pods (--server A,B)
-#      while one pod is removed: every client must fail over and keep receiving good frames.
+#   4. `podman kube play` of manifests derived from deploy/k8s (the timeline's etcd as a Pod, then
+#      ConfigMap, Secret, Deployment with 3 replicas following it): the 3 pods must send
+#      byte-identical frames for the same tick, decoding to the same sea, across an admin change
+#      made through one of them (tests/replica's hidden [external] case), and each must have
+#      applied it; then a load test given two pods (--server A,B) while one pod is removed:
+#      every client must fail over and keep receiving good frames.
 # Usage: deploy/container_test.sh [--no-kube]
 # Needs the host's ocean-loadtest and test_replica ($OCEAN_BUILD_DIR, default build/;
 # ./deploy/build.sh makes them)
@@ -33,6 +35,7 @@ image=ocean-server:0.1.0          # the tag deploy/k8s/kustomization.yaml names
 build_dir=${OCEAN_BUILD_DIR:-build}
 loadtest=$build_dir/client/loadtest/ocean-loadtest
 replica_test=$build_dir/tests/replica/test_replica
+admin=$build_dir/tools/admin/ocean-admin
 replicas=3
 stage_start=$SECONDS
 name=ocean-ct-$$
@@ -53,8 +56,13 @@ podman_args=(--runtime runc --cgroup-manager=cgroupfs)
 pm() { podman "${podman_args[@]}" "$@"; }
 
 kube_file=
+timeline_file=
 cleanup() {
   pm rm -f -t 0 "$name" >/dev/null 2>&1 || true
+  if [[ -n "$timeline_file" ]]; then
+    pm kube down "$timeline_file" >/dev/null 2>&1 || true
+    pm pod rm -f -t 0 "$name-timeline" >/dev/null 2>&1 || true
+  fi
   if [[ -n "$kube_file" ]]; then
     pm kube down "$kube_file" >/dev/null 2>&1 || true
     # One at a time: podman removes none of a list that names a pod already gone.
@@ -75,6 +83,8 @@ for tool in podman runc catatonit debootstrap curl python3; do
 done
 [[ -x "$loadtest" ]] || fail "$loadtest is missing: run ./deploy/build.sh first"
 ((kube == 0)) || [[ -x "$replica_test" ]] || fail "$replica_test is missing: run ./deploy/build.sh first"
+((kube == 0)) || [[ -x "$admin" ]] || fail "$admin is missing: run ./deploy/build.sh first"
+((kube == 0)) || [[ -x /usr/bin/etcd ]] || fail "/usr/bin/etcd is missing: run ./deploy/install-deps.sh (etcd-server)"
 
 # --- Can podman create a container here at all? -------------------------------------------------
 # The probe runs the host's /bin/true from a throw-away rootfs, so neither a base image nor the
@@ -231,10 +241,46 @@ if ((kube == 0)); then
   exit 0
 fi
 
-# --- podman kube play: 3 replicas, byte-identical frames, failover --------------------------------------------------
+# --- podman kube play: the timeline's store, 3 replicas following it, a change, failover ----------------------------
+# The store first (deploy/k8s/timeline-etcd.yaml's StatefulSet as one Pod: podman 4.3 plays no
+# StatefulSet). No registry is reachable here, so the pod runs the host's etcd (etcd-server, a
+# static binary) in the slim base image, as root on an emptyDir (podman ignores fsGroup).
+timeline_file=$work/timeline.yaml
+python3 - deploy/k8s "$timeline_file" "$name" <<'EOF'
+import sys, yaml
+k8s, out, name = sys.argv[1], sys.argv[2], sys.argv[3]
+statefulset = next(d for d in yaml.safe_load_all(open(f"{k8s}/timeline-etcd.yaml")) if d["kind"] == "StatefulSet")
+pod = statefulset["spec"]["template"]["spec"]
+container = pod["containers"][0]
+container["image"] = "localhost/debian:bookworm-slim"
+peer = "http://127.0.0.1:2380"
+container["command"] = ["/usr/local/bin/etcd", "--name=timeline", "--data-dir=/var/lib/etcd/data",
+                        "--listen-client-urls=http://0.0.0.0:2379", "--advertise-client-urls=http://127.0.0.1:2379",
+                        "--listen-peer-urls=" + peer, "--initial-advertise-peer-urls=" + peer,
+                        "--initial-cluster=timeline=" + peer]
+del container["ports"]
+for probe in ("livenessProbe", "readinessProbe"):
+    container[probe]["httpGet"]["port"] = 2379
+for key in ("runAsNonRoot", "runAsUser", "runAsGroup", "fsGroup"):
+    pod["securityContext"].pop(key, None)
+container["securityContext"].pop("runAsNonRoot", None)
+container["volumeMounts"].append({"name": "etcd-binary", "mountPath": "/usr/local/bin/etcd", "readOnly": True})
+pod["volumes"] = [{"name": "data", "emptyDir": {}},
+                  {"name": "etcd-binary", "hostPath": {"path": "/usr/bin/etcd", "type": "File"}}]
+labels = statefulset["spec"]["template"]["metadata"]["labels"]
+yaml.safe_dump({"apiVersion": "v1", "kind": "Pod", "metadata": {"name": f"{name}-timeline", "labels": labels},
+                "spec": pod}, open(out, "w"), sort_keys=False)
+EOF
+pm kube play "$timeline_file" > "$work/timeline.log" 2>&1 || { cat "$work/timeline.log" >&2; fail "podman kube play of the timeline's store failed"; }
+infra=$(pm pod inspect --format '{{.InfraContainerID}}' "$name-timeline") || fail "podman kube play made no pod $name-timeline"
+store_ip=$(pm inspect --format "{{range .NetworkSettings.Networks}}{{.IPAddress}} {{end}}" "$infra" | awk "{print \$1}")
+[[ -n "$store_ip" ]] || fail "the timeline's pod has no IP address"
+wait_ready "http://$store_ip:2379/health" "$name-timeline-etcd"
+say "kube play: the timeline's store (etcd) ready at $store_ip:2379"
+
 # Derived from deploy/k8s, changed only where podman 4.3 differs from Kubernetes (each named):
 kube_file=$work/fleet.yaml
-python3 - deploy/k8s "$kube_file" "$name" "$replicas" <<'EOF'
+python3 - deploy/k8s "$kube_file" "$name" "$replicas" "$store_ip" <<'EOF'
 import secrets, sys, yaml
 k8s, out, name = sys.argv[1], sys.argv[2], sys.argv[3]
 config = yaml.safe_load(open(f"{k8s}/configmap.yaml"))
@@ -244,6 +290,9 @@ deployment["metadata"]["name"] = name
 deployment["spec"]["replicas"] = int(sys.argv[4])
 pod = deployment["spec"]["template"]["spec"]
 container = pod["containers"][0]
+# The timeline's store by address (podman gives pods no Service names), under a prefix of this run.
+args = container["args"]
+args[args.index("--timeline") + 1] = f"etcd://{sys.argv[5]}:2379/ocean/{name}"
 # podman publishes every containerPort on the host (as hostPort), so replicas would collide;
 # the pods are reached on their own IPs instead. The probes then name the port by number.
 del container["ports"]
@@ -283,13 +332,22 @@ for pod in "${pods[@]}"; do
 done
 say "kube play: $replicas replicas ready at ${servers[*]}"
 
-# Every pod computes the same sea: frames of the same tick, byte for byte (as test_replica checks
-# for processes).
+# Every pod computes the same sea: frames of the same tick, byte for byte, decoding to the same
+# heights (as test_replica checks for processes) - across a change made through one of them, which
+# the timeline brings to all (the test runs OCEAN_REPLICA_CHANGE once the recordings are keyed).
 replica_list=$(IFS=,; echo "${servers[*]}")
+python3 -c 'import sys, yaml; print(yaml.safe_load(open(sys.argv[1]))["data"]["admin-token"])' "$kube_file.secret" \
+  > "$work/admin-token"
 OCEAN_REPLICA_SERVERS=$replica_list OCEAN_REPLICA_PROFILES=mobile,desktop \
+  OCEAN_REPLICA_CHANGE="$admin --server ${servers[1]} --token-file $work/admin-token --wind-speed 15 --wind-dir 45" \
   "$replica_test" "[external]" > "$work/replicas.log" 2>&1 ||
-  { cat "$work/replicas.log" >&2; fail "the $replicas replicas did not send byte-identical frames (above)"; }
+  { cat "$work/replicas.log" >&2; fail "the $replicas replicas did not send byte-identical frames across a change (above)"; }
 grep -h '^\[replica\]' "$work/replicas.log" | while read -r line; do say "$line"; done
+for server in "${servers[@]}"; do
+  applied=$(curl -fsS --max-time 2 "http://${server%:*}:9464/metrics" | awk '$1 == "ocean_timeline_entries_total" {print $2}')
+  [[ "$applied" == 1 ]] || fail "replica $server applied ${applied:-no} timeline entries, not the 1 change made through ${servers[1]}"
+done
+say "kube play: the change through ${servers[1]} was applied by all $replicas replicas (ocean_timeline_entries_total 1 each)"
 
 # The clients start on the first replica; after 4 s that pod is removed, so each must fail over.
 "$loadtest" --json --quiet --server "${servers[0]},${servers[1]}" --clients 5 --duration 12 --transport tcp \

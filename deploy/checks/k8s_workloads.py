@@ -96,8 +96,31 @@ def check_workloads(report, documents, configs):
             check_container(report, where, pod, container, configmaps, secrets)
             check_ports_against_config(report, where, pod, container, configs)
         pods.append((where, labels, pod))
+    for where, statefulset in by_kind(documents, "StatefulSet"):
+        pods.append(check_statefulset(report, where, statefulset, configmaps, secrets))
     for where, service in by_kind(documents, "Service"):
         check_service(report, where, service, pods)
+
+
+def check_statefulset(report, where, statefulset, configmaps, secrets):
+    """Another workload of ours (the timeline's store): its labels, probes on declared ports, locked
+    down, its mounts resolved (a claim template counts as a volume). Returns (where, labels, pod)."""
+    spec = statefulset.get("spec") or {}
+    template = spec.get("template") or {}
+    pod = dict(template.get("spec") or {})
+    labels = (template.get("metadata") or {}).get("labels") or {}
+    selector = (spec.get("selector") or {}).get("matchLabels") or {}
+    if any(labels.get(k) != v for k, v in selector.items()):
+        report.problem(where, "spec.selector.matchLabels does not match the pod template's labels")
+    claims = [{"name": (c.get("metadata") or {}).get("name")} for c in spec.get("volumeClaimTemplates") or []]
+    pod["volumes"] = list(pod.get("volumes") or []) + claims
+    for container in pod.get("containers") or []:
+        for probe_kind in ("livenessProbe", "readinessProbe", "startupProbe"):
+            handler = ((container.get(probe_kind) or {}).get("httpGet") or (container.get(probe_kind) or {}).get("tcpSocket"))
+            if handler and container_port(container, handler.get("port"), "TCP") is None:
+                report.problem(where, f"container {container.get('name')}: {probe_kind} port {handler.get('port')!r} is not a declared TCP port")
+        check_locked_down(report, where, pod, container, configmaps, secrets)
+    return where, labels, pod
 
 
 def check_ports_against_config(report, where, pod, container, configs):
@@ -122,7 +145,7 @@ def check_service(report, where, service, pods):
     selector = spec.get("selector") or {}
     matched = [(w, pod) for w, labels, pod in pods if selector and all(labels.get(k) == v for k, v in selector.items())]
     if not matched:
-        report.problem(where, f"selector {selector} matches no Deployment's pods")
+        report.problem(where, f"selector {selector} matches no Deployment's or StatefulSet's pods")
     ports = spec.get("ports") or []
     for port in ports:
         protocol = port.get("protocol", "TCP")

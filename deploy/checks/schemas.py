@@ -137,30 +137,45 @@ _pod_spec = {
     },
 }
 
-_deployment = {
-    "type": "object",
-    "required": ["apiVersion", "kind", "metadata", "spec"],
-    "properties": {
-        "apiVersion": {"const": "apps/v1"},
-        "metadata": _metadata,
-        "spec": {
-            "type": "object",
-            "required": ["selector", "template"],
-            "properties": {
-                "replicas": {"type": "integer", "minimum": 0},
-                "selector": {"type": "object", "required": ["matchLabels"]},
-                "template": {
-                    "type": "object",
-                    "required": ["metadata", "spec"],
-                    "properties": {
-                        "metadata": {"type": "object", "required": ["labels"]},
-                        "spec": _pod_spec,
+def _workload(required=(), **properties):
+    """An apps/v1 workload of pods from a template (Deployment, StatefulSet) and its own fields."""
+    return {
+        "type": "object",
+        "required": ["apiVersion", "kind", "metadata", "spec"],
+        "properties": {
+            "apiVersion": {"const": "apps/v1"},
+            "metadata": _metadata,
+            "spec": {
+                "type": "object",
+                "required": ["selector", "template", *required],
+                "properties": {
+                    "replicas": {"type": "integer", "minimum": 0},
+                    "selector": {"type": "object", "required": ["matchLabels"]},
+                    "template": {
+                        "type": "object",
+                        "required": ["metadata", "spec"],
+                        "properties": {
+                            "metadata": {"type": "object", "required": ["labels"]},
+                            "spec": _pod_spec,
+                        },
                     },
+                    **properties,
                 },
             },
         },
+    }
+
+
+_deployment = _workload()
+# The timeline's store: a Service name for its members, and a claim template for their data.
+_statefulset = _workload(
+    required=("serviceName",),
+    serviceName=_name,
+    volumeClaimTemplates={
+        "type": "array",
+        "items": {"type": "object", "required": ["metadata", "spec"], "properties": {"metadata": _metadata}},
     },
-}
+)
 
 # A Job's pods end: they may not restart Always.
 _job = {
@@ -275,6 +290,7 @@ _kustomization = {
 
 SCHEMAS = {
     "Deployment": _deployment,
+    "StatefulSet": _statefulset,
     "Job": _job,
     "Service": _service,
     "ConfigMap": _configmap,

@@ -1,5 +1,6 @@
 // How two recordings of one stream are compared: frame by frame along the same chain of
-// baselines back to the same keyframe, byte for byte (test_replica, test_timeline_fleet).
+// baselines back to the same keyframe, byte for byte and in the heights they decode to
+// (test_replica, test_timeline_fleet).
 #pragma once
 
 #include "frame_recorder.hpp"
@@ -44,6 +45,7 @@ struct Overlap {
   std::size_t keys = 0, deltas = 0, chunks = 0, bytes = 0;
   std::size_t mismatched_chunks = 0;    // same (profile, tick, baseline, index, lineage), other bytes
   std::size_t other_lineage = 0;        // same tick in both, reached through different baselines
+  std::size_t seas = 0, mismatched_seas = 0;  // of those frames, decoded by both; to other heights
   std::vector<std::string> mismatches;  // the first few, for the failure message
 
   Overlap& operator+=(const Overlap& o) {
@@ -53,6 +55,8 @@ struct Overlap {
     bytes += o.bytes;
     mismatched_chunks += o.mismatched_chunks;
     other_lineage += o.other_lineage;
+    seas += o.seas;
+    mismatched_seas += o.mismatched_seas;
     for (const std::string& m : o.mismatches)
       if (mismatches.size() < 5) mismatches.push_back(m);
     return *this;
@@ -82,6 +86,15 @@ inline Overlap compare(const FrameRecorder& a, const FrameRecorder& b) {
       if (other == fb.payloads.end() || other->second != payload) {
         same = false;
         ++o.mismatched_chunks;
+      }
+    }
+    // The sea both decoded from it (the frames may carry no wave: the scenes announced decide).
+    const auto sea_a = a.sea().find(tick), sea_b = b.sea().find(tick);
+    if (sea_a != a.sea().end() && sea_b != b.sea().end()) {
+      ++o.seas;
+      if (sea_a->second != sea_b->second) {
+        ++o.mismatched_seas;
+        same = false;
       }
     }
     if (!same && o.mismatches.size() < 5)

@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <sstream>
 #include <thread>
+#include <atomic>
+#include <sys/wait.h>
 
 #include "frame_recorder.hpp"
 #include "profile.hpp"
@@ -34,6 +36,31 @@ constexpr int kMaxAttempts = 12;
 constexpr std::size_t kMinDeltas = 20;
 constexpr double kAttemptS = 6.0;         // recording of one pair of streams, at most
 constexpr double kProfileBudgetS = 12.0;  // all attempts of one profile, at most (a new one may start before)
+
+// The command OCEAN_REPLICA_CHANGE names, run once (the container stage: an admin change through
+// one replica of a fleet following one timeline).
+const char* const change_command = std::getenv("OCEAN_REPLICA_CHANGE");
+bool change_made = false;
+
+// After OCEAN_REPLICA_CHANGE: it succeeded, every replica announced the same change, and frames
+// from its tick on were compared along one lineage (byte and sea checks as every other frame).
+void check_change(const std::vector<std::unique_ptr<FrameRecorder>>& recorders, int status) {
+  INFO("OCEAN_REPLICA_CHANGE: " << change_command);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+  const FrameRecorder& a = *recorders.front();
+  REQUIRE(a.scene_updates().size() == 1);
+  const Tick effective = a.scene_updates().front().effective_tick;
+  for (const auto& r : recorders) {
+    REQUIRE(r->scene_updates().size() == 1);
+    CHECK(r->scene_updates().front() == a.scene_updates().front());
+    std::size_t after = 0;
+    for (const auto& [tick, frame] : a.frames())
+      if (tick >= effective && !lineage(a, tick).empty() && lineage(a, tick) == lineage(*r, tick)) ++after;
+    CHECK(after >= 10);
+  }
+  std::printf("[replica] a change through a replica (%s) took effect on all %zu at tick %llu\n", change_command,
+              recorders.size(), static_cast<unsigned long long>(effective));
+}
 
 // Where the replicas under test listen, what their logs say, and the epoch they must all
 // announce (none: whatever it is, as long as they agree).
@@ -83,15 +110,34 @@ void check_profile(const Replicas& replicas, const Profile& profile) {
         all += o;
       }
       least.mismatched_chunks = all.mismatched_chunks;
+      least.mismatched_seas = all.mismatched_seas;
       least.other_lineage = all.other_lineage;
       least.mismatches = all.mismatches;
       return least;
     };
+    // OCEAN_REPLICA_CHANGE (a command: ocean-admin through one replica), once per run, in the first
+    // keyed recording: it records on until a second past the change's tick on every replica.
+    const bool changing = change_command && !change_made;
+    std::atomic<int> change_status{-1};
+    std::optional<std::thread> change;
+    if (changing) {
+      change_made = true;
+      change.emplace([&] { change_status = std::system(change_command); });
+    }
+    const auto past_change = [&] {
+      if (!changing) return true;
+      if (a.scene_updates().empty()) return false;
+      const Tick effective = a.scene_updates().front().effective_tick;
+      return std::all_of(recorders.begin(), recorders.end(),
+                         [&](const auto& r) { return r->newest_tick() && *r->newest_tick() >= effective + kTickRateHz; });
+    };
     Overlap o;
     run_until(io, [&] {
       o = overlap();
-      return enough(o) || o.other_lineage > 0;
+      return (enough(o) && past_change()) || o.other_lineage > 0;
     }, kAttemptS);
+    if (change) change->join();
+    if (changing) check_change(recorders, change_status.load());
     for (auto& r : recorders) r->close();
     o = overlap();
     std::string described;
@@ -120,12 +166,14 @@ void check_profile(const Replicas& replicas, const Profile& profile) {
   INFO("compared: " << total.keys << " keys, " << total.deltas << " deltas, " << total.chunks << " chunks, " << total.bytes
                     << " payload bytes; mismatches: " << first_mismatches);
   CHECK(total.mismatched_chunks == 0);
+  CHECK(total.mismatched_seas == 0);
+  CHECK(total.seas + 3 >= total.keys + total.deltas);
   CHECK(total.keys >= 1);
   CHECK(total.deltas >= kMinDeltas);
   std::printf("[replica] %.*s: %zu replicas, %zu key(s) + %zu deltas compared with the first (%zu chunks, %zu bytes), "
-              "%zu chunks differ; %zu attempt(s)\n",
+              "%zu chunks differ; %zu decoded by both, %zu to other heights; %zu attempt(s)\n",
               static_cast<int>(profile.name.size()), profile.name.data(), replicas.servers.size(), total.keys, total.deltas, total.chunks, total.bytes,
-              total.mismatched_chunks, attempts.size());
+              total.mismatched_chunks, total.seas, total.mismatched_seas, attempts.size());
   std::fflush(stdout);
 }
 

@@ -10,6 +10,8 @@
 #include <cmath>
 
 #include "etcd_process.hpp"
+#include "timeline_change.hpp"
+#include "timeline_log.hpp"
 #include "timeline_fleet.hpp"
 
 using namespace ocean;
@@ -158,6 +160,28 @@ TEST_CASE("with the store killed the replicas go on and refuse changes with the 
   }
   const Tick first_change = p.first().scene_updates().front().effective_tick;
   CHECK(check_same_sea(p, first_change, "the first change, across the outage") >= last_change + 40 - first_change);
+
+  // Entries written into the store by other hands: a damaged one, and a scene no profile can carry
+  // (the appending replica would have refused it). Every replica skips both and goes on.
+  std::string error;
+  server::TimelineLog log(*server::parse_timeline_url(etcd.url("/ocean/store-faults"), error), 2.0);
+  REQUIRE(log.append("not an entry").error.empty());
+  server::TimelineChange storm;
+  storm.update.effective_tick = tick_now() + kTickRateHz;
+  storm.update.scene = p.first().scene_updates().back().scene;
+  storm.update.scene.wind_speed_mps = 100.0;
+  storm.update.scene.amplitude = 1e6;
+  REQUIRE(log.append(server::encode_change(storm)).error.empty());
+  REQUIRE(run_until(io, [&] {
+    for (int i = 0; i < kReplicas; ++i)
+      if (fleet.metric(i, "ocean_timeline_skipped_total") != 2.0) return false;
+    return true;
+  }, 5.0));
+  for (int i = 0; i < kReplicas; ++i) {
+    CHECK(fleet.metric(i, "ocean_timeline_entries_total") == 2.0);
+    CHECK(fleet.readyz(i).rfind("200", 0) == 0);
+  }
+
   std::printf("[timeline] store killed at tick %llu for about 3 s: the replicas streamed on, a change through B was "
               "refused (exit 3); after it came back a change reached all three at tick %llu\n",
               static_cast<unsigned long long>(outage_start), static_cast<unsigned long long>(last_change));

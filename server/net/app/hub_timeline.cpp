@@ -27,8 +27,11 @@ void SessionHub::follow_timeline() {
   handlers.refused = [this](const TimelineChange& change, const std::string& reason) {
     asio::post(server_.context(), [this, change, reason] { core_.refuse_logged(change, reason); });
   };
-  handlers.unreadable = [](std::uint64_t index, const std::string& reason) {
-    spdlog::error("timeline entry {} skipped (every replica skips it): {}", index, reason);
+  handlers.unreadable = [this](std::uint64_t index, const std::string& reason) {
+    asio::post(server_.context(), [this, index, reason] {
+      server_.metrics().timeline_skipped.inc();
+      spdlog::error("timeline entry {} skipped (every replica skips it): {}", index, reason);
+    });
   };
   const std::uint64_t next = read_timeline_history(*address);
   spdlog::info("following the fleet's timeline at etcd {}:{} prefix {} from entry {}", address->store.host,
@@ -56,8 +59,10 @@ std::uint64_t SessionHub::read_timeline_history(const TimelineAddress& address) 
       std::string error;
       if (const std::optional<TimelineChange> change = decode_change(entry.bytes, error))
         core_.apply_logged(entry.index, *change, true);
-      else
+      else {
+        server_.metrics().timeline_skipped.inc();
         spdlog::error("timeline entry {} skipped (every replica skips it): {}", entry.index, error);
+      }
       next = entry.index + 1;
     }
     if (read.entries.size() < 256) return next;

@@ -89,6 +89,8 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
           "Entries of the fleet's timeline read after their tick here (the server then no longer streams the log's sea).")),
       timeline_refused(registry.counter("ocean_timeline_refused_total",
                                         "Admin changes taken here that the timeline's store refused or never confirmed.")),
+      timeline_skipped(registry.counter("ocean_timeline_skipped_total",
+                                        "Entries of the fleet's timeline skipped by every replica (unreadable, or out of range).")),
       timeline_index(registry.gauge("ocean_timeline_index", "Entries of the fleet's timeline read so far.")),
       timeline_age_seconds(registry.gauge("ocean_timeline_age_seconds",
                                           "Seconds since the timeline's store last answered a read (-1: never).")),

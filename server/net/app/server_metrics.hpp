@@ -53,11 +53,12 @@ class ServerMetrics {
   Counter& tls_reload_failures;     // SIGHUPs whose certificate could not be read (the old one stays)
   Counter& log_write_failures;      // log lines that could not be written (a reader gone, a full disk)
   // The fleet's timeline (--timeline): entries applied, entries read after their tick, this
-  // replica's appends the store refused or never confirmed; entries read, and seconds since the
+  // replica's appends the store refused or never confirmed, entries skipped; entries read, and seconds since the
   // store last answered a read (-1 before the first).
   Counter& timeline_entries;
   Counter& timeline_late_entries;
   Counter& timeline_refused;
+  Counter& timeline_skipped;  // entries every replica skips: unreadable, or a scene no profile can carry
   Gauge& timeline_index;
   Gauge& timeline_age_seconds;
 
