@@ -1,8 +1,8 @@
 // The fleet's timeline (issue 37) with real processes: one etcd and three ocean-server replicas of
 // one config following its log (--timeline). Changes sent to replica A by ocean-admin are announced
 // by all three for the same tick with the same serial; recordings of the three streams are
-// byte-identical and decode to the same sea across them, and a fourth replica started afterwards
-// streams that sea from its first frame. The store killed: the replicas go on and changes are
+// byte-identical and decode to the same sea across them, and a fourth replica started 30 s after
+// them streams that sea from its first frame. The store killed: the replicas go on and changes are
 // refused; back: changes flow again. One replica cut off from the store: it applies what it missed
 // when it reads it, and keys its viewers again. Figures are printed ("[timeline]" lines).
 #include <catch2/catch.hpp>
@@ -67,15 +67,17 @@ TEST_CASE("a scene change and a vessel command sent to one replica reach all thr
     // The sea across every change, from a second before the first.
     const Tick first_change = a.scene_updates().front().effective_tick;
     const std::size_t span = (last_change + 45 - (first_change - kTickRateHz)) * p.profile->rate_hz / kTickRateHz;
-    CHECK(check_same_sea(p, first_change - kTickRateHz, "a second before the first change") + 3 >= span);
+    CHECK(check_same_sea(p, first_change - kTickRateHz, "a second before the first change") + 3 >=
+          (kTimingMeasurable ? span : span / 2));
   }
   // Byte for byte across the changes: a busy replica may predict its deltas from other baselines
   // (then that pair is not compared further), but on a machine that keeps up most pairs are
   // compared to the end, and one at least must be.
   if (kTimingMeasurable) CHECK(most_bytes_after_change >= 42);  // ticks: a second and a half, less a few
 
-  // A replica started after every change streams the log's sea from its first frame: the same
-  // bytes as replica A, its first keyframe included.
+  // A replica started 30 s after the others, after every change, streams the log's sea from its
+  // first frame: the same bytes as replica A, its first keyframe included.
+  std::this_thread::sleep_for(std::chrono::duration<double>(std::max(0.0, 30.0 - fleet.age_s())));
   const int late = fleet.add_replica();
   for (const Profile* profile : profiles) {
     std::size_t bytes = 0, sea = 0;
@@ -159,7 +161,10 @@ TEST_CASE("with the store killed the replicas go on and refuse changes with the 
     CHECK(r->scene_updates()[1] == p.first().scene_updates()[1]);
   }
   const Tick first_change = p.first().scene_updates().front().effective_tick;
-  CHECK(check_same_sea(p, first_change, "the first change, across the outage") >= last_change + 40 - first_change);
+  // Every tick from the first change to the last recorded (half of them under a sanitizer, whose
+  // decoders fall behind), all alike.
+  const Tick across = last_change + 40 - first_change;
+  CHECK(check_same_sea(p, first_change, "the first change, across the outage") >= (kTimingMeasurable ? across : across / 2));
 
   // Entries written into the store by other hands: a damaged one, and a scene no profile can carry
   // (the appending replica would have refused it). Every replica skips both and goes on.
@@ -216,7 +221,8 @@ TEST_CASE("a replica cut off from the store while a change is made through anoth
   relay.restore();
   REQUIRE(run_until(io, [&] { return p.replicas[2]->scene_updates().size() == 1; }, 5.0));
   const Tick read_at = *p.replicas[2]->newest_tick();
-  CHECK(fleet.readyz(2).rfind("503 timeline: an entry came after its tick", 0) == 0);
+  // Not ready from when it applied the entry (its viewer may hear of it a moment before).
+  CHECK(run_until(io, [&] { return fleet.readyz(2).rfind("503 timeline: an entry came after its tick", 0) == 0; }, 1.5));
   record_until(io, all, read_at + 60);
   CHECK(fleet.metric(2, "ocean_timeline_late_entries_total") == 1.0);
   CHECK(fleet.metric(0, "ocean_timeline_late_entries_total") == 0.0);

@@ -60,7 +60,10 @@ class TimelineFleet {
                                            << replica_config_toml(true, true);
     for (int i = 0; i < kReplicas; ++i) start_replica();
     for (auto& server : servers_) wait_listening(*server);
+    started_ = std::chrono::steady_clock::now();
   }
+  // Seconds since the replicas were listening.
+  double age_s() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count(); }
   // One more replica of the same config (a restarted or rescheduled pod); its index.
   int add_replica() {
     start_replica();
@@ -108,6 +111,7 @@ class TimelineFleet {
   }
 
   std::vector<std::vector<std::string>> own_flags_;
+  std::chrono::steady_clock::time_point started_;
   TempDir dir_;
   std::vector<std::unique_ptr<ServerProcess>> servers_;
 };
