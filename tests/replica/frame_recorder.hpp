@@ -42,8 +42,10 @@ struct RecordedFrame {
 class FrameRecorder {
  public:
   // Connects at once (blocking); the Hello waits for send_hello(), so a test can time it.
-  FrameRecorder(asio::io_context& io, const asio::ip::tcp::endpoint& server, std::uint8_t profile_id)
-      : socket_(io), profile_id_(profile_id), decoder_(decoder_config(), decoder_events(sea_, heights_)) {
+  // `decode`: pass every message through the listening ClientSession too (sea(), heights()); off,
+  // the recorder only records (a sanitizer's decode is slow enough to cost a busy test its keys).
+  FrameRecorder(asio::io_context& io, const asio::ip::tcp::endpoint& server, std::uint8_t profile_id, bool decode = true)
+      : socket_(io), profile_id_(profile_id), decode_(decode), decoder_(decoder_config(), decoder_events(sea_, heights_)) {
     decoder_.start(0.0);
     socket_.connect(server);
     socket_.set_option(asio::ip::tcp::no_delay(true));
@@ -126,7 +128,7 @@ class FrameRecorder {
   }
 
   void on_message(std::span<const std::uint8_t> bytes) {
-    decoder_.on_tcp_message(bytes, 0.0);
+    if (decode_) decoder_.on_tcp_message(bytes, 0.0);
     const std::size_t limit = welcome_ ? welcome_->max_message_bytes : protocol::kDefaultMaxMessageBytes;
     const protocol::Verified v = protocol::verify_message(bytes, {protocol::Sender::server, wire::Transport::tcp, limit});
     if (!v) {
@@ -172,6 +174,7 @@ class FrameRecorder {
   std::map<Tick, RecordedFrame> frames_;
   std::optional<Tick> first_key_tick_;
   std::vector<protocol::SceneUpdate> scene_updates_;
+  bool decode_;
   std::map<Tick, std::uint64_t> sea_;  // before decoder_, which writes them
   std::map<Tick, std::vector<float>> heights_;
   client::ClientSession decoder_;

@@ -68,6 +68,10 @@ struct Replicas {
   std::vector<asio::ip::tcp::endpoint> servers;
   std::function<std::string()> logs;
   std::optional<std::int64_t> epoch_unix_ms;
+  // Compare the heights the frames decode to as well (the pods of the container stage, across a
+  // timeline change); the processes here compare bytes only, as many attempts as a busy
+  // sanitizer build needs.
+  bool decode = false;
 };
 
 // Records every replica's stream of one profile, as often as needed, until the frames compared
@@ -82,7 +86,8 @@ void check_profile(const Replicas& replicas, const Profile& profile) {
   for (int attempt = 1; attempt <= kMaxAttempts && !enough({}) && std::chrono::steady_clock::now() < deadline; ++attempt) {
     asio::io_context io;
     std::vector<std::unique_ptr<FrameRecorder>> recorders;
-    for (const auto& server : replicas.servers) recorders.push_back(std::make_unique<FrameRecorder>(io, server, profile.id));
+    for (const auto& server : replicas.servers)
+      recorders.push_back(std::make_unique<FrameRecorder>(io, server, profile.id, replicas.decode));
     const FrameRecorder& a = *recorders.front();
     sleep_to_frame_phase(step, 0.5);
     for (auto& r : recorders) r->send_hello();
@@ -167,7 +172,7 @@ void check_profile(const Replicas& replicas, const Profile& profile) {
                     << " payload bytes; mismatches: " << first_mismatches);
   CHECK(total.mismatched_chunks == 0);
   CHECK(total.mismatched_seas == 0);
-  CHECK(total.seas + 3 >= total.keys + total.deltas);
+  if (replicas.decode) CHECK(total.seas + 3 >= total.keys + total.deltas);
   CHECK(total.keys >= 1);
   CHECK(total.deltas >= kMinDeltas);
   std::printf("[replica] %.*s: %zu replicas, %zu key(s) + %zu deltas compared with the first (%zu chunks, %zu bytes), "
@@ -214,7 +219,8 @@ TEST_CASE("replicas send byte-identical frames", "[replica]") {
 TEST_CASE("replicas named in OCEAN_REPLICA_SERVERS send byte-identical frames", "[.][external]") {
   const char* servers = std::getenv("OCEAN_REPLICA_SERVERS");
   REQUIRE(servers);
-  const Replicas replicas{parse_endpoints(servers), [] { return std::string("(external replicas: no logs here)"); }, std::nullopt};
+  const Replicas replicas{parse_endpoints(servers), [] { return std::string("(external replicas: no logs here)"); }, std::nullopt,
+                          true};
   REQUIRE(replicas.servers.size() >= 2);
   const char* profiles = std::getenv("OCEAN_REPLICA_PROFILES");
   std::stringstream names(profiles ? profiles : "mobile");

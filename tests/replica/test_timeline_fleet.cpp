@@ -133,20 +133,20 @@ TEST_CASE("with the store killed the replicas go on and refuse changes with the 
   }
   {  // refused through B, with the store's error
     AdminRun refused(fleet.endpoint(1), fleet.token_file(), "--wind-speed 18");
-    REQUIRE(run_until(io, [&] { return refused.done(); }, 15.0));
+    REQUIRE(run_until(io, [&] { return refused.done(); }, 15.0 * kSlow));
     CHECK(refused.exit_code() == 3);
     CHECK(fleet.metric(1, "ocean_timeline_refused_total") == 1.0);
   }
   run_until(io, [] { return false; }, 1.0);
   // The replicas went on streaming the timeline they hold.
-  for (const auto& r : p.replicas) CHECK(*r->newest_tick() >= outage_start + kTickRateHz - 5);
+  for (const auto& r : p.replicas) CHECK(*r->newest_tick() >= outage_start + (kTimingMeasurable ? kTickRateHz - 5 : 5));
 
   REQUIRE(etcd.start());  // back, with its data: the log as it was
   REQUIRE(run_until(io, [&] {
     for (int i = 0; i < kReplicas; ++i)
       if (fleet.readyz(i).rfind("200", 0) != 0) return false;
     return true;
-  }, 10.0));
+  }, 10.0 * kSlow));
   change_through_a(io, fleet, all, "--wind-speed 12 --wind-dir 120", 2);
   const Tick last_change = p.first().scene_updates().back().effective_tick;
   record_until(io, all, last_change + 45);
@@ -181,7 +181,7 @@ TEST_CASE("with the store killed the replicas go on and refuse changes with the 
     for (int i = 0; i < kReplicas; ++i)
       if (fleet.metric(i, "ocean_timeline_skipped_total") != 2.0) return false;
     return true;
-  }, 5.0));
+  }, 5.0 * kSlow));
   for (int i = 0; i < kReplicas; ++i) {
     CHECK(fleet.metric(i, "ocean_timeline_entries_total") == 2.0);
     CHECK(fleet.readyz(i).rfind("200", 0) == 0);
@@ -212,14 +212,14 @@ TEST_CASE("a replica cut off from the store while a change is made through anoth
   CHECK(fleet.readyz(0).rfind("200", 0) == 0);
   {  // through A: A and B announce it, C cannot
     AdminRun admin(fleet.endpoint(0), fleet.token_file(), "--wind-speed 17 --wind-dir 200");
-    REQUIRE(run_until(io, [&] { return admin.done() && p.replicas[1]->scene_updates().size() == 1; }, 15.0));
+    REQUIRE(run_until(io, [&] { return admin.done() && p.replicas[1]->scene_updates().size() == 1; }, 15.0 * kSlow));
     CHECK(admin.exit_code() == 0);
   }
   const Tick change = p.first().scene_updates().front().effective_tick;
-  run_until(io, [&] { return *p.replicas[2]->newest_tick() >= change + 15; }, 5.0);  // C streams past it
+  run_until(io, [&] { return *p.replicas[2]->newest_tick() >= change + 15; }, 5.0 * kSlow);  // C streams past it
   CHECK(p.replicas[2]->scene_updates().empty());
   relay.restore();
-  REQUIRE(run_until(io, [&] { return p.replicas[2]->scene_updates().size() == 1; }, 5.0));
+  REQUIRE(run_until(io, [&] { return p.replicas[2]->scene_updates().size() == 1; }, 5.0 * kSlow));
   const Tick read_at = *p.replicas[2]->newest_tick();
   // Not ready from when it applied the entry (its viewer may hear of it a moment before).
   CHECK(run_until(io, [&] { return fleet.readyz(2).rfind("503 timeline: an entry came after its tick", 0) == 0; }, 1.5));

@@ -46,6 +46,9 @@ inline constexpr bool kTimingMeasurable = false;
 #else
 inline constexpr bool kTimingMeasurable = true;
 #endif
+// Deadlines for what must happen at all (a keyframe, an answer) are this many times longer there:
+// each replica an ASan build several times slower, beside the test process and its recorders.
+inline constexpr double kSlow = kTimingMeasurable ? 1.0 : 4.0;
 
 // Three replicas of one config that follows the timeline at `timeline_url`.
 class TimelineFleet {
@@ -105,7 +108,7 @@ class TimelineFleet {
     servers_.push_back(std::make_unique<ServerProcess>(std::move(options)));
   }
   void wait_listening(ServerProcess& server) const {
-    const bool listening = server.wait_listening(30.0);
+    const bool listening = server.wait_listening(30.0 * kSlow);
     INFO(logs());
     REQUIRE(listening);
   }
@@ -165,7 +168,7 @@ inline std::vector<ProfileRecordings> record(asio::io_context& io, const std::ve
         return std::all_of(p.replicas.begin(), p.replicas.end(), [&](const auto& r) { return same(p, *r); });
       });
     };
-    REQUIRE(run_until(io, [&] { return keyed([](const ProfileRecordings&, const FrameRecorder& r) { return r.first_key_tick().has_value(); }); }, 10.0));
+    REQUIRE(run_until(io, [&] { return keyed([](const ProfileRecordings&, const FrameRecorder& r) { return r.first_key_tick().has_value(); }); }, 10.0 * kSlow));
     if (keyed([](const ProfileRecordings& p, const FrameRecorder& r) { return r.first_key_tick() == p.first().first_key_tick(); }))
       return all;
   }
@@ -187,7 +190,7 @@ inline double change_through_a(asio::io_context& io, const TimelineFleet& fleet,
   REQUIRE(run_until(io, [&] {
     if (announced() && ms < 0.0) ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - admin.started()).count();
     return admin.done() && ms >= 0.0;
-  }, 15.0));
+  }, 15.0 * kSlow));
   INFO("ocean-admin " << change);
   CHECK(admin.exit_code() == 0);
   return ms;
@@ -356,7 +359,7 @@ inline void record_until(asio::io_context& io, std::vector<ProfileRecordings>& a
     return std::all_of(all.begin(), all.end(), [&](const ProfileRecordings& p) {
       return std::all_of(p.replicas.begin(), p.replicas.end(), [&](const auto& r) { return r->newest_tick() && *r->newest_tick() >= until; });
     });
-  }, 10.0));
+  }, 10.0 * kSlow));
   for (auto& p : all)
     for (auto& r : p.replicas) r->close();
 }
