@@ -264,3 +264,29 @@ TEST_CASE("a replica cut off from the store while a change is made through anoth
               static_cast<unsigned long long>(*rekeyed), while_cut, compared_after_key, after_key);
   std::fflush(stdout);
 }
+
+TEST_CASE("a server refuses a --timeline URL it cannot follow at once, and a store that never answers stops its start",
+          "[replica][timeline]") {
+  // Each bad form: exit 2 before listening, the option and the URL named.
+  for (const char* bad : {"redis://127.0.0.1:6379/ocean", "etcd://127.0.0.1:2379", "etcd://127.0.0.1:0/ocean", "etcd://:2379/ocean"}) {
+    test_support::ServerOptions options;
+    options.args = {"--listen", "127.0.0.1:0", "--metrics-listen", "off", "--size", "64", "--profiles", "mobile", "--timeline", bad};
+    options.wait_listening = false;
+    ServerProcess server(options);
+    const int status = server.wait_exit(20.0 * kSlow);
+    INFO(bad << ": " << server.log());
+    CHECK(status == 2);
+    CHECK(server.log().find("--timeline") != std::string::npos);
+    CHECK(server.log().find("listening") == std::string::npos);
+  }
+  // A well-formed URL whose store is not there: exit 1 within its 10 s, the store named; nothing served.
+  test_support::ServerOptions options;
+  options.args = {"--listen", "127.0.0.1:0", "--metrics-listen", "off", "--size", "64", "--profiles", "mobile",
+                  "--timeline", "etcd://127.0.0.1:" + std::to_string(test_support::free_port()) + "/ocean/nowhere"};
+  options.wait_listening = false;
+  ServerProcess server(options);
+  const int status = server.wait_exit(30.0 * kSlow);
+  INFO(server.log());
+  CHECK(status == 1);
+  CHECK(server.log().find("did not answer within 10 s") != std::string::npos);
+}

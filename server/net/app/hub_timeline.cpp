@@ -28,10 +28,7 @@ void SessionHub::follow_timeline() {
     asio::post(server_.context(), [this, change, reason] { core_.refuse_logged(change, reason); });
   };
   handlers.unreadable = [this](std::uint64_t index, const std::string& reason) {
-    asio::post(server_.context(), [this, index, reason] {
-      server_.metrics().timeline_skipped.inc();
-      spdlog::error("timeline entry {} skipped (every replica skips it): {}", index, reason);
-    });
+    asio::post(server_.context(), [this, index, reason] { skip_unreadable(index, reason); });
   };
   const std::uint64_t next = read_timeline_history(*address);
   spdlog::info("following the fleet's timeline at etcd {}:{} prefix {} from entry {}", address->store.host,
@@ -45,6 +42,9 @@ void SessionHub::follow_timeline() {
 // store that does not answer stops the start (exit 1): the config's sea is not the fleet's.
 std::uint64_t SessionHub::read_timeline_history(const TimelineAddress& address) {
   TimelineLog log(address, 1.0);
+  TimelineFollower::Handlers history;  // on this thread, before any tick: straight to the core
+  history.entry = [this](std::uint64_t index, TimelineChange change) { core_.apply_logged(index, change, true); };
+  history.unreadable = [this](std::uint64_t index, const std::string& reason) { skip_unreadable(index, reason); };
   std::uint64_t next = 1;
   std::string last_error;
   const double deadline = timeline_clock_s() + kTimelineStartS;
@@ -55,21 +55,17 @@ std::uint64_t SessionHub::read_timeline_history(const TimelineAddress& address) 
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
       continue;
     }
-    for (const TimelineEntry& entry : read.entries) {
-      std::string error;
-      if (const std::optional<TimelineChange> change = decode_change(entry.bytes, error))
-        core_.apply_logged(entry.index, *change, true);
-      else {
-        server_.metrics().timeline_skipped.inc();
-        spdlog::error("timeline entry {} skipped (every replica skips it): {}", entry.index, error);
-      }
-      next = entry.index + 1;
-    }
+    next = deliver_entries(read, next, history);
     if (read.entries.size() < 256) return next;
   }
   throw std::runtime_error("--timeline: the store at " + address.store.host + ":" + std::to_string(address.store.port) +
                            " did not answer within " + std::to_string(static_cast<int>(kTimelineStartS)) +
                            " s (" + last_error + "); a server that cannot read the fleet's timeline does not start");
+}
+
+void SessionHub::skip_unreadable(std::uint64_t index, const std::string& reason) {
+  server_.metrics().timeline_skipped.inc();
+  spdlog::error("timeline entry {} skipped (every replica skips it): {}", index, reason);
 }
 
 std::string SessionHub::timeline_readiness() const {

@@ -39,6 +39,7 @@ class SessionHub {
   // kTimelineLateUnreadyS after an entry came after its tick.
   void follow_timeline();
   std::uint64_t read_timeline_history(const TimelineAddress& address);  // the next entry to read
+  void skip_unreadable(std::uint64_t index, const std::string& reason);   // network thread (or before it runs)
   std::string timeline_readiness() const;
   void publish_timeline_metrics();
 

@@ -84,6 +84,12 @@ std::optional<std::vector<model::VesselTrack>> SessionCore::fleet_after(Session&
   return std::move(changed.fleet);
 }
 
+std::string SessionCore::unservable(const model::SceneParams& scene) const {
+  std::vector<const Profile*> offered;
+  for (const auto& stream : streams_) offered.push_back(&stream->profile());
+  return servable_scene(scene, offered);
+}
+
 void SessionCore::apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now) {
   const Tick from = tick_ + scenes_.lead_ticks();
   model::SceneParams scene = scenes_.in_force(from).scene;
@@ -99,9 +105,7 @@ void SessionCore::apply_param_change(Session& session, const protocol::ParamChan
   if (change.amplitude) scene.amplitude = *change.amplitude;
   if (change.choppiness) scene.choppiness = *change.choppiness;
   if (change.spectrum) scene.spectrum = static_cast<model::SpectrumKind>(*change.spectrum);
-  std::vector<const Profile*> offered;
-  for (const auto& stream : streams_) offered.push_back(&stream->profile());
-  if (const std::string error = servable_scene(scene, offered); !error.empty()) {
+  if (const std::string error = unservable(scene); !error.empty()) {
     return answer_error(session, protocol::Reason::out_of_range, error, "param_change");
   }
   if (!scene_changes_.try_take(1, now.monotonic_s)) {

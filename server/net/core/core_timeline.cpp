@@ -4,7 +4,6 @@
 // the same scenes with the same serials from the same ticks and stream the same bytes.
 #include "session_core.hpp"
 
-#include "servable_scene.hpp"
 #include "server_log.hpp"
 
 #include <spdlog/spdlog.h>
@@ -19,10 +18,9 @@ void SessionCore::apply_logged(std::uint64_t index, const TimelineChange& change
   // from now on is the log's - and every viewer is keyed again, its decoder holding the other.
   const bool late = update.effective_tick <= tick_ && !history;
   // The replica that appended it checked it; one written into the store by other hands is checked
-  // here, alike on every replica (one config, one set of profiles), and skipped by all.
-  std::vector<const Profile*> offered;
-  for (const auto& stream : streams_) offered.push_back(&stream->profile());
-  if (const std::string error = servable_scene(update.scene, offered); !error.empty()) {
+  // here, alike on every replica (one config, one set of profiles), and skipped by all - the origin
+  // included: its mark in the entry is no proof of who wrote it.
+  if (const std::string error = unservable(update.scene); !error.empty()) {
     host_.metrics.timeline_skipped.inc();
     spdlog::error("timeline entry {} skipped (every replica skips it): {}", index, error);
     if (requester) answer_error(*requester, protocol::Reason::out_of_range, error, "param_change");

@@ -178,6 +178,8 @@ class SessionCore {
   std::optional<std::vector<model::VesselTrack>> fleet_after(Session& session, const protocol::VesselCommand& command,
                                                              Tick from);
   void apply_param_change(Session& session, const protocol::ParamChange& change, const Instant& now);
+  // servable_scene over the profiles this server offers: "" or why one cannot carry the scene.
+  std::string unservable(const model::SceneParams& scene) const;
   // Admin HeightQuery (core_queries.cpp): a connection's first right token passes the admin queue,
   // later queries with it are answered at once, at the query rate, from the newest tick's frames.
   void on_height_query(const std::shared_ptr<Session>& session, const wire::HeightQuery& query, const Instant& now);

@@ -68,17 +68,22 @@ void TimelineFollower::read_new() {
     const TimelineLog::Read read = log_.read_from(from, kReadBatch);
     if (!read.error.empty()) return;  // the store is away: last_read_s() ages, and says so
     last_read_s_.store(timeline_clock_s());
-    for (const TimelineEntry& entry : read.entries) {
-      std::string error;
-      if (std::optional<TimelineChange> change = decode_change(entry.bytes, error)) {
-        if (handlers_.entry) handlers_.entry(entry.index, std::move(*change));
-      } else if (handlers_.unreadable) {
-        handlers_.unreadable(entry.index, error);
-      }
-      next_index_.store(entry.index + 1);
-    }
+    next_index_.store(deliver_entries(read, from, handlers_));
     if (read.entries.size() < kReadBatch) return;
   }
+}
+
+std::uint64_t deliver_entries(const TimelineLog::Read& read, std::uint64_t next, const TimelineFollower::Handlers& handlers) {
+  for (const TimelineEntry& entry : read.entries) {
+    std::string error;
+    if (std::optional<TimelineChange> change = decode_change(entry.bytes, error)) {
+      if (handlers.entry) handlers.entry(entry.index, std::move(*change));
+    } else if (handlers.unreadable) {
+      handlers.unreadable(entry.index, error);
+    }
+    next = entry.index + 1;
+  }
+  return next;
 }
 
 }  // namespace ocean::server

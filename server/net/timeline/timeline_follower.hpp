@@ -67,4 +67,9 @@ class TimelineFollower {
 // Seconds on the steady clock, as last_read_s() gives them.
 double timeline_clock_s();
 
+// Hands each entry read to handlers.entry, or to handlers.unreadable, in log order; returns the
+// index after the last one (`next` when there was none). The follower's reads and a replica's
+// read of the log at its start both pass here.
+std::uint64_t deliver_entries(const TimelineLog::Read& read, std::uint64_t next, const TimelineFollower::Handlers& handlers);
+
 }  // namespace ocean::server
