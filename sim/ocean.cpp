@@ -40,6 +40,14 @@ struct Ocean::Impl {
     return *bands.back();
   }
 
+  BandEvaluator& checked_band(int n_x, int n_z) {
+    if (!power_of_two_in(n_x, 16, params.size_x))
+      throw ParamError(bad_param("band n_x", n_x, "a power of two in [16, size_x = " + std::to_string(params.size_x) + "]"));
+    if (!power_of_two_in(n_z, 16, params.size_z))
+      throw ParamError(bad_param("band n_z", n_z, "a power of two in [16, size_z = " + std::to_string(params.size_z) + "]"));
+    return band(n_x, n_z);
+  }
+
   void check_time(double t) const {
     if (!(std::fabs(t) <= time_limit_s))
       throw ParamError(bad_param("t", t, "finite with |t| <= " + format_value(time_limit_s) + " s"));
@@ -65,14 +73,11 @@ void Ocean::evaluate(double t, Frame& out, FrameRequest request) {
 }
 
 void Ocean::evaluate_band(double t, int n_x, int n_z, Frame& out, FrameRequest request) {
-  const SceneParams& p = impl_->params;
-  if (!power_of_two_in(n_x, 16, p.size_x))
-    throw ParamError(bad_param("band n_x", n_x, "a power of two in [16, size_x = " + std::to_string(p.size_x) + "]"));
-  if (!power_of_two_in(n_z, 16, p.size_z))
-    throw ParamError(bad_param("band n_z", n_z, "a power of two in [16, size_z = " + std::to_string(p.size_z) + "]"));
   impl_->check_time(t);
-  impl_->band(n_x, n_z).evaluate(t, out, request);
+  impl_->checked_band(n_x, n_z).evaluate(t, out, request);
 }
+
+void Ocean::prepare_band(int n_x, int n_z) { impl_->checked_band(n_x, n_z); }
 
 std::complex<double> Ocean::mode_amplitude(double t, int kx, int kz) const {
   const SceneParams& p = impl_->params;

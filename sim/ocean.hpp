@@ -32,6 +32,9 @@ class Ocean {
   // An n_x x n_z frame (powers of two, 16 <= n <= size) made from the central n_x x n_z modes of the
   // same spectrum: the exact low-pass of the full frame, sampled every size/n-th point.
   void evaluate_band(double t, int n_x, int n_z, Frame& out, FrameRequest request = {});
+  // Builds the n_x x n_z band now (its mode table and plan), so a first evaluate_band of it costs a
+  // tick's work only: a server builds the next scene's bands ahead of its tick. Throws as evaluate_band.
+  void prepare_band(int n_x, int n_z);
 
   // h(k, t) in metres of the wave with integer wavenumber (kx, kz) (cycles per patch) as the full
   // frame uses it, computed independently in double: h0(k) e^{-iwt} + conj(h0(-k)) e^{iwt} (the

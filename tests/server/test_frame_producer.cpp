@@ -122,3 +122,33 @@ TEST_CASE("desktop and desktop-choppy share one evaluation of their cascades, ea
     CHECK(shared->frames[1].frame.height.size() == 64u * 64u);
   }
 }
+
+// Scenes known ahead (the schedule's next entry, an admin change a lead before its tick) are built
+// on the producer's BuildQueue while it steps on; a producer that meets the same scenes with no
+// warning builds them at the tick. Their frames must be the same bits.
+TEST_CASE("a scene built ahead of its tick gives the bits of one built at it", "[frame_producer][schedule]") {
+  ocean::model::SceneParams calm = small_scene();
+  ocean::model::SceneParams gale = calm, storm = calm;
+  gale.wind_speed_mps = 20.0;
+  storm.spectrum = ocean::model::SpectrumKind::jonswap;
+  storm.wind_speed_mps = 15.0;
+  storm.choppiness = 1.2;
+  const auto names = {"mobile", "desktop-choppy", "lite"};
+  FrameProducer stepping(SceneSchedule(calm, {{40, gale}}), profiles(names));
+  for (std::int64_t tick = 0; tick < 70; ++tick) {
+    if (tick == 30) stepping.override_scene(storm, 60);  // an admin change, a second ahead
+    const auto frames = stepping.produce(tick, static_cast<double>(tick) / 30.0);
+    CHECK(stepping.scene_changed() == (tick == 40 || tick == 60));
+    if (tick != 40 && tick != 60 && tick != 69) continue;
+    // The scene in force, as a producer started there meets it: built when asked for.
+    FrameProducer fresh(SceneSchedule(tick < 60 ? gale : storm, {}), profiles(names));
+    const auto expected = fresh.produce(tick, static_cast<double>(tick) / 30.0);
+    INFO("tick " << tick);
+    for (std::size_t i = 0; i < frames->frames.size(); ++i) {
+      CHECK(frames->frames[i].frame.height == expected->frames[i].frame.height);
+      CHECK(frames->frames[i].frame.slope_x == expected->frames[i].frame.slope_x);
+      CHECK(frames->frames[i].frame.jacobian == expected->frames[i].frame.jacobian);
+    }
+  }
+  CHECK(stepping.scene().choppiness == 1.2);
+}

@@ -42,7 +42,7 @@ SessionCore::SessionCore(SessionCoreHost host, SessionCoreOptions options, Tick 
       spdlog::warn("profile {} is not offered to clients: {}", profile->name, error);
       continue;
     }
-    streams_.push_back(std::make_unique<ProfileStream>(*profile, config));
+    streams_.push_back(std::make_unique<ProfileStream>(*profile, config, builds_));
     if (config.has_wake()) streams_.back()->set_vessels(host_.config.vessels);
   }
   if (streams_.empty()) throw std::invalid_argument("--profiles: no offered profile can be streamed by the codec");

@@ -232,6 +232,7 @@ class SessionCore {
 
   SessionCoreHost host_;
   SessionCoreOptions options_;
+  std::shared_ptr<BuildQueue> builds_ = std::make_shared<BuildQueue>();  // the streams' scene models
   std::vector<std::unique_ptr<ProfileStream>> streams_;
   SessionTable sessions_;  // welcomed
   std::vector<std::shared_ptr<Session>> handshaking_;

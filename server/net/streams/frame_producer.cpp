@@ -82,16 +82,20 @@ FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*>
     shared.slopes = shared.slopes || profiles_[i]->normals;
     shared.choppy = shared.choppy || profiles_[i]->choppy;
   }
-  use_scene(*scheduled_scene_);
+  builder_ = std::make_unique<SeaBuilder>(profiles_, cascade_source_);
+  use_sea(builder_->build(*scheduled_scene_));
 }
 
-void FrameProducer::use_scene(const model::SceneParams& scene) {
-  ocean_ = std::make_unique<sim::Ocean>(scene);
-  cascades_.clear();
-  for (std::size_t i = 0; i < profiles_.size(); ++i) {
-    const bool evaluated = !profiles_[i]->cascades.empty() && cascade_source_[i] == i;
-    cascades_.push_back(evaluated ? std::make_unique<sim::CascadeSet>(scene, profiles_[i]->cascades) : nullptr);
-  }
+void FrameProducer::override_scene(const model::SceneParams& scene, std::int64_t from) {
+  overrides_[from] = Override{scene, builder_->build_ahead(builds_, scene)};
+  if (wake_) wake_->set_depth(scene.depth_m, from);
+}
+
+void FrameProducer::build_next_scheduled(std::int64_t tick) {
+  const auto next = std::ranges::upper_bound(schedule_.changes(), tick, {}, &ScheduledScene::tick);
+  if (next == schedule_.changes().end() || next->tick - tick > kScheduleLookaheadTicks) return;
+  if (next_scheduled_.scene == &next->scene) return;
+  next_scheduled_ = PendingSea{&next->scene, builder_->build_ahead(builds_, next->scene)};
 }
 
 std::shared_ptr<TickFrames> FrameProducer::take_buffer() {
@@ -116,12 +120,15 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
   scene_changed_ = false;
   if (&scheduled != scheduled_scene_) {
     scheduled_scene_ = &scheduled;
-    use_scene(scheduled);
+    // Built ahead unless the producer started (or jumped) within the lookahead of it.
+    use_sea(next_scheduled_.scene == &scheduled ? next_scheduled_.sea.get() : builder_->build(scheduled));
+    next_scheduled_ = {};
     scene_changed_ = true;
   }
+  build_next_scheduled(tick);
   if (!overrides_.empty() && overrides_.begin()->first <= tick) {
     const auto due = overrides_.upper_bound(tick);
-    use_scene(std::prev(due)->second);
+    use_sea(std::prev(due)->second.sea.get());
     overrides_.erase(overrides_.begin(), due);
     scene_changed_ = true;
   }
@@ -129,30 +136,30 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
   std::shared_ptr<TickFrames> result = take_buffer();
   result->tick = tick;
   result->time_s = time_s;
-  result->scene = ocean_->params();
+  result->scene = ocean().params();
   result->scene_changed = scene_changed_;
   result->frames.resize(profiles_.size());
   for (std::size_t i = 0; i < profiles_.size(); ++i) {
     const Profile& profile = *profiles_[i];
     result->frames[i].profile = &profile;
-    if (cascades_[i]) {
-      cascades_[i]->evaluate(time_s, result->frames[i].frame, cascade_request_[i]);
+    if (sea_.cascades[i]) {
+      sea_.cascades[i]->evaluate(time_s, result->frames[i].frame, cascade_request_[i]);
       continue;
     }
     if (!profile.cascades.empty()) continue;  // shares an evaluation: below
-    ocean_->evaluate_band(time_s, profile.grid, profile.grid, result->frames[i].frame, request_of(profile));
+    sea_.ocean->evaluate_band(time_s, profile.grid, profile.grid, result->frames[i].frame, request_of(profile));
   }
   for (std::size_t i = 0; i < profiles_.size(); ++i)
     if (cascade_source_[i] != i)
       copy_requested(result->frames[cascade_source_[i]].frame, result->frames[i].frame, request_of(*profiles_[i]));
   // A shared evaluation may hold channels its own profile does not stream.
   for (std::size_t i = 0; i < profiles_.size(); ++i)
-    if (cascades_[i]) keep_requested(result->frames[i].frame, request_of(*profiles_[i]));
+    if (sea_.cascades[i]) keep_requested(result->frames[i].frame, request_of(*profiles_[i]));
   if (wake_) {
     wake_->advance_to(tick);
     const std::vector<const sim::WakeField*> fields = wake_->fields();
     for (std::size_t i = 0; i < profiles_.size(); ++i) {
-      wake_sampler_.sample(fields, profiles_[i]->wake_grid, request_of(*profiles_[i]), ocean_->params().choppiness, wake_part_);
+      wake_sampler_.sample(fields, profiles_[i]->wake_grid, request_of(*profiles_[i]), ocean().params().choppiness, wake_part_);
       sim::append_cascade_frame(result->frames[i].frame, wake_part_);
     }
   }

@@ -3,11 +3,10 @@
 // the tick and its time are arguments, so it is tested like the simulation itself.
 #pragma once
 
-#include "cascade_set.hpp"
 #include "epoch_wake.hpp"
 #include "wake_frame.hpp"
-#include "ocean.hpp"
 #include "scene_schedule.hpp"
+#include "sea_state.hpp"
 #include "tick_frames.hpp"
 
 #include <memory>
@@ -41,10 +40,8 @@ class FrameProducer {
   // From tick `from` on, this scene replaces the active one (an admin change); it lasts
   // until the schedule reaches its next entry. The scene must pass model::validate.
   // Several may wait (admin changes within one announcement lead), each from its own tick.
-  void override_scene(const model::SceneParams& scene, std::int64_t from) {
-    overrides_[from] = scene;
-    if (wake_) wake_->set_depth(scene.depth_m, from);
-  }
+  // Its sea is built meanwhile on the producer's BuildQueue.
+  void override_scene(const model::SceneParams& scene, std::int64_t from);
   // A vessel command: the fleet from tick `from` on (its presences agree with the current fleet's
   // before it). Ignored without a wake (the server was started without vessels).
   void set_vessels(std::vector<model::VesselTrack> vessels, std::int64_t from) {
@@ -52,26 +49,39 @@ class FrameProducer {
   }
   // True when the last produce() switched to a scheduled or overriding scene.
   bool scene_changed() const { return scene_changed_; }
-  const model::SceneParams& scene() const { return ocean_->params(); }
+  const model::SceneParams& scene() const { return ocean().params(); }
 
  private:
   struct BufferPool;  // shared with every result's deleter, which returns the buffer to it
   std::shared_ptr<TickFrames> take_buffer();
 
-  void use_scene(const model::SceneParams& scene);
+  struct PendingSea {
+    const model::SceneParams* scene = nullptr;
+    std::future<SeaState> sea;
+  };
+  // The schedule's next entry, built ahead once it is this close.
+  static constexpr std::int64_t kScheduleLookaheadTicks = 60;
+  void build_next_scheduled(std::int64_t tick);
+  void use_sea(SeaState sea) { sea_ = std::move(sea); }
+  const sim::Ocean& ocean() const { return *sea_.ocean; }
 
   SceneSchedule schedule_;
   std::vector<const Profile*> profiles_;
   const model::SceneParams* scheduled_scene_;  // the schedule entry last applied
-  std::map<std::int64_t, model::SceneParams> overrides_;  // by first tick
-  std::unique_ptr<sim::Ocean> ocean_;
-  // Per offered profile, its cascades' Oceans (null for a profile without), rebuilt with every
-  // scene: a cascaded profile's frame is their frames one after the other, as its stream's fields.
-  std::vector<std::unique_ptr<sim::CascadeSet>> cascades_;
   // Per offered profile, the first with its cascades (itself if none before it has them), and the
   // channels an evaluation there makes: every channel of the profiles sharing it.
   std::vector<std::size_t> cascade_source_;
   std::vector<sim::FrameRequest> cascade_request_;
+  std::unique_ptr<SeaBuilder> builder_;
+  BuildQueue builds_;
+  // The scene in force: a cascaded profile's frame is its cascades' frames one after the other.
+  SeaState sea_;
+  struct Override {
+    model::SceneParams scene;
+    std::future<SeaState> sea;
+  };
+  std::map<std::int64_t, Override> overrides_;  // by first tick; their builds wait in the destructor
+  PendingSea next_scheduled_;
   std::shared_ptr<BufferPool> pool_;
   bool scene_changed_ = false;
   std::unique_ptr<sim::EpochWake> wake_;  // none without vessels

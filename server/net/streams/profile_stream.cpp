@@ -18,11 +18,12 @@ codec::EncoderOptions stream_encoder_options() {
   return options;
 }
 
-ProfileStream::ProfileStream(const Profile& profile, const codec::StreamConfig& config)
+ProfileStream::ProfileStream(const Profile& profile, const codec::StreamConfig& config, std::shared_ptr<BuildQueue> builds)
     : profile_(&profile),
       config_(config),
       tick_step_(config.effective_tick_rate_hz() / config.rate_hz),
-      encoder_(std::make_unique<codec::Encoder>(config, stream_encoder_options())) {
+      encoder_(std::make_unique<codec::Encoder>(config, stream_encoder_options())),
+      builds_(std::move(builds)) {
   if (config.effective_tick_rate_hz() % config.rate_hz != 0)
     throw std::invalid_argument("profile " + std::string(profile.name) + ": the tick rate " +
                                 std::to_string(config.effective_tick_rate_hz()) + " Hz is not a multiple of its " +
@@ -32,7 +33,7 @@ ProfileStream::ProfileStream(const Profile& profile, const codec::StreamConfig& 
 void ProfileStream::set_scene(Tick from, std::uint32_t serial, const model::SceneParams& scene) {
   encoder_->set_scene(from, static_cast<std::uint8_t>(serial), scene);
   const codec::StreamConfig config = encoder_->scenes().model_config(scene);
-  pending_models_.push_back({from, scene, std::async(std::launch::async, [config, scene] {
+  pending_models_.push_back({from, scene, builds_->submit([config, scene] {
                                return std::make_shared<const codec::SceneModel>(config, scene);
                              })});
 }

@@ -4,6 +4,7 @@
 // distinct baselines, not the number of clients.
 #pragma once
 
+#include "build_queue.hpp"
 #include "encoder.hpp"
 #include "frame.hpp"
 #include "frame_records.hpp"
@@ -37,7 +38,8 @@ class ProfileStream {
  public:
   // tick_rate_hz: the server's; the profile streams every (tick_rate_hz / rate_hz)-th tick.
   // Throws std::invalid_argument when the codec cannot stream the profile (e.g. choppy).
-  ProfileStream(const Profile& profile, const codec::StreamConfig& config);
+  // builds: where the models of scenes announced ahead are built (shared by a server's streams).
+  ProfileStream(const Profile& profile, const codec::StreamConfig& config, std::shared_ptr<BuildQueue> builds);
 
   const Profile& profile() const { return *profile_; }
   const codec::StreamConfig& config() const { return config_; }
@@ -93,6 +95,7 @@ class ProfileStream {
     model::SceneParams scene;
     std::future<std::shared_ptr<const codec::SceneModel>> model;
   };
+  std::shared_ptr<BuildQueue> builds_;
   std::vector<PendingModel> pending_models_;  // being built; handed over by add_truth when ready
 };
 

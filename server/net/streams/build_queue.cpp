@@ -1,0 +1,53 @@
+#include "build_queue.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace ocean::server {
+
+namespace {
+
+// Builds share a core with the tick only where it has time to spare: at nice 10 the kernel gives a
+// busy network thread about nine tenths of a contended core.
+constexpr int kBuildNice = 10;
+
+}  // namespace
+
+BuildQueue::BuildQueue() : thread_([this] { run(); }) {}
+
+BuildQueue::~BuildQueue() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    jobs_.clear();
+  }
+  wake_.notify_one();
+  thread_.join();
+}
+
+void BuildQueue::push(std::function<void()> job) {
+  {
+    std::lock_guard lock(mutex_);
+    jobs_.push_back(std::move(job));
+  }
+  wake_.notify_one();
+}
+
+void BuildQueue::run() {
+  // Linux applies a nice value to the one thread named; where it is refused, builds run at the
+  // process's priority, as before.
+  (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kBuildNice);
+  for (;;) {
+    std::function<void()> job;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
+      if (stopping_) return;
+      job = std::move(jobs_.front());
+      jobs_.pop_front();
+    }
+    job();
+  }
+}
+
+}  // namespace ocean::server
