@@ -3,8 +3,9 @@
 // by all three for the same tick with the same serial; recordings of the three streams are
 // byte-identical and decode to the same sea across them, and a fourth replica started 30 s after
 // them streams that sea from its first frame. The store killed: the replicas go on and changes are
-// refused; back: changes flow again. One replica cut off from the store: it applies what it missed
-// when it reads it, and keys its viewers again. Figures are printed ("[timeline]" lines).
+// refused; back: changes flow again. One replica cut off from the store: a change it cannot read is
+// aborted while its lease lives; once the lease has lapsed it streams nothing until it has caught
+// up, so its viewers never see a sea the log does not say. Figures are printed ("[timeline]" lines).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -193,75 +194,83 @@ TEST_CASE("with the store killed the replicas go on and refuse changes with the 
   std::fflush(stdout);
 }
 
-TEST_CASE("a replica cut off from the store while a change is made through another applies it when it reads it, and "
-          "keys its viewers again onto the log's sea",
+TEST_CASE("a replica cut off from the store never streams a sea the log does not say: a change it cannot read is "
+          "aborted while its lease lives, and once its lease has lapsed it streams nothing until it has caught up",
           "[replica][timeline]") {
   EtcdProcess etcd;
   StoreRelay relay(etcd.client_port());
   const std::string prefix = "/ocean/partition";
-  TimelineFleet fleet(etcd.url(prefix), {{}, {}, {"--timeline", "etcd://127.0.0.1:" + std::to_string(relay.port()) + prefix}});
+  constexpr int kLeaseS = 2;  // etcd's shortest
+  TimelineFleet fleet(etcd.url(prefix), {{}, {}, {"--timeline", "etcd://127.0.0.1:" + std::to_string(relay.port()) + prefix}},
+                      kLeaseS);
   asio::io_context io;
   std::vector<ProfileRecordings> all = record(io, fleet.endpoints({0, 1, 2}), {find_profile("mobile")});
   ProfileRecordings& p = all.front();
   INFO(fleet.logs());
-  run_until(io, [] { return false; }, 0.5);
+  std::string error;
+  const server::TimelineLog log(*server::parse_timeline_url(etcd.url(prefix), error), 2.0);
+  const auto members = [&] { return log.acks().read.size(); };
+  REQUIRE(run_until(io, [&] { return members() == 3; }, 5.0 * kSlow));
+  const double a_held_at_start = fleet.metric(0, "ocean_timeline_held_ticks_total");  // until it held its lease
 
   relay.cut();  // replica C alone loses the store
-  run_until(io, [] { return false; }, 0.8);
-  CHECK(fleet.readyz(2).rfind("503 timeline: stale", 0) == 0);
-  CHECK(fleet.readyz(0).rfind("200", 0) == 0);
-  {  // through A: A and B announce it, C cannot
+  const auto cut_at = std::chrono::steady_clock::now();
+  run_until(io, [] { return false; }, 0.3);
+  {  // Through A while C's lease lives: C cannot read it, so the fleet aborts it before its tick.
+    AdminRun admin(fleet.endpoint(0), fleet.token_file(), "--wind-speed 18");
+    REQUIRE(run_until(io, [&] { return admin.done(); }, 15.0 * kSlow));
+    CHECK(admin.exit_code() == 3);
+  }
+  const double aborted_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - cut_at).count();
+  for (const auto& r : p.replicas) CHECK(r->scene_updates().empty());
+  CHECK(fleet.metric(0, "ocean_timeline_refused_total") == 1.0);
+
+  // C's lease lapses: it says so and streams nothing; the store drops it from the members.
+  REQUIRE(run_until(io, [&] { return fleet.readyz(2).rfind("503 timeline: this server's lease", 0) == 0; },
+                    (kLeaseS + 2.0) * kSlow));
+  REQUIRE(run_until(io, [&] { return members() == 2; }, (kLeaseS + 2.0) * kSlow));
+  {  // Now through A: A and B take it; C, holding, cannot stream past it.
     AdminRun admin(fleet.endpoint(0), fleet.token_file(), "--wind-speed 17 --wind-dir 200");
     REQUIRE(run_until(io, [&] { return admin.done() && p.replicas[1]->scene_updates().size() == 1; }, 15.0 * kSlow));
     CHECK(admin.exit_code() == 0);
   }
   const Tick change = p.first().scene_updates().front().effective_tick;
-  run_until(io, [&] { return *p.replicas[2]->newest_tick() >= change + 15; }, 5.0 * kSlow);  // C streams past it
+  run_until(io, [&] { return *p.first().newest_tick() >= change + 15; }, 5.0 * kSlow);
   CHECK(p.replicas[2]->scene_updates().empty());
+  const Tick c_last_held = *p.replicas[2]->newest_tick();
+  CHECK(c_last_held < change);  // C streamed no frame from the change's tick on
+  const double c_held = fleet.metric(2, "ocean_timeline_held_ticks_total");
+  CHECK(c_held > 0.0);
+
   relay.restore();
-  REQUIRE(run_until(io, [&] { return p.replicas[2]->scene_updates().size() == 1; }, 5.0 * kSlow));
-  const Tick read_at = *p.replicas[2]->newest_tick();
-  // Not ready from when it applied the entry (its viewer may hear of it a moment before).
-  CHECK(run_until(io, [&] { return fleet.readyz(2).rfind("503 timeline: an entry came after its tick", 0) == 0; }, 1.5));
-  record_until(io, all, read_at + 60);
+  REQUIRE(run_until(io, [&] { return p.replicas[2]->scene_updates().size() == 1; }, (kLeaseS + 5.0) * kSlow));
+  REQUIRE(run_until(io, [&] { return *p.replicas[2]->newest_tick() >= change; }, 5.0 * kSlow));
+  const Tick resumed_at = *p.replicas[2]->newest_tick();
+  record_until(io, all, resumed_at + 60);
   CHECK(fleet.metric(2, "ocean_timeline_late_entries_total") == 1.0);
   CHECK(fleet.metric(0, "ocean_timeline_late_entries_total") == 0.0);
-  // C announced the change as A did, and keyed its viewer again after reading it.
+  CHECK(fleet.metric(0, "ocean_timeline_held_ticks_total") == a_held_at_start);  // A and B never held
   CHECK(p.replicas[2]->scene_updates().front() == p.first().scene_updates().front());
-  std::optional<Tick> rekeyed;
-  for (const auto& [tick, frame] : p.replicas[2]->frames())
-    if (frame.key && tick > change && !rekeyed) rekeyed = tick;
-  REQUIRE(rekeyed);
-  // Its sea: another from the change until the key, the log's from the key on - alike to the
-  // rounding of a decoder keyed at another tick than A's viewer (a micrometre, not bit for bit).
-  const auto worst_difference = [&](Tick tick) {
-    const auto a = p.first().heights().find(tick), c = p.replicas[2]->heights().find(tick);
-    if (a == p.first().heights().end() || c == p.replicas[2]->heights().end() || a->second.size() != c->second.size())
-      return -1.0f;
-    float worst = 0.0f;
-    for (std::size_t i = 0; i < a->second.size(); ++i) worst = std::max(worst, std::abs(a->second[i] - c->second[i]));
-    return worst;
-  };
-  float while_cut = 0.0f, after_key = 0.0f;
-  std::size_t compared_after_key = 0;
+  // Every frame C's viewer decoded, before the cut, while cut and after, is the log's sea: the
+  // same heights as replica A's viewer (to the rounding of a decoder keyed at another tick than
+  // A's: a micrometre, not bit for bit).
+  float worst = 0.0f;
+  std::size_t compared = 0, compared_after_change = 0;
   for (const auto& [tick, heights] : p.replicas[2]->heights()) {
-    const float worst = worst_difference(tick);
-    if (worst < 0.0f || tick < change) continue;
-    if (tick < *rekeyed) {
-      while_cut = std::max(while_cut, worst);
-    } else {
-      after_key = std::max(after_key, worst);
-      ++compared_after_key;
-    }
+    const auto a = p.first().heights().find(tick);
+    if (a == p.first().heights().end() || a->second.size() != heights.size()) continue;
+    for (std::size_t i = 0; i < heights.size(); ++i) worst = std::max(worst, std::abs(a->second[i] - heights[i]));
+    ++compared;
+    compared_after_change += tick >= change;
   }
-  CHECK(while_cut > 0.1f);  // what the cut cost its viewers (RUNNING.md says so)
-  CHECK(after_key < 1e-4f);
-  CHECK(compared_after_key >= 30);
-  std::printf("[timeline] replica C cut off from the store: the change from tick %llu read at tick %llu; its viewer "
-              "saw another sea until its key at tick %llu (up to %.2f m off), then the log's (%zu ticks within %.1e m of "
-              "replica A's viewer)\n",
-              static_cast<unsigned long long>(change), static_cast<unsigned long long>(read_at),
-              static_cast<unsigned long long>(*rekeyed), while_cut, compared_after_key, after_key);
+  CHECK(worst < 1e-4f);
+  CHECK(compared_after_change >= 30);
+  std::printf("[timeline] replica C cut off from the store: a change through A %.1f s into the cut was aborted (exit 3); "
+              "C's %d s lease lapsed, it streamed nothing after tick %llu (%.0f ticks held); a change through A then took effect at tick "
+              "%llu on A and B; C caught up and streamed again from tick %llu: %zu ticks of C's viewer compared with A's "
+              "(%zu from the change on), worst %.1e m\n",
+              aborted_s, kLeaseS, static_cast<unsigned long long>(c_last_held), c_held, static_cast<unsigned long long>(change),
+              static_cast<unsigned long long>(resumed_at), compared, compared_after_change, worst);
   std::fflush(stdout);
 }
 

@@ -54,11 +54,14 @@ inline constexpr double kSlow = kTimingMeasurable ? 1.0 : 4.0;
 class TimelineFleet {
  public:
   // `own_flags`: flags for one replica each (a --timeline through a relay), the rest the file's.
-  explicit TimelineFleet(const std::string& timeline_url, std::vector<std::vector<std::string>> own_flags = {})
+  // `lease_s`: each replica's lease on the store (--timeline-lease).
+  explicit TimelineFleet(const std::string& timeline_url, std::vector<std::vector<std::string>> own_flags = {},
+                         int lease_s = 10)
       : own_flags_(std::move(own_flags)) {
     std::ofstream(dir_.file("token")) << "fleet-admin-token\n";
     // Top-level keys before the config's [[vessel]] tables (after them they would be a vessel's).
     std::ofstream(dir_.file("ocean.toml")) << "timeline = \"" << timeline_url << "\"\n"
+                                           << "timeline-lease = " << lease_s << "\n"
                                            << "admin-token-file = \"" << dir_.file("token") << "\"\n"
                                            << replica_config_toml(true, true);
     for (int i = 0; i < kReplicas; ++i) start_replica();

@@ -114,6 +114,46 @@ TEST_CASE("replicas appending at once each get a place of their own, in one orde
   CHECK(seen.size() == kReplicas * kEach);  // each change exactly once
 }
 
+TEST_CASE("the first decision on an entry stands for every replica, and a member's acknowledgement goes with its lease",
+          "[timeline]") {
+  EtcdProcess etcd;
+  const TimelineLog log = log_at(etcd.url("/ocean/decisions"));
+  TimelineLog::Decision first;
+  REQUIRE(log.decide({3, false, "too late"}, first).empty());
+  CHECK_FALSE(first.commit);
+  TimelineLog::Decision second;  // another replica, deciding the same entry otherwise
+  REQUIRE(log.decide({3, true, {}}, second).empty());
+  CHECK_FALSE(second.commit);
+  CHECK(second.reason == "too late");
+  REQUIRE(log.decide({5, true, {}}, second).empty());
+  const TimelineLog::Decisions read = log.decisions_from(4, 10);
+  REQUIRE(read.error.empty());
+  REQUIRE(read.decided.size() == 1);
+  CHECK(read.decided[0].index == 5);
+  CHECK(read.decided[0].commit);
+  CHECK(log_at(etcd.url("/ocean/other")).decisions_from(1, 10).decided.empty());
+
+  // Two members; one lease lapses (etcd's shortest, 2 s) and its acknowledgement is gone with it.
+  EtcdGateway store = log.store();
+  const EtcdResult kept = store.lease_grant(30), lapsing = store.lease_grant(2);
+  REQUIRE(kept.error.empty());
+  REQUIRE(lapsing.error.empty());
+  CHECK(lapsing.ttl_s == 2);
+  REQUIRE(log.acknowledge(0xA, 7, kept.lease).error.empty());
+  REQUIRE(log.acknowledge(0xC, 6, lapsing.lease).error.empty());
+  TimelineLog::Acks acks = log.acks();
+  REQUIRE(acks.error.empty());
+  REQUIRE(acks.read.size() == 2);
+  CHECK(acks.read[0] == std::pair<std::uint64_t, std::uint64_t>{0xA, 7});
+  CHECK(acks.read[1] == std::pair<std::uint64_t, std::uint64_t>{0xC, 6});
+  CHECK(store.lease_keepalive(lapsing.lease).ttl_s == 2);
+  std::this_thread::sleep_for(std::chrono::milliseconds(3500));
+  CHECK(store.lease_keepalive(lapsing.lease).ttl_s == 0);
+  acks = log.acks();
+  REQUIRE(acks.read.size() == 1);
+  CHECK(acks.read[0].first == 0xA);
+}
+
 TEST_CASE("a store that is down is named in the error, and once back it has lost nothing", "[timeline]") {
   EtcdProcess etcd;
   TimelineLog log = log_at(etcd.url("/ocean/faults"));

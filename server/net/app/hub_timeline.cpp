@@ -4,8 +4,11 @@
 #include "session_hub.hpp"
 
 #include "server_log.hpp"
+#include "tick_clock.hpp"
+#include "tick_loop.hpp"
 
 #include <asio/post.hpp>
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <thread>
@@ -22,6 +25,7 @@ void SessionHub::follow_timeline() {
     asio::post(server_.context(), [this, index, change = std::move(change)] {
       core_.apply_logged(index, change);
       if (core_.last_late_entry() == index) late_until_s_.store(timeline_clock_s() + kTimelineLateUnreadyS);
+      timeline_->applied(index);
     });
   };
   handlers.refused = [this](const TimelineChange& change, const std::string& reason) {
@@ -31,31 +35,48 @@ void SessionHub::follow_timeline() {
     asio::post(server_.context(), [this, index, reason] { skip_unreadable(index, reason); });
   };
   const std::uint64_t next = read_timeline_history(*address);
-  spdlog::info("following the fleet's timeline at etcd {}:{} prefix {} from entry {}", address->store.host,
-               address->store.port, address->prefix, next);
-  timeline_ = std::make_unique<TimelineFollower>(std::move(*address), std::move(handlers), next);
+  spdlog::info("following the fleet's timeline at etcd {}:{} prefix {} from entry {} (lease {} s)", address->store.host,
+               address->store.port, address->prefix, next, server_.config().timeline_lease_s);
+  TimelineFollower::Setup setup;
+  setup.origin = timeline_origin_;
+  setup.lease_s = server_.config().timeline_lease_s;
+  setup.tick_rate_hz = server_.config().tick_rate_hz;
+  setup.tick_now = [clock = TickClock(server_.config().tick_rate_hz, server_.config().epoch_unix_ms)] {
+    return clock.tick_at(system_unix_ns());
+  };
+  timeline_ = std::make_unique<TimelineFollower>(std::move(*address), std::move(handlers), std::move(setup), next);
   server_.set_readiness_check([this] { return timeline_readiness(); });
 }
 
-// The log as it stands, before the first tick is served: its entries set the sea from their ticks,
-// past ones included, so a replica started late streams the log's sea from its first frame. A
-// store that does not answer stops the start (exit 1): the config's sea is not the fleet's.
+// The log as it stands, before the first tick is served: its committed entries set the sea from
+// their ticks, past ones included, so a replica started late streams the log's sea from its first
+// frame; the follower takes over at the first entry not yet decided (and holds the frames until it
+// has read the log as a member). A store that does not answer stops the start (exit 1): the
+// config's sea is not the fleet's.
 std::uint64_t SessionHub::read_timeline_history(const TimelineAddress& address) {
   TimelineLog log(address, 1.0);
-  TimelineFollower::Handlers history;  // on this thread, before any tick: straight to the core
-  history.entry = [this](std::uint64_t index, TimelineChange change) { core_.apply_logged(index, change, true); };
-  history.unreadable = [this](std::uint64_t index, const std::string& reason) { skip_unreadable(index, reason); };
   std::uint64_t next = 1;
   std::string last_error;
   const double deadline = timeline_clock_s() + kTimelineStartS;
   while (timeline_clock_s() < deadline) {
     const TimelineLog::Read read = log.read_from(next, 256);
-    if (!read.error.empty()) {
-      last_error = read.error;
+    const TimelineLog::Decisions decided = log.decisions_from(next, 256);
+    if (!read.error.empty() || !decided.error.empty()) {
+      last_error = read.error.empty() ? decided.error : read.error;
       std::this_thread::sleep_for(std::chrono::milliseconds(200));
       continue;
     }
-    next = deliver_entries(read, next, history);
+    for (ReadEntry& entry : read_entries(read)) {  // on this thread, before any tick: straight to the core
+      const auto decision = std::ranges::find(decided.decided, entry.index, &TimelineLog::Decision::index);
+      if (!entry.change) {
+        skip_unreadable(entry.index, entry.unreadable);
+      } else if (decision == decided.decided.end()) {
+        return entry.index;  // not decided yet: the follower's
+      } else if (decision->commit) {
+        core_.apply_logged(entry.index, *entry.change, true);
+      }
+      next = entry.index + 1;
+    }
     if (read.entries.size() < 256) return next;
   }
   throw std::runtime_error("--timeline: the store at " + address.store.host + ":" + std::to_string(address.store.port) +
@@ -68,7 +89,19 @@ void SessionHub::skip_unreadable(std::uint64_t index, const std::string& reason)
   spdlog::error("timeline entry {} skipped (every replica skips it): {}", index, reason);
 }
 
+// Frames this replica must not stream: from the tick of an entry it has read and the fleet has not
+// decided, and all of them while its lease may have lapsed (others may be committing entries it
+// cannot read). Its viewers then get nothing rather than a sea the log may not say.
+bool SessionHub::timeline_holds(std::int64_t tick) const {
+  if (!timeline_) return false;
+  return timeline_clock_s() >= timeline_->lease_until_s() || static_cast<std::uint64_t>(tick) >= timeline_->hold_tick();
+}
+
 std::string SessionHub::timeline_readiness() const {
+  const double lease = timeline_->lease_until_s();
+  if (timeline_clock_s() >= lease)
+    return lease < 0.0 ? "timeline: not yet a member of the fleet's timeline (no lease on the store, or the log not read under it)"
+                       : "timeline: this server's lease on the store may have lapsed; it streams no frame until it is back";
   if (timeline_clock_s() < late_until_s_.load())
     return "timeline: an entry came after its tick; the viewers are being keyed again onto the log's sea";
   const double last = timeline_->last_read_s();

@@ -86,9 +86,13 @@ ServerMetrics::ServerMetrics(MetricsRegistry& registry)
       timeline_entries(registry.counter("ocean_timeline_entries_total", "Entries of the fleet's timeline applied.")),
       timeline_late_entries(registry.counter(
           "ocean_timeline_late_entries_total",
-          "Entries of the fleet's timeline read after their tick here (the server then no longer streams the log's sea).")),
+          "Entries of the fleet's timeline decided after their tick here (held until then, then every viewer keyed again).")),
       timeline_refused(registry.counter("ocean_timeline_refused_total",
-                                        "Admin changes taken here that the timeline's store refused or never confirmed.")),
+                                        "Timeline entries not taken: refused or unconfirmed by the store (on the replica that "
+                                        "took them), or aborted by the fleet (on every replica).")),
+      timeline_held_ticks(registry.counter("ocean_timeline_held_ticks_total",
+                                           "Ticks this server streamed no frame: a timeline entry undecided at its tick, or "
+                                           "its lease on the store in doubt.")),
       timeline_skipped(registry.counter("ocean_timeline_skipped_total",
                                         "Entries of the fleet's timeline skipped by every replica (unreadable, or out of range).")),
       timeline_index(registry.gauge("ocean_timeline_index", "Entries of the fleet's timeline read so far.")),

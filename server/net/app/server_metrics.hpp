@@ -58,6 +58,7 @@ class ServerMetrics {
   Counter& timeline_entries;
   Counter& timeline_late_entries;
   Counter& timeline_refused;
+  Counter& timeline_held_ticks;  // ticks this replica served no frame: undecided entry, or lease in doubt
   Counter& timeline_skipped;  // entries every replica skips: unreadable, or a scene no profile can carry
   Gauge& timeline_index;
   Gauge& timeline_age_seconds;

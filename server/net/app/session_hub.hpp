@@ -41,6 +41,7 @@ class SessionHub {
   std::uint64_t read_timeline_history(const TimelineAddress& address);  // the next entry to read
   void skip_unreadable(std::uint64_t index, const std::string& reason);   // network thread (or before it runs)
   std::string timeline_readiness() const;
+  bool timeline_holds(std::int64_t tick) const;  // frames of this tick must not be streamed
   void publish_timeline_metrics();
 
   Server& server_;

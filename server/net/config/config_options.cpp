@@ -293,6 +293,12 @@ const ConfigOption kOptions[] = {
        return {};
      },
      [](const ServerConfig& c) { return c.timeline.empty() ? std::string("unset") : c.timeline; }},
+    {"timeline-lease", "SECONDS",
+     "the lease this server holds on the timeline's store, an integer in 2..300: a change waits for every "
+     "server holding one, and a server cut off from the store streams no frame once its lease may have lapsed",
+     ValueKind::integer, false,
+     [](ServerConfig& c, std::string_view v) { return parse_integer(v, c.timeline_lease_s); },
+     [](const ServerConfig& c) { return std::to_string(c.timeline_lease_s); }},
     {"idle-timeout", "SECONDS", "drop a client silent for this long, in (0, 3600]", ValueKind::number, false,
      [](ServerConfig& c, std::string_view v) { return parse_number(v, c.idle_timeout_s); },
      [](const ServerConfig& c) { return show_number(c.idle_timeout_s); }},

@@ -145,6 +145,8 @@ std::string validate_server_config(const ServerConfig& config) {
            std::to_string(kMaxClientsLimit) + " connections a second (0 = no limit)";
   if (!(config.handshake_timeout_s > 0.0) || config.handshake_timeout_s > 60.0)
     return "--handshake-timeout " + std::to_string(config.handshake_timeout_s) + ": must be in (0, 60] seconds";
+  if (config.timeline_lease_s < 2 || config.timeline_lease_s > 300)
+    return "--timeline-lease " + std::to_string(config.timeline_lease_s) + ": must be in 2..300 seconds";
   if (config.udp_redundancy < 0 || config.udp_redundancy > kMaxUdpRedundancy)
     return "--udp-redundancy " + std::to_string(config.udp_redundancy) + ": must be in 0.." +
            std::to_string(kMaxUdpRedundancy) + " earlier frames per datagram";

@@ -89,6 +89,7 @@ struct ServerConfig {
   // The fleet's timeline (etcd://HOST:PORT/PREFIX, issue 37): admin changes go through its log and
   // every replica following it applies them at the same ticks. Empty = this server's alone.
   std::string timeline;
+  int timeline_lease_s = 10;  // etcd's lease TTL: store outages shorter than it change nothing
   double idle_timeout_s = 10.0;
   std::string log_level = "info";
 };

@@ -70,6 +70,12 @@ void SessionCore::on_frames(const std::shared_ptr<const TickFrames>& frames, con
 
   bundles_.clear();  // the bytes of last tick's bundles stay alive while queued
   std::vector<std::pair<const void*, codec::StateId>> bases;
+  if (holding_) {
+    host_.metrics.timeline_held_ticks.inc();
+    record_tick_stats(bases);
+    sweep_timeouts(now.monotonic_s);
+    return;
+  }
   roots_full_.clear();
   if (second_tick()) forget_unwatched_streams();
   for (auto& stream : streams_)

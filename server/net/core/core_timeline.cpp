@@ -47,7 +47,7 @@ void SessionCore::apply_logged(std::uint64_t index, const TimelineChange& change
 void SessionCore::refuse_logged(const TimelineChange& change, const std::string& reason) {
   host_.metrics.timeline_refused.inc();
   spdlog::warn("timeline append refused for request {} of session {}: {}", change.update.request_id, change.session, reason);
-  if (Session* session = sessions_.find(change.session))
+  if (Session* session = change.origin == host_.timeline_origin ? sessions_.find(change.session) : nullptr)
     answer_error(*session, protocol::Reason::internal_error,
                  "the fleet's timeline did not confirm the change: " + reason,
                  "param_change");

@@ -148,6 +148,9 @@ class SessionCore {
   // A change this replica took that its log refused or never confirmed: its admin is told why.
   void refuse_logged(const TimelineChange& change, const std::string& reason);
   std::optional<std::uint64_t> last_late_entry() const { return last_late_entry_; }
+  // While set, ticks feed the encoders and the clocks but no session is served a frame (the fleet
+  // timeline's hold: what this replica would stream may not be the log's sea).
+  void set_holding(bool holding) { holding_ = holding; }
 
   void set_frame_observer(FrameObserver observer) { observer_ = std::move(observer); }
   void set_tick_observer(TickObserver observer) { tick_observer_ = std::move(observer); }
@@ -267,6 +270,7 @@ class SessionCore {
   std::shared_ptr<const TickFrames> newest_frames_, previous_frames_;
   std::vector<model::VesselTrack> vessels_;  // the fleet, as the newest announcement leaves it
   std::optional<std::uint64_t> last_late_entry_;  // the newest timeline entry read after its tick
+  bool holding_ = false;
   std::vector<const ProfileStream*> roots_full_;
   std::uint64_t streams_released_ = 0;  // this key tick: no new root, joiners wait
 };

@@ -140,16 +140,25 @@ bool from_base64(const std::string& text, std::string& bytes) {
   return true;
 }
 
+static void read_answer(const std::string& path, const json& answer, EtcdResult& result);
+
 EtcdResult EtcdGateway::call(const std::string& path, const std::string& body) const {
   EtcdResult result;
   const std::string content = post(endpoint_, path, body, timeout_s_, result.error, result.maybe_applied);
   if (result.error.empty()) result.maybe_applied = false;  // answered: the reply says what happened
   if (!result.error.empty()) return result;
-  const json answer = json::parse(content, nullptr, false);
+  json answer = json::parse(content, nullptr, false);
+  // A stream's call (lease keepalive) answers its one message as {"result": ...}.
+  if (answer.is_object() && answer.contains("result") && !answer.contains("header")) answer = answer["result"];
   if (answer.is_discarded() || !answer.is_object() || !answer.contains("header")) {
     result.error = "the store answered " + path + " with no etcd reply: " + content.substr(0, 200);
     return result;
   }
+  read_answer(path, answer, result);
+  return result;
+}
+
+static void read_answer(const std::string& path, const json& answer, EtcdResult& result) {
   try {
     result.revision = number(answer["header"].value("revision", json(0)));
     result.succeeded = answer.value("succeeded", false);
@@ -161,10 +170,29 @@ EtcdResult EtcdGateway::call(const std::string& path, const std::string& body) c
       item.mod_revision = number(kv.value("mod_revision", json(0)));
       result.kvs.push_back(std::move(item));
     }
+    result.lease = number(answer.value("ID", json(0)));
+    result.ttl_s = number(answer.value("TTL", json(0)));
   } catch (const std::exception& e) {
     result.error = std::string("the store's answer to ") + path + " does not read: " + e.what();
   }
-  return result;
+}
+
+EtcdResult EtcdGateway::put(const std::string& key, const std::string& value, std::int64_t lease) const {
+  json request = {{"key", to_base64(key)}, {"value", to_base64(value)}};
+  if (lease != 0) request["lease"] = std::to_string(lease);
+  return call("/v3/kv/put", request.dump());
+}
+
+EtcdResult EtcdGateway::lease_grant(std::int64_t ttl_s) const {
+  return call("/v3/lease/grant", json{{"TTL", std::to_string(ttl_s)}}.dump());
+}
+
+EtcdResult EtcdGateway::lease_revoke(std::int64_t lease) const {
+  return call("/v3/lease/revoke", json{{"ID", std::to_string(lease)}}.dump());
+}
+
+EtcdResult EtcdGateway::lease_keepalive(std::int64_t lease) const {
+  return call("/v3/lease/keepalive", json{{"ID", std::to_string(lease)}}.dump());
 }
 
 EtcdResult EtcdGateway::put_if_absent(const std::string& key, const std::string& value) const {

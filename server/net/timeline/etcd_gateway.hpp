@@ -28,6 +28,8 @@ struct EtcdResult {
   std::vector<EtcdKeyValue> kvs;  // a range's keys and values, in key order
   bool more = false;           // a range stopped at its limit
   bool maybe_applied = false;  // an error after the request was sent: the store may have done it
+  std::int64_t lease = 0;      // lease_grant: the lease's id
+  std::int64_t ttl_s = 0;      // lease_grant, lease_keepalive: its time to live (0: it has lapsed)
 };
 
 class EtcdGateway {
@@ -37,6 +39,15 @@ class EtcdGateway {
   // Writes key = value only if the key has never been written (a transaction comparing its
   // create_revision with 0): two writers of one key, one wins.
   EtcdResult put_if_absent(const std::string& key, const std::string& value) const;
+  // key = value, bound to `lease` (0: none): the store deletes it when the lease lapses.
+  EtcdResult put(const std::string& key, const std::string& value, std::int64_t lease = 0) const;
+  // A lease the store keeps for ttl_s seconds past its grant or last keepalive (etcd grants at
+  // least its own minimum, 2 s by default; the answer's ttl_s says what it granted).
+  EtcdResult lease_grant(std::int64_t ttl_s) const;
+  // Renews `lease`; the answer's ttl_s is 0 once it has lapsed (its keys are gone).
+  EtcdResult lease_keepalive(std::int64_t lease) const;
+  // Ends `lease` now, its keys with it.
+  EtcdResult lease_revoke(std::int64_t lease) const;
   // The keys in [from, to) in key order (the last first when descending), at most limit of them.
   EtcdResult range(const std::string& from, const std::string& to, std::int64_t limit, bool descending = false) const;
 

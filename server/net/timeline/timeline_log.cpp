@@ -56,10 +56,72 @@ std::optional<TimelineAddress> parse_timeline_url(std::string_view url, std::str
   return address;
 }
 
-std::string TimelineLog::key(std::uint64_t index) const {
+static std::string digits20(std::uint64_t index) {
   char digits[24];
   std::snprintf(digits, sizeof digits, "%020llu", static_cast<unsigned long long>(index));
-  return address_.prefix + "/log/" + digits;
+  return digits;
+}
+
+std::string TimelineLog::key(std::uint64_t index) const { return address_.prefix + "/log/" + digits20(index); }
+
+EtcdResult TimelineLog::acknowledge(std::uint64_t origin, std::uint64_t index, std::int64_t lease) const {
+  return store_.put(address_.prefix + "/acks/" + digits20(origin), std::to_string(index), lease);
+}
+
+TimelineLog::Acks TimelineLog::acks() const {
+  Acks acks;
+  const std::string head = address_.prefix + "/acks/";
+  const EtcdResult range = store_.range(head, address_.prefix + "/acks0", 0);
+  acks.error = range.error;
+  for (const EtcdKeyValue& kv : range.kvs) {
+    std::uint64_t origin = 0, read = 0;
+    const auto [end, ec] = std::from_chars(kv.value.data(), kv.value.data() + kv.value.size(), read);
+    if (!parse_index(kv.key, head, origin) || ec != std::errc() || end != kv.value.data() + kv.value.size()) {
+      acks.error = "the log at " + address_.prefix + " holds an acknowledgement that does not read: " + kv.key;
+      return acks;
+    }
+    acks.read.emplace_back(origin, read);
+  }
+  return acks;
+}
+
+namespace {
+std::string decision_bytes(const TimelineLog::Decision& d) { return d.commit ? "commit" : "abort " + d.reason; }
+bool parse_decision(const std::string& bytes, TimelineLog::Decision& d) {
+  d.commit = bytes == "commit";
+  if (!d.commit && bytes.compare(0, 6, "abort ") != 0) return false;
+  d.reason = d.commit ? "" : bytes.substr(6);
+  return true;
+}
+}  // namespace
+
+std::string TimelineLog::decide(const Decision& decision, Decision& decided) const {
+  const std::string key = address_.prefix + "/decided/" + digits20(decision.index);
+  const EtcdResult put = store_.put_if_absent(key, decision_bytes(decision));
+  if (!put.error.empty()) return put.error;
+  decided = decision;
+  if (put.succeeded) return {};
+  const EtcdResult stands = store_.range(key, key + '\0', 1);  // decided by another replica first
+  if (!stands.error.empty()) return stands.error;
+  if (stands.kvs.empty() || !parse_decision(stands.kvs.front().value, decided))
+    return "the decision on entry " + std::to_string(decision.index) + " does not read";
+  return {};
+}
+
+TimelineLog::Decisions TimelineLog::decisions_from(std::uint64_t from, std::size_t max) const {
+  Decisions out;
+  const std::string head = address_.prefix + "/decided/";
+  const EtcdResult range = store_.range(head + digits20(from), address_.prefix + "/decided0", static_cast<std::int64_t>(max));
+  out.error = range.error;
+  for (const EtcdKeyValue& kv : range.kvs) {
+    Decision d;
+    if (!parse_index(kv.key, head, d.index) || !parse_decision(kv.value, d)) {
+      out.error = "the log at " + address_.prefix + " holds a decision that does not read: " + kv.key;
+      return out;
+    }
+    out.decided.push_back(std::move(d));
+  }
+  return out;
 }
 
 TimelineLog::Appended TimelineLog::append(const std::string& bytes) {

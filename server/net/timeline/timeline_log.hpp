@@ -4,6 +4,13 @@
 // reader sees one order; etcd's Raft commit makes an acknowledged entry survive a member's loss.
 // The entries are opaque bytes here: what they say (a scene change, a vessel command, each with its
 // effective tick) is the server's.
+//
+// An entry takes effect only once decided: <prefix>/decided/<N> holds "commit" or "abort <why>",
+// written where nothing was (first decision wins, every replica reads the same one). The replica
+// that appended commits once every member has acknowledged reading it; a member is a replica
+// holding an etcd lease, and <prefix>/acks/<origin> (bound to that lease) holds how far it has
+// read - so a replica cut off from the store either acknowledges, holds the change back (it aborts
+// at its tick), or has lost its lease, and knows it (TimelineFollower).
 #pragma once
 
 #include "etcd_gateway.hpp"
@@ -12,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace ocean::server {
@@ -48,7 +56,29 @@ class TimelineLog {
   };
   Read read_from(std::uint64_t from, std::size_t max) const;
 
+  // This replica has read every entry up to `index`; bound to `lease`, so it goes when that lapses.
+  EtcdResult acknowledge(std::uint64_t origin, std::uint64_t index, std::int64_t lease) const;
+  struct Acks {
+    std::string error;
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> read;  // (origin, entries read) of every member
+  };
+  Acks acks() const;
+
+  struct Decision {
+    std::uint64_t index = 0;
+    bool commit = false;
+    std::string reason;  // an abort's
+  };
+  // Writes the decision on `index` unless one was written; `decided` is whichever stands.
+  std::string decide(const Decision& decision, Decision& decided) const;
+  struct Decisions {
+    std::string error;
+    std::vector<Decision> decided;  // in index order, from `from` on
+  };
+  Decisions decisions_from(std::uint64_t from, std::size_t max) const;
+
   std::string key(std::uint64_t index) const;  // <prefix>/log/<index, 20 digits>
+  const EtcdGateway& store() const { return store_; }
   const TimelineAddress& address() const { return address_; }
 
  private:
