@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <mutex>
 
@@ -91,6 +92,14 @@ void FrameProducer::override_scene(const model::SceneParams& scene, std::int64_t
   if (wake_) wake_->set_depth(scene.depth_m, from);
 }
 
+// A build not finished by its tick is left to finish unused, and the sea built here, now: waiting
+// would tie the tick to a thread that runs at a lower priority (on a busy machine, a tenth of a
+// core), where building it costs the tick what it did before builds went ahead.
+SeaState FrameProducer::take(std::future<SeaState>& ahead, const model::SceneParams& scene) {
+  if (ahead.valid() && ahead.wait_for(std::chrono::seconds(0)) == std::future_status::ready) return ahead.get();
+  return builder_->build(scene);
+}
+
 void FrameProducer::build_next_scheduled(std::int64_t tick) {
   const auto next = std::ranges::upper_bound(schedule_.changes(), tick, {}, &ScheduledScene::tick);
   if (next == schedule_.changes().end() || next->tick - tick > kScheduleLookaheadTicks) return;
@@ -121,14 +130,15 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
   if (&scheduled != scheduled_scene_) {
     scheduled_scene_ = &scheduled;
     // Built ahead unless the producer started (or jumped) within the lookahead of it.
-    use_sea(next_scheduled_.scene == &scheduled ? next_scheduled_.sea.get() : builder_->build(scheduled));
+    use_sea(next_scheduled_.scene == &scheduled ? take(next_scheduled_.sea, scheduled) : builder_->build(scheduled));
     next_scheduled_ = {};
     scene_changed_ = true;
   }
   build_next_scheduled(tick);
   if (!overrides_.empty() && overrides_.begin()->first <= tick) {
     const auto due = overrides_.upper_bound(tick);
-    use_sea(std::prev(due)->second.sea.get());
+    Override& last = std::prev(due)->second;
+    use_sea(take(last.sea, last.scene));
     overrides_.erase(overrides_.begin(), due);
     scene_changed_ = true;
   }

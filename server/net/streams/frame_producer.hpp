@@ -62,6 +62,7 @@ class FrameProducer {
   // The schedule's next entry, built ahead once it is this close.
   static constexpr std::int64_t kScheduleLookaheadTicks = 60;
   void build_next_scheduled(std::int64_t tick);
+  SeaState take(std::future<SeaState>& ahead, const model::SceneParams& scene);
   void use_sea(SeaState sea) { sea_ = std::move(sea); }
   const sim::Ocean& ocean() const { return *sea_.ocean; }
 
