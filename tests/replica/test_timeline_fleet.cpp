@@ -241,6 +241,12 @@ TEST_CASE("a replica cut off from the store never streams a sea the log does not
   CHECK(p.replicas[2]->scene_updates().empty());
   const Tick c_last_held = *p.replicas[2]->newest_tick();
   CHECK(c_last_held < change);  // C streamed no frame from the change's tick on
+  for (const auto& [replica, status] : {std::pair{0, 0}, std::pair{2, 3}}) {  // nor answers for its sea
+    AdminRun query(fleet.endpoint(replica), fleet.token_file(), "query --at 0,0");
+    REQUIRE(run_until(io, [&] { return query.done(); }, 10.0 * kSlow));
+    INFO("ocean-admin query to replica " << replica);
+    CHECK(query.exit_code() == status);
+  }
   const double c_held = fleet.metric(2, "ocean_timeline_held_ticks_total");
   CHECK(c_held > 0.0);
 

@@ -25,6 +25,8 @@ void SessionHub::follow_timeline() {
     asio::post(server_.context(), [this, index, change = std::move(change)] {
       core_.apply_logged(index, change);
       if (core_.last_late_entry() == index) late_until_s_.store(timeline_clock_s() + kTimelineLateUnreadyS);
+      // Frames the simulation made before it took the entry still show the sea without it.
+      timeline_requests_needed_ = server_.requests_made();
       timeline_->applied(index);
     });
   };
@@ -92,9 +94,10 @@ void SessionHub::skip_unreadable(std::uint64_t index, const std::string& reason)
 // Frames this replica must not stream: from the tick of an entry it has read and the fleet has not
 // decided, and all of them while its lease may have lapsed (others may be committing entries it
 // cannot read). Its viewers then get nothing rather than a sea the log may not say.
-bool SessionHub::timeline_holds(std::int64_t tick) const {
+bool SessionHub::timeline_holds(const TickFrames& frames) const {
   if (!timeline_) return false;
-  return timeline_clock_s() >= timeline_->lease_until_s() || static_cast<std::uint64_t>(tick) >= timeline_->hold_tick();
+  return timeline_clock_s() >= timeline_->lease_until_s() ||
+         static_cast<std::uint64_t>(frames.tick) >= timeline_->hold_tick() || frames.requests_taken < timeline_requests_needed_;
 }
 
 std::string SessionHub::timeline_readiness() const {

@@ -263,11 +263,13 @@ void Server::on_datagram(std::span<const std::uint8_t> bytes, const asio::ip::ud
 
 void Server::request_scene(const model::SceneParams& scene, std::int64_t from) {
   std::lock_guard lock(scene_request_mutex_);
+  ++requests_made_;
   scene_requests_.emplace_back(scene, from);
 }
 
 void Server::request_vessels(const std::vector<model::VesselTrack>& vessels, std::int64_t from) {
   std::lock_guard lock(scene_request_mutex_);
+  ++requests_made_;
   vessel_requests_.emplace_back(vessels, from);
 }
 

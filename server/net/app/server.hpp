@@ -81,6 +81,11 @@ class Server : public DatagramSocket {
   // hub announced it to the clients first).
   void request_scene(const model::SceneParams& scene, std::int64_t from);
   void request_vessels(const std::vector<model::VesselTrack>& vessels, std::int64_t from);
+  // Scene and fleet requests made so far (TickFrames::requests_taken counts those in a tick's frames).
+  std::uint64_t requests_made() {
+    std::lock_guard lock(scene_request_mutex_);
+    return requests_made_;
+  }
   // The config's schedule, checked (immutable).
   const SceneSchedule& schedule() const { return schedule_; }
   // Sends one datagram without blocking; false when the socket refused it (the frame is lost).
@@ -167,6 +172,7 @@ class Server : public DatagramSocket {
   bool run_returned_ = false;  // guarded by run_mutex_
   std::mutex scene_request_mutex_;
   std::vector<std::pair<model::SceneParams, std::int64_t>> scene_requests_;  // guarded by scene_request_mutex_
+  std::uint64_t requests_made_ = 0;  // guarded by scene_request_mutex_
   std::vector<std::pair<std::vector<model::VesselTrack>, std::int64_t>> vessel_requests_;  // the same
 
   DatagramBatch batch_;

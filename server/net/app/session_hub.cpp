@@ -99,7 +99,7 @@ void SessionHub::on_frames(const std::shared_ptr<const TickFrames>& frames) {
   const double scheduled_s = static_cast<double>(config.epoch_unix_ms) / 1000.0 +
                              static_cast<double>(frames->tick) / static_cast<double>(config.tick_rate_hz);
   server_.metrics().loop_lag_seconds.observe(std::max(0.0, static_cast<double>(now.unix_ms) / 1000.0 - scheduled_s));
-  core_.set_holding(timeline_holds(frames->tick));
+  core_.set_holding(timeline_holds(*frames));
   core_.on_frames(frames, now);
   server_.flush();
   // A desktop stream's states are about 1 MB each, hundreds while its viewers watched. Once the

@@ -41,7 +41,7 @@ class SessionHub {
   std::uint64_t read_timeline_history(const TimelineAddress& address);  // the next entry to read
   void skip_unreadable(std::uint64_t index, const std::string& reason);   // network thread (or before it runs)
   std::string timeline_readiness() const;
-  bool timeline_holds(std::int64_t tick) const;  // frames of this tick must not be streamed
+  bool timeline_holds(const TickFrames& frames) const;  // these frames must not be streamed
   void publish_timeline_metrics();
 
   Server& server_;
@@ -59,6 +59,7 @@ class SessionHub {
   std::int64_t trim_until_tick_ = -1;    // memory is handed back to the system until this tick
   double last_warning_s_ = -1e9;
   std::atomic<double> late_until_s_{-1.0};  // not ready until then: an entry came after its tick
+  std::uint64_t timeline_requests_needed_ = 0;  // network thread: frames taking fewer requests are held
   std::unique_ptr<TimelineFollower> timeline_;  // last: stopped before anything its handlers reach
 };
 

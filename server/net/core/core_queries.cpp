@@ -77,6 +77,10 @@ void SessionCore::answer_height_query(Session& session, const protocol::HeightQu
                         fmt::format("unknown_profile in HeightQuery.profile_id: {} is no profile (PROTOCOL.md 8)",
                                     query.profile_id));
   }
+  if (holding_)  // the newest frames may not be the log's sea (SessionCore::set_holding)
+    return answer_error(session, protocol::Reason::internal_error,
+                        "internal_error in HeightQuery: the server holds its frames until it has caught up with the "
+                        "fleet's timeline; retry in a second");
   const ProfileFrame* now = frame_of(newest_frames_.get(), stream->profile());
   if (!now)
     return answer_error(session, protocol::Reason::profile_unavailable,

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <utility>
 
 namespace ocean::server {
 namespace {
@@ -87,7 +88,15 @@ FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*>
   use_sea(builder_->build(*scheduled_scene_));
 }
 
+// The old sea's plans are destroyed on the build queue: FFTW's planner lock, which destroying a plan
+// takes, may be held there by a plan being made, and the tick should not wait on that thread.
+void FrameProducer::use_sea(SeaState sea) {
+  auto old = std::make_shared<SeaState>(std::exchange(sea_, std::move(sea)));
+  if (old->ocean) (void)builds_.submit([old]() mutable { old.reset(); });
+}
+
 void FrameProducer::override_scene(const model::SceneParams& scene, std::int64_t from) {
+  ++requests_taken_;
   overrides_[from] = Override{scene, builder_->build_ahead(builds_, scene)};
   if (wake_) wake_->set_depth(scene.depth_m, from);
 }
@@ -148,6 +157,7 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
   result->time_s = time_s;
   result->scene = ocean().params();
   result->scene_changed = scene_changed_;
+  result->requests_taken = requests_taken_;
   result->frames.resize(profiles_.size());
   for (std::size_t i = 0; i < profiles_.size(); ++i) {
     const Profile& profile = *profiles_[i];

@@ -45,6 +45,7 @@ class FrameProducer {
   // A vessel command: the fleet from tick `from` on (its presences agree with the current fleet's
   // before it). Ignored without a wake (the server was started without vessels).
   void set_vessels(std::vector<model::VesselTrack> vessels, std::int64_t from) {
+    ++requests_taken_;
     if (wake_) wake_->set_tracks(std::move(vessels), from);
   }
   // True when the last produce() switched to a scheduled or overriding scene.
@@ -63,7 +64,7 @@ class FrameProducer {
   static constexpr std::int64_t kScheduleLookaheadTicks = 60;
   void build_next_scheduled(std::int64_t tick);
   SeaState take(std::future<SeaState>& ahead, const model::SceneParams& scene);
-  void use_sea(SeaState sea) { sea_ = std::move(sea); }
+  void use_sea(SeaState sea);
   const sim::Ocean& ocean() const { return *sea_.ocean; }
 
   SceneSchedule schedule_;
@@ -81,10 +82,11 @@ class FrameProducer {
     model::SceneParams scene;
     std::future<SeaState> sea;
   };
-  std::map<std::int64_t, Override> overrides_;  // by first tick; their builds wait in the destructor
+  std::map<std::int64_t, Override> overrides_;  // by first tick (a superseded one's build runs on, unused)
   PendingSea next_scheduled_;
   std::shared_ptr<BufferPool> pool_;
   bool scene_changed_ = false;
+  std::uint64_t requests_taken_ = 0;  // override_scene and set_vessels calls (TickFrames::requests_taken)
   std::unique_ptr<sim::EpochWake> wake_;  // none without vessels
   sim::WakeSampler wake_sampler_;
   sim::Frame wake_part_;

@@ -22,6 +22,9 @@ struct TickFrames {
   std::vector<ProfileFrame> frames;  // in the order of ServerConfig::profiles
   model::SceneParams scene;            // the scene these frames show
   bool scene_changed = false;        // this tick is the first of a new scene (schedule or admin)
+  // Scene and fleet requests (override_scene, set_vessels) the producer had taken when it made
+  // these frames: the network side knows from it whether a change it applied is in them yet.
+  std::uint64_t requests_taken = 0;
 };
 
 }  // namespace ocean::server

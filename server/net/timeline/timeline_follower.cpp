@@ -53,6 +53,11 @@ TimelineFollower::~TimelineFollower() {
   if (lease_ != 0) (void)log_.store().lease_revoke(lease_);
 }
 
+bool TimelineFollower::stopping() {
+  std::lock_guard lock(mutex_);
+  return stopping_;
+}
+
 void TimelineFollower::propose(TimelineChange change) {
   {
     std::lock_guard lock(mutex_);
@@ -65,12 +70,16 @@ void TimelineFollower::run() {
   std::unique_lock lock(mutex_);
   while (!stopping_) {
     lock.unlock();
+    // The lease is renewed between the calls too: on a slow store one round of them can take
+    // longer than a short lease's renewal period.
     keep_lease();
     append_proposed();
+    keep_lease();
     read_new();
-    acknowledge();
     read_decisions();
     decide_pending();
+    keep_lease();
+    acknowledge();
     deliver_decided();
     lock.lock();
     wake_.wait_for(lock, std::chrono::duration<double>(poll_s_), [this] { return stopping_ || !proposed_.empty(); });
@@ -123,7 +132,7 @@ void TimelineFollower::append_proposed() {
 
 void TimelineFollower::read_new() {
   const bool member = lease_ != 0 && !ack_due_;  // reads from now on see what commits without this replica
-  for (;;) {
+  while (!stopping()) {
     const std::uint64_t from = next_index_.load();
     const TimelineLog::Read read = log_.read_from(from, kReadBatch);
     if (!read.error.empty()) return;  // the store is away: last_read_s() ages, and says so
@@ -142,8 +151,14 @@ void TimelineFollower::read_new() {
   if (next_index_.load() - 1 > acked_) ack_due_ = true;
 }
 
+// An entry read too near its tick (by this replica's clock) is decided - aborted, unless a commit
+// already stands - before this replica acknowledges it: an acknowledgement is a promise to hold
+// the entry's tick until it is decided, and a replica whose clock is behind must not commit it
+// on the strength of this one's.
 void TimelineFollower::acknowledge() {
   if (lease_ == 0 || !ack_due_) return;
+  if (std::ranges::any_of(pending_, [this](const Pending& p) { return !p.decision && p.entry.change && too_late(p); }))
+    return;  // its abort did not reach the store: acknowledged at a later round
   const std::uint64_t read = next_index_.load() - 1;
   if (log_.acknowledge(setup_.origin, read, lease_).error.empty()) {
     acked_ = read;
@@ -164,13 +179,18 @@ void TimelineFollower::read_decisions() {
 // Any member decides an undecided entry: commit once every member (every live lease's
 // acknowledgement) has read it, abort once its tick is nearer than the commit margin. The first
 // decision written stands, so replicas deciding at once agree.
+bool TimelineFollower::too_late(const Pending& p) const {
+  const std::int64_t margin = static_cast<std::int64_t>(std::ceil(setup_.commit_margin_s * setup_.tick_rate_hz));
+  return setup_.tick_now() + margin >= static_cast<std::int64_t>(p.entry.change->update.effective_tick);
+}
+
 void TimelineFollower::decide_pending() {
   std::optional<TimelineLog::Acks> acks;
-  const std::int64_t margin = static_cast<std::int64_t>(std::ceil(setup_.commit_margin_s * setup_.tick_rate_hz));
   for (Pending& p : pending_) {
+    if (stopping()) return;
     if (p.decision || !p.entry.change) continue;
     const auto tick = static_cast<std::int64_t>(p.entry.change->update.effective_tick);
-    const bool too_late = setup_.tick_now() + margin >= tick;
+    const bool late = too_late(p);
     if (!acks) acks = log_.acks();
     if (!acks->error.empty()) return;
     std::string behind;
@@ -180,11 +200,11 @@ void TimelineFollower::decide_pending() {
       if (read < p.entry.index) behind += (behind.empty() ? "" : ", ") + origin_name(origin);
     }
     const bool all_read = behind.empty() && me && lease_ != 0;
-    if (!too_late && !all_read) continue;  // not yet
+    if (!late && !all_read) continue;  // not yet
     // A commit this near the tick could reach a replica after it: that one would hold its frames
     // and key its viewers again. Aborted instead; the admin is told why.
-    TimelineLog::Decision decision{p.entry.index, !too_late, {}};
-    if (too_late)
+    TimelineLog::Decision decision{p.entry.index, !late, {}};
+    if (late)
       decision.reason = "not every replica following the timeline had read it " +
                         std::to_string(setup_.commit_margin_s).substr(0, 3) + " s before its tick " +
                         std::to_string(tick) + (behind.empty() ? "" : " (behind: " + behind + ")");

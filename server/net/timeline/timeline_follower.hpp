@@ -87,11 +87,14 @@ class TimelineFollower {
   void decide_pending();
   void read_decisions();
   void deliver_decided();
+  bool stopping();
 
   struct Pending {
     ReadEntry entry;
     std::optional<TimelineLog::Decision> decision;
   };
+
+  bool too_late(const Pending& p) const;  // its tick nearer than the commit margin
 
   TimelineLog log_;
   Handlers handlers_;
