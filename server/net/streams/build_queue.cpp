@@ -1,17 +1,6 @@
 #include "build_queue.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 namespace ocean::server {
-
-namespace {
-
-// Builds share a core with the tick only where it has time to spare: at nice 10 the kernel gives a
-// busy network thread about nine tenths of a contended core.
-constexpr int kBuildNice = 10;
-
-}  // namespace
 
 BuildQueue::BuildQueue() : thread_([this] { run(); }) {}
 
@@ -34,9 +23,6 @@ void BuildQueue::push(std::function<void()> job) {
 }
 
 void BuildQueue::run() {
-  // Linux applies a nice value to the one thread named; where it is refused, builds run at the
-  // process's priority, as before.
-  (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kBuildNice);
   for (;;) {
     std::function<void()> job;
     {

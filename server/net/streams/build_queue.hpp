@@ -1,8 +1,10 @@
-// BuildQueue: one thread, at a lower scheduling priority than the tick's threads, that builds what
-// a scene known ahead will need (the sim's oceans, the encoders' models) during its lead. One
-// thread, not one per build: on a two-core server ten builds at once (an admin change on a server
-// of five profiles, two changes in a second) took the network thread's core for 60-100 ms, and its
-// viewers' frames came late.
+// BuildQueue: one thread that builds what a scene known ahead will need (the sim's oceans, the
+// encoders' models) during its lead. One thread, not one per build: on a two-core server ten
+// builds at once (an admin change on a server of five profiles, two changes in a second) took the
+// network thread's core for 60-100 ms, and its viewers' frames came late. At the process's own
+// priority: FFTW's planner is one lock for the whole process, and a builder at a lower priority
+// holding it while the tick's threads wait for it (a build they must finish, a plan they destroy)
+// held a loaded server's frames for seconds.
 #pragma once
 
 #include <condition_variable>

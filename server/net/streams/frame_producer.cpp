@@ -88,8 +88,8 @@ FrameProducer::FrameProducer(SceneSchedule schedule, std::vector<const Profile*>
   use_sea(builder_->build(*scheduled_scene_));
 }
 
-// The old sea's plans are destroyed on the build queue: FFTW's planner lock, which destroying a plan
-// takes, may be held there by a plan being made, and the tick should not wait on that thread.
+// The old sea's plans are destroyed on the build queue, off the tick (destroying a plan takes FFTW's
+// planner lock).
 void FrameProducer::use_sea(SeaState sea) {
   auto old = std::make_shared<SeaState>(std::exchange(sea_, std::move(sea)));
   if (old->ocean) (void)builds_.submit([old]() mutable { old.reset(); });
@@ -101,12 +101,10 @@ void FrameProducer::override_scene(const model::SceneParams& scene, std::int64_t
   if (wake_) wake_->set_depth(scene.depth_m, from);
 }
 
-// A build not finished by its tick is left to finish unused, and the sea built here, now: waiting
-// would tie the tick to a thread that runs at a lower priority (on a busy machine, a tenth of a
-// core), where building it costs the tick what it did before builds went ahead.
+// A build not finished by its tick is waited for (it is under way, at the tick's priority: the
+// rest of it costs the tick no more than building it here would).
 SeaState FrameProducer::take(std::future<SeaState>& ahead, const model::SceneParams& scene) {
-  if (ahead.valid() && ahead.wait_for(std::chrono::seconds(0)) == std::future_status::ready) return ahead.get();
-  return builder_->build(scene);
+  return ahead.valid() ? ahead.get() : builder_->build(scene);
 }
 
 void FrameProducer::build_next_scheduled(std::int64_t tick) {
