@@ -25,8 +25,10 @@ void SessionHub::follow_timeline() {
     asio::post(server_.context(), [this, index, change = std::move(change)] {
       core_.apply_logged(index, change);
       if (core_.last_late_entry() == index) late_until_s_.store(timeline_clock_s() + kTimelineLateUnreadyS);
-      // Frames the simulation made before it took the entry still show the sea without it.
+      // Frames the simulation made before it took the entry still show the sea without it: those
+      // of its tick on are held (entries are taken a second ahead; one read late is not).
       timeline_requests_needed_ = server_.requests_made();
+      timeline_untaken_tick_ = std::min<std::uint64_t>(timeline_untaken_tick_, change.update.effective_tick);
       timeline_->applied(index);
     });
   };
@@ -94,10 +96,13 @@ void SessionHub::skip_unreadable(std::uint64_t index, const std::string& reason)
 // Frames this replica must not stream: from the tick of an entry it has read and the fleet has not
 // decided, and all of them while its lease may have lapsed (others may be committing entries it
 // cannot read). Its viewers then get nothing rather than a sea the log may not say.
-bool SessionHub::timeline_holds(const TickFrames& frames) const {
+bool SessionHub::timeline_holds(const TickFrames& frames) {
   if (!timeline_) return false;
-  return timeline_clock_s() >= timeline_->lease_until_s() ||
-         static_cast<std::uint64_t>(frames.tick) >= timeline_->hold_tick() || frames.requests_taken < timeline_requests_needed_;
+  const bool untaken = frames.requests_taken < timeline_requests_needed_;
+  if (!untaken) timeline_untaken_tick_ = std::numeric_limits<std::uint64_t>::max();
+  const auto tick = static_cast<std::uint64_t>(frames.tick);
+  return timeline_clock_s() >= timeline_->lease_until_s() || tick >= timeline_->hold_tick() ||
+         (untaken && tick >= timeline_untaken_tick_);
 }
 
 std::string SessionHub::timeline_readiness() const {

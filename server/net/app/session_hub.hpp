@@ -13,6 +13,7 @@
 #include "timeline_follower.hpp"
 
 #include <atomic>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -41,7 +42,7 @@ class SessionHub {
   std::uint64_t read_timeline_history(const TimelineAddress& address);  // the next entry to read
   void skip_unreadable(std::uint64_t index, const std::string& reason);   // network thread (or before it runs)
   std::string timeline_readiness() const;
-  bool timeline_holds(const TickFrames& frames) const;  // these frames must not be streamed
+  bool timeline_holds(const TickFrames& frames);  // these frames must not be streamed
   void publish_timeline_metrics();
 
   Server& server_;
@@ -59,7 +60,8 @@ class SessionHub {
   std::int64_t trim_until_tick_ = -1;    // memory is handed back to the system until this tick
   double last_warning_s_ = -1e9;
   std::atomic<double> late_until_s_{-1.0};  // not ready until then: an entry came after its tick
-  std::uint64_t timeline_requests_needed_ = 0;  // network thread: frames taking fewer requests are held
+  std::uint64_t timeline_requests_needed_ = 0;  // network thread: frames that took fewer requests,
+  std::uint64_t timeline_untaken_tick_ = std::numeric_limits<std::uint64_t>::max();  // from this tick, are held
   std::unique_ptr<TimelineFollower> timeline_;  // last: stopped before anything its handlers reach
 };
 
