@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <mutex>
 #include <utility>
@@ -97,14 +96,8 @@ void FrameProducer::use_sea(SeaState sea) {
 
 void FrameProducer::override_scene(const model::SceneParams& scene, std::int64_t from) {
   ++requests_taken_;
-  overrides_[from] = Override{scene, builder_->build_ahead(builds_, scene)};
+  overrides_[from] = builder_->build_ahead(builds_, scene);
   if (wake_) wake_->set_depth(scene.depth_m, from);
-}
-
-// A build not finished by its tick is waited for (it is under way, at the tick's priority: the
-// rest of it costs the tick no more than building it here would).
-SeaState FrameProducer::take(std::future<SeaState>& ahead, const model::SceneParams& scene) {
-  return ahead.valid() ? ahead.get() : builder_->build(scene);
 }
 
 void FrameProducer::build_next_scheduled(std::int64_t tick) {
@@ -136,16 +129,17 @@ std::shared_ptr<const TickFrames> FrameProducer::produce(std::int64_t tick, doub
   scene_changed_ = false;
   if (&scheduled != scheduled_scene_) {
     scheduled_scene_ = &scheduled;
-    // Built ahead unless the producer started (or jumped) within the lookahead of it.
-    use_sea(next_scheduled_.scene == &scheduled ? take(next_scheduled_.sea, scheduled) : builder_->build(scheduled));
+    // Built ahead unless the producer started (or jumped) within the lookahead of it. A build not
+    // finished by its tick is waited for: it is under way at the tick's priority, and the rest of
+    // it costs the tick no more than building it here would.
+    use_sea(next_scheduled_.scene == &scheduled ? next_scheduled_.sea.get() : builder_->build(scheduled));
     next_scheduled_ = {};
     scene_changed_ = true;
   }
   build_next_scheduled(tick);
   if (!overrides_.empty() && overrides_.begin()->first <= tick) {
     const auto due = overrides_.upper_bound(tick);
-    Override& last = std::prev(due)->second;
-    use_sea(take(last.sea, last.scene));
+    use_sea(std::prev(due)->second.get());
     overrides_.erase(overrides_.begin(), due);
     scene_changed_ = true;
   }

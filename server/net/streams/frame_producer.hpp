@@ -63,7 +63,6 @@ class FrameProducer {
   // The schedule's next entry, built ahead once it is this close.
   static constexpr std::int64_t kScheduleLookaheadTicks = 60;
   void build_next_scheduled(std::int64_t tick);
-  SeaState take(std::future<SeaState>& ahead, const model::SceneParams& scene);
   void use_sea(SeaState sea);
   const sim::Ocean& ocean() const { return *sea_.ocean; }
 
@@ -78,11 +77,8 @@ class FrameProducer {
   BuildQueue builds_;
   // The scene in force: a cascaded profile's frame is its cascades' frames one after the other.
   SeaState sea_;
-  struct Override {
-    model::SceneParams scene;
-    std::future<SeaState> sea;
-  };
-  std::map<std::int64_t, Override> overrides_;  // by first tick (a superseded one's build runs on, unused)
+  // Admin changes' seas, by first tick (a superseded one's build runs on, unused).
+  std::map<std::int64_t, std::future<SeaState>> overrides_;
   PendingSea next_scheduled_;
   std::shared_ptr<BufferPool> pool_;
   bool scene_changed_ = false;
