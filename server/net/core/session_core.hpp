@@ -235,7 +235,8 @@ class SessionCore {
 
   SessionCoreHost host_;
   SessionCoreOptions options_;
-  std::shared_ptr<BuildQueue> builds_ = std::make_shared<BuildQueue>();  // the streams' scene models
+  // The streams' scene models (the codec's arithmetic: no lock shared with the tick).
+  std::shared_ptr<BuildQueue> builds_ = std::make_shared<BuildQueue>(kBackgroundNice);
   std::vector<std::unique_ptr<ProfileStream>> streams_;
   SessionTable sessions_;  // welcomed
   std::vector<std::shared_ptr<Session>> handshaking_;

@@ -1,8 +1,11 @@
 #include "build_queue.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 namespace ocean::server {
 
-BuildQueue::BuildQueue() : thread_([this] { run(); }) {}
+BuildQueue::BuildQueue(int nice) : nice_(nice), thread_([this] { run(); }) {}
 
 BuildQueue::~BuildQueue() {
   {
@@ -23,6 +26,9 @@ void BuildQueue::push(std::function<void()> job) {
 }
 
 void BuildQueue::run() {
+  // Linux applies a niceness to the one thread named; where it is refused, builds run at the
+  // process's priority.
+  if (nice_ != 0) (void)setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), nice_);
   for (;;) {
     std::function<void()> job;
     {
