@@ -11,17 +11,6 @@
 #include <stdexcept>
 
 namespace ocean::sim {
-namespace {
-
-void size_field(std::vector<float>& field, bool wanted, std::size_t n) {
-  if (wanted)
-    field.resize(n);
-  else
-    field.clear();
-}
-
-}  // namespace
-
 BandEvaluator::BandEvaluator(ModeTable modes, double choppiness, double patch_x_m, double patch_z_m)
     : modes_(std::move(modes)),
       lambda_(static_cast<float>(choppiness)),
@@ -32,7 +21,9 @@ BandEvaluator::BandEvaluator(ModeTable modes, double choppiness, double patch_x_
       work_{fft_.make_spectrum(), fft_.make_spectrum(), fft_.make_spectrum()} {}
 
 int BandEvaluator::transform_count(const FrameRequest& request) {
-  return 1 + (request.slopes ? 2 : 0) + (request.choppy ? 5 : 0);
+  int count = 0;
+  for (std::size_t ch = 0; ch < kChannelCount; ++ch) count += requested(ch, request);
+  return count;
 }
 
 void BandEvaluator::evaluate(double t, Frame& out, const FrameRequest& request) {
@@ -42,15 +33,7 @@ void BandEvaluator::evaluate(double t, Frame& out, const FrameRequest& request) 
   out.patch_x_m = patch_x_m_;
   out.patch_z_m = patch_z_m_;
   out.time_s = t;
-  size_field(out.height, true, n);
-  size_field(out.slope_x, request.slopes, n);
-  size_field(out.slope_z, request.slopes, n);
-  size_field(out.disp_x, request.choppy, n);
-  size_field(out.disp_z, request.choppy, n);
-  size_field(out.disp_xx, request.choppy, n);
-  size_field(out.disp_zz, request.choppy, n);
-  size_field(out.disp_xz, request.choppy, n);
-  size_field(out.jacobian, request.choppy, n);
+  for (std::size_t f = 0; f < kFrameFields.size(); ++f) (out.*kFrameFields[f]).resize(requested(f, request) ? n : 0);
 
   fftwf_complex* w0 = work_[0].get();
   fftwf_complex* w1 = work_[1].get();
@@ -78,11 +61,10 @@ void BandEvaluator::evaluate(double t, Frame& out, const FrameRequest& request) 
 
 void BandEvaluator::execute_transforms_only(Frame& out, const FrameRequest& request) {
   const std::size_t n = fft_.grid_size();
-  const auto sized = [n](const std::vector<float>& field, bool wanted) { return !wanted || field.size() == n; };
-  if (!sized(out.height, true) || !sized(out.slope_x, request.slopes) || !sized(out.slope_z, request.slopes) ||
-      !sized(out.disp_x, request.choppy) || !sized(out.disp_z, request.choppy) ||
-      !sized(out.disp_xx, request.choppy) || !sized(out.disp_zz, request.choppy) ||
-      !sized(out.disp_xz, request.choppy) || !sized(out.jacobian, request.choppy))
+  bool sized = true;
+  for (std::size_t f = 0; f < kFrameFields.size(); ++f)
+    sized = sized && (!requested(f, request) || (out.*kFrameFields[f]).size() == n);
+  if (!sized)
     throw std::invalid_argument("execute_transforms_only: the frame must come from evaluate() with the same request");
   fftwf_complex* w0 = work_[0].get();
   fftwf_complex* w1 = work_[1].get();

@@ -11,9 +11,7 @@ CascadeSet::CascadeSet(const SceneParams& scene, std::span<const Cascade> cascad
 void CascadeSet::evaluate(double t, Frame& out, FrameRequest request) {
   // Emptied, not freed: a frame handed back for reuse keeps its capacity, so a steady stream of
   // ticks copies each cascade once and allocates nothing.
-  for (std::vector<float>* f : {&out.height, &out.slope_x, &out.slope_z, &out.disp_x, &out.disp_z, &out.disp_xx,
-                                &out.disp_zz, &out.disp_xz, &out.jacobian})
-    f->clear();
+  for (const auto field : kFrameFields) (out.*field).clear();
   for (Ocean& ocean : oceans_) {
     ocean.evaluate(t, part_, request);
     append_cascade_frame(out, part_);

@@ -11,11 +11,6 @@
 
 namespace ocean::sim {
 
-struct FrameRequest {
-  bool slopes = true;   // exact spectral dh/dx, dh/dz
-  bool choppy = false;  // horizontal displacement (scaled by choppiness) and its Jacobian
-};
-
 class Ocean {
  public:
   explicit Ocean(const SceneParams& params);  // throws ParamError

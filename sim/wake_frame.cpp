@@ -64,6 +64,28 @@ void synthesize(WakeSampler::Plan& p, Factor factor, std::vector<float>& out) {
   p.fft.execute(p.spectrum.get(), out.data());
 }
 
+// A channel's factor of the height spectrum (common/channels.hpp; -i G and G for the choppy
+// kinds), its products taken left to right as they always were: the frames' bits depend on it.
+double channel_factor(const ChannelInfo& c, double lambda, double kx, double kz, double inv_k) {
+  switch (c.kind) {
+    case ChannelKind::height: return 1.0;
+    case ChannelKind::slope_x: return kx;
+    case ChannelKind::slope_z: return kz;
+    case ChannelKind::disp:
+    case ChannelKind::derivative: {
+      double g = c.kind == ChannelKind::disp ? -lambda : lambda;
+      for (int i = 0; i < c.gx; ++i) g *= kx;
+      for (int i = 0; i < c.gz; ++i) g *= kz;
+      return g * inv_k;
+    }
+    case ChannelKind::none: break;
+  }
+  return 0.0;
+}
+
+// i times the factor: the odd derivatives (the slopes, the displacement).
+bool imaginary(ChannelKind k) { return k == ChannelKind::slope_x || k == ChannelKind::slope_z || k == ChannelKind::disp; }
+
 }  // namespace
 
 void WakeSampler::sample(const WakeField& wake, int grid, FrameRequest request, double choppiness, Frame& out) {
@@ -94,21 +116,18 @@ void WakeSampler::sample(std::span<const WakeField* const> wakes, int grid, Fram
   out.n_x = out.n_z = grid;
   out.patch_x_m = out.patch_z_m = size;
   out.time_s = wake.time_s();
-  synthesize<false>(p, [](double, double, double) { return 1.0; }, out.height);
-  out.slope_x.clear();
-  out.slope_z.clear();
-  if (request.slopes) {
-    synthesize<true>(p, [](double kx, double, double) { return kx; }, out.slope_x);
-    synthesize<true>(p, [](double, double kz, double) { return kz; }, out.slope_z);
-  }
-  for (auto* v : {&out.disp_x, &out.disp_z, &out.disp_xx, &out.disp_zz, &out.disp_xz, &out.jacobian}) v->clear();
-  if (!request.choppy) return;
   const double lambda = choppiness;
-  synthesize<true>(p, [&](double kx, double, double inv_k) { return -lambda * kx * inv_k; }, out.disp_x);
-  synthesize<true>(p, [&](double, double kz, double inv_k) { return -lambda * kz * inv_k; }, out.disp_z);
-  synthesize<false>(p, [&](double kx, double, double inv_k) { return lambda * kx * kx * inv_k; }, out.disp_xx);
-  synthesize<false>(p, [&](double, double kz, double inv_k) { return lambda * kz * kz * inv_k; }, out.disp_zz);
-  synthesize<false>(p, [&](double kx, double kz, double inv_k) { return lambda * kx * kz * inv_k; }, out.disp_xz);
+  for (int ch = 0; ch < kChannelCount; ++ch) {
+    const ChannelInfo& c = kChannels[ch];
+    std::vector<float>& field = out.*kFrameChannels[static_cast<std::size_t>(ch)];
+    field.clear();
+    if (!requested(static_cast<std::size_t>(ch), request)) continue;
+    const auto factor = [&](double kx, double kz, double inv_k) { return channel_factor(c, lambda, kx, kz, inv_k); };
+    if (imaginary(c.kind)) synthesize<true>(p, factor, field);
+    else synthesize<false>(p, factor, field);
+  }
+  out.jacobian.clear();
+  if (!request.choppy) return;
   out.jacobian.resize(out.height.size());
   for (std::size_t i = 0; i < out.jacobian.size(); ++i)
     out.jacobian[i] = (1.0f + out.disp_xx[i]) * (1.0f + out.disp_zz[i]) - out.disp_xz[i] * out.disp_xz[i];

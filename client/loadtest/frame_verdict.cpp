@@ -7,9 +7,6 @@
 namespace ocean::loadtest {
 namespace {
 
-// The worst of several channels judged against one bound.
-double worst_of(std::initializer_list<double> errors) { return std::max(errors); }
-
 // Checked only when the stream carries the channel; NaN never passes.
 bool channel_within(double error, double bound) { return bound <= 0.0 || error <= bound + kTruthSlack; }
 
@@ -25,21 +22,36 @@ double max_abs_error(std::span<const float> got, std::span<const float> truth) {
   return std::isnan(worst) ? std::numeric_limits<double>::infinity() : static_cast<double>(worst);
 }
 
+double& ErrorFigures::operator[](ErrorFigure f) {
+  switch (f) {
+    case ErrorFigure::height: return height_m;
+    case ErrorFigure::slope: return slope;
+    case ErrorFigure::disp: return disp_m;
+    case ErrorFigure::disp_deriv: return disp_deriv;
+  }
+  return height_m;
+}
+
 FrameError frame_error(const FrameChannels& got, const FrameChannels& truth) {
   FrameError e;
-  e.height_m = max_abs_error(got.height, truth.height);
-  e.slope = worst_of({max_abs_error(got.slope_x, truth.slope_x), max_abs_error(got.slope_z, truth.slope_z)});
-  e.disp_m = worst_of({max_abs_error(got.disp_x, truth.disp_x), max_abs_error(got.disp_z, truth.disp_z)});
-  e.disp_deriv = worst_of({max_abs_error(got.disp_xx, truth.disp_xx), max_abs_error(got.disp_zz, truth.disp_zz),
-                           max_abs_error(got.disp_xz, truth.disp_xz)});
+  for (int ch = 0; ch < kChannelCount; ++ch) {
+    double& worst = e[figure_of(kChannels[ch])];
+    worst = std::max(worst, max_abs_error(got[ch], truth[ch]));
+  }
   return e;
 }
 
 FrameError frame_error(std::span<const float> height, std::span<const float> slope_x, std::span<const float> slope_z,
                        std::span<const float> truth_height, std::span<const float> truth_slope_x,
                        std::span<const float> truth_slope_z) {
-  return frame_error(FrameChannels{.height = height, .slope_x = slope_x, .slope_z = slope_z},
-                     FrameChannels{.height = truth_height, .slope_x = truth_slope_x, .slope_z = truth_slope_z});
+  FrameChannels got, truth;
+  got[ChannelId::height] = height;
+  got[ChannelId::slope_x] = slope_x;
+  got[ChannelId::slope_z] = slope_z;
+  truth[ChannelId::height] = truth_height;
+  truth[ChannelId::slope_x] = truth_slope_x;
+  truth[ChannelId::slope_z] = truth_slope_z;
+  return frame_error(got, truth);
 }
 
 bool within_bounds(const FrameError& error, const ErrorBounds& bounds) {

@@ -2,6 +2,7 @@
 // profile's quantization bound of the ground truth, and did it arrive before its render time.
 #pragma once
 
+#include "common/channels.hpp"
 #include "tick.hpp"
 
 #include <cstdint>
@@ -15,33 +16,49 @@ namespace ocean::loadtest {
 // serves every channel (displacement in metres, slopes and derivatives dimensionless).
 inline constexpr double kTruthSlack = 1e-5;
 
-// The streamed channels of a frame, empty where it carries none. The Jacobian is not among them:
-// the decoder computes it from the derivatives, so checking those checks what it is made of.
-struct FrameChannels {
-  std::span<const float> height{}, slope_x{}, slope_z{};
-  std::span<const float> disp_x{}, disp_z{}, disp_xx{}, disp_zz{}, disp_xz{};  // choppy streams
-};
+// The streamed channels of a frame (common/channels.hpp), empty where it carries none. The
+// Jacobian is not among them: the decoder computes it from the derivatives, so checking those
+// checks what it is made of.
+using FrameChannels = PerChannel<std::span<const float>>;
 
-// codec::ReconstructedFrame and sim::Frame name their channels alike; this header needs neither.
+// codec::ReconstructedFrame and sim::Frame list their channels' members beside them
+// (channel_members, found by argument-dependent lookup); this header needs neither.
 template <typename Frame>
 FrameChannels channels_of(const Frame& f) {
-  return {f.height, f.slope_x, f.slope_z, f.disp_x, f.disp_z, f.disp_xx, f.disp_zz, f.disp_xz};
+  FrameChannels out;
+  const auto& members = channel_members(&f);
+  for (int ch = 0; ch < kChannelCount; ++ch) out[ch] = f.*members[ch];
+  return out;
 }
 
-struct FrameError {
-  double height_m = 0.0;    // max |reconstructed - truth| over the heights
-  double slope = 0.0;       // over both slope channels
-  double disp_m = 0.0;      // over both displacement channels
-  double disp_deriv = 0.0;  // over the three displacement derivatives
-};
+// The report's figures: each the worst of its channels (figure_of), the bound its step's half.
+enum class ErrorFigure { height, slope, disp, disp_deriv };
+constexpr ErrorFigure figure_of(const ChannelInfo& c) {
+  if (c.group == ChannelGroup::always) return ErrorFigure::height;
+  if (c.group == ChannelGroup::normals) return ErrorFigure::slope;
+  return c.unit == ChannelUnit::displacement ? ErrorFigure::disp : ErrorFigure::disp_deriv;
+}
 
-// A bound of 0 leaves its channel unchecked: the stream does not carry it.
-struct ErrorBounds {
-  double height_m;          // height_step / 2
-  double slope;             // slope_step / 2 (normals)
-  double disp_m = 0.0;      // disp_step_m / 2 (choppy)
-  double disp_deriv = 0.0;  // slope_step / 2 (choppy)
+// Per figure: a frame's error (max |reconstructed - truth| over the figure's channels), or its
+// bound (the channels' step / 2; 0 leaves them unchecked: the stream does not carry them).
+struct ErrorFigures {
+  double height_m = 0.0;    // the heights
+  double slope = 0.0;       // the normals' channels (both slopes)
+  double disp_m = 0.0;      // the choppy channels in metres (both displacements)
+  double disp_deriv = 0.0;  // the other choppy channels (the three displacement derivatives)
+  double& operator[](ErrorFigure f);
 };
+using FrameError = ErrorFigures;
+using ErrorBounds = ErrorFigures;
+
+// The bounds of a stream (a Profile, codec::StreamConfig or the Welcome's StreamParams).
+template <typename Stream>
+ErrorBounds bounds_of(const Stream& s) {
+  ErrorBounds b;
+  for (const ChannelInfo& c : kChannels)
+    if (carried(c, s.normals, s.choppy)) b[figure_of(c)] = step_of(s, c.unit) / 2.0;
+  return b;
+}
 
 // Max absolute differences; a size mismatch counts as infinitely wrong.
 double max_abs_error(std::span<const float> got, std::span<const float> truth);

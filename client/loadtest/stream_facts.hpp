@@ -34,8 +34,7 @@ struct StreamFacts {
     f.grid = w.stream.grid;
     f.lattices = client::stream_lattices(w.stream);
     f.choppy = w.stream.choppy;
-    f.bounds = ErrorBounds{w.stream.height_step_m / 2.0, w.stream.normals ? w.stream.slope_step / 2.0 : 0.0,
-                           f.choppy ? w.stream.disp_step_m / 2.0 : 0.0, f.choppy ? w.stream.slope_step / 2.0 : 0.0};
+    f.bounds = bounds_of(w.stream);
     f.epoch_s = static_cast<double>(w.epoch_unix_ms) / 1000.0;
     // FrameTimeline's default: three send intervals behind (Fiedler's snapshot interpolation).
     f.interpolation_delay_s = 3.0 * f.interval_ticks * f.tick_period_s;

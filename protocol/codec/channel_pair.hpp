@@ -3,19 +3,13 @@
 // grid. The channels' values are made as Z is written, never stored as half-spectra of their own.
 #pragma once
 
+#include "common/channels.hpp"
+
 #include <cstdint>
 
 namespace ocean::codec {
 
-enum class ChannelKind : std::uint8_t {
-  none,        // B of an odd channel out: 0
-  height,      // H
-  slope_x,     // i KX[c] H
-  slope_z,     // i KZ[r] H
-  disp,        // -i G H (disp_x, disp_z)
-  derivative,  // G H (disp_xx, disp_zz, disp_xz)
-};
-
+// A channel's half-spectrum as its kind (common/channels.hpp) makes it from X(t).
 struct ChannelSource {
   ChannelKind kind = ChannelKind::none;
   const float* factor = nullptr;  // G per half-spectrum mode (disp, derivative)

@@ -98,19 +98,19 @@ std::vector<std::uint8_t> encode_body(const BodyLayout& layout, std::uint32_t be
   const double after_key = rc.cost_bits();
   if (end > layout.spectral_items) {
     const SampleRange r = samples_of(layout, begin, end);
-    encode_channel(rc, *m, 0, corr.height, r);
-    const double after_height = rc.cost_bits();
-    if (layout.normals) {
-      encode_channel(rc, *m, 1, corr.slope_x, r);
-      encode_channel(rc, *m, 2, corr.slope_z, r);
+    double after[3] = {after_key, after_key, after_key};  // the cost after each group's channels
+    for (int ch = 0; ch < kCorrectionChannels; ++ch) {
+      const ChannelInfo& info = kChannels[ch];
+      if (!carried(info, layout.normals, layout.choppy)) continue;
+      encode_channel(rc, *m, ch, corr[ch], r);
+      after[static_cast<int>(info.group)] = rc.cost_bits();
     }
-    const double after_slopes = rc.cost_bits();
-    if (layout.choppy)
-      for (int ch = 3; ch < kCorrectionChannels; ++ch) encode_channel(rc, *m, ch, channel(corr, ch), r);
+    const double after_height = after[0];
+    const double after_slopes = std::max(after_height, after[1]);
     if (cost) {
       cost->height_bits += after_height - after_key;
       cost->slope_bits += after_slopes - after_height;
-      cost->choppy_bits += rc.cost_bits() - after_slopes;
+      cost->choppy_bits += std::max(after_slopes, after[2]) - after_slopes;
     }
   }
   if (cost) cost->key_bits += after_key;
@@ -137,14 +137,9 @@ bool decode_body(const BodyLayout& layout, std::uint32_t begin, std::uint32_t en
   }
   if (end > layout.spectral_items) {
     const SampleRange r = samples_of(layout, begin, end);
-    if (!decode_channel(rc, *m, 0, out.corrections.height, r)) return false;
-    if (layout.normals) {
-      if (!decode_channel(rc, *m, 1, out.corrections.slope_x, r)) return false;
-      if (!decode_channel(rc, *m, 2, out.corrections.slope_z, r)) return false;
-    }
-    if (layout.choppy)
-      for (int ch = 3; ch < kCorrectionChannels; ++ch)
-        if (!decode_channel(rc, *m, ch, channel(out.corrections, ch), r)) return false;
+    for (int ch = 0; ch < kCorrectionChannels; ++ch)
+      if (carried(kChannels[ch], layout.normals, layout.choppy) && !decode_channel(rc, *m, ch, out.corrections[ch], r))
+        return false;
   }
   return true;
 }

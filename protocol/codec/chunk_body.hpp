@@ -1,7 +1,9 @@
 // Chunk body: the range-coded contents of one chunk's item range - key spectral coefficients
-// and sparse spatial corrections (height, slope_x, slope_z, and the five choppy channels). Each
-// body decodes on its own.
+// and sparse spatial corrections, channel by channel (common/channels.hpp). Each body decodes on
+// its own.
 #pragma once
+
+#include "common/channels.hpp"
 
 #include <cstdint>
 #include <span>
@@ -14,27 +16,18 @@ struct Correction {
   std::int32_t value;   // in quanta (step / 4 or slope_step / 4), never 0
 };
 
-struct Corrections {
-  std::vector<Correction> height, slope_x, slope_z;  // each sorted by pos
-  // Choppy streams: displacement in disp_step / 4 quanta, its derivatives in slope_step / 4.
-  std::vector<Correction> disp_x, disp_z, disp_xx, disp_zz, disp_xz;
+// A frame's corrections, one list per channel of common/channels.hpp (in coding order), each
+// sorted by pos: heights and displacement in step / 4 quanta, slopes and the displacement's
+// derivatives in slope_step / 4. A channel the stream does not carry has none.
+struct Corrections : PerChannel<std::vector<Correction>> {
   std::size_t total() const {
-    return height.size() + slope_x.size() + slope_z.size() + disp_x.size() + disp_z.size() + disp_xx.size() +
-           disp_zz.size() + disp_xz.size();
+    std::size_t sum = 0;
+    for (const auto& list : by_index) sum += list.size();
+    return sum;
   }
 };
 
-inline constexpr int kCorrectionChannels = 8;
-// The channels of a frame in coding order: height, slope_x, slope_z, disp_x, disp_z, disp_xx,
-// disp_zz, disp_xz.
-inline std::vector<Correction>& channel(Corrections& c, int i) {
-  std::vector<Correction>* all[kCorrectionChannels] = {&c.height, &c.slope_x, &c.slope_z, &c.disp_x,
-                                                       &c.disp_z, &c.disp_xx, &c.disp_zz, &c.disp_xz};
-  return *all[i];
-}
-inline const std::vector<Correction>& channel(const Corrections& c, int i) {
-  return channel(const_cast<Corrections&>(c), i);
-}
+inline constexpr int kCorrectionChannels = kChannelCount;
 
 // One key mode: X(t) and X(t) - X(t-1), each a quantized complex coefficient.
 struct KeyCoefficient {

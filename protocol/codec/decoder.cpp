@@ -131,7 +131,7 @@ ChunkError Decoder::accept(const ChunkView& c) {
   auto append = [](std::vector<Correction>& to, const std::vector<Correction>& from) {
     to.insert(to.end(), from.begin(), from.end());
   };
-  for (int ch = 0; ch < kCorrectionChannels; ++ch) append(channel(p.fields.corrections, ch), channel(decoded.corrections, ch));
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) append(p.fields.corrections[ch], decoded.corrections[ch]);
 
   if (predicted && (!shown_tick_ || c.tick >= *shown_tick_)) show(c.tick);
   if (p.received == p.count) {
@@ -178,8 +178,8 @@ void Decoder::complete(Tick tick, Pending& p, std::span<const std::uint8_t> payl
     p.predicted = key_state(model_, p.key_coefficients, p.pos_shift, p.vel_shift);
     model_.synthesize(p.predicted.cur, scenes_.at(tick)->scene.choppiness, p.fields.synthesis);
   }
-  if (!p.fields.corrections.height.empty())
-    model_.add_correction(p.predicted, height_correction_field(model_.samples(), p.fields.corrections.height),
+  if (!p.fields.corrections[ChannelId::height].empty())
+    model_.add_correction(p.predicted, height_correction_field(model_.samples(), p.fields.corrections[ChannelId::height]),
                          p.key ? 0 : tick - p.baseline);
   const DecodeMemo::State state = memo ? memo->intern(tick, std::move(p.predicted))
                                        : DecodeMemo::State(std::make_shared<ModalState>(std::move(p.predicted)));

@@ -109,7 +109,7 @@ class Decoder {
   void recycle(FrameFields&& fields) {
     if (fields.synthesis.channels[0].capacity() <= spare_fields_.synthesis.channels[0].capacity()) return;
     spare_fields_ = std::move(fields);
-    for (int ch = 0; ch < kCorrectionChannels; ++ch) channel(spare_fields_.corrections, ch).clear();
+    for (int ch = 0; ch < kCorrectionChannels; ++ch) spare_fields_.corrections[ch].clear();
   }
 
   StreamConfig config_;

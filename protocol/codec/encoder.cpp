@@ -81,28 +81,15 @@ std::uint64_t clamped_copy(std::span<const float> in, float step, std::vector<fl
 
 void Encoder::add_truth(Tick tick, const TruthView& truth) {
   const std::size_t nn = model_.samples();
-  if (truth.height.size() != nn)
-    throw std::invalid_argument("Encoder::add_truth: height has " + std::to_string(truth.height.size()) +
-                                " samples, the stream's lattices need " + std::to_string(nn));
-  if (config_.normals && (truth.slope_x.size() != nn || truth.slope_z.size() != nn))
-    throw std::invalid_argument("Encoder::add_truth: slope_x and slope_z need " + std::to_string(nn) +
-                                " samples each when the stream has normals");
-  const std::span<const float> disp[5] = {truth.disp_x, truth.disp_z, truth.disp_xx, truth.disp_zz, truth.disp_xz};
-  if (config_.choppy)
-    for (const auto& field : disp)
-      if (field.size() != nn)
-        throw std::invalid_argument("Encoder::add_truth: the displacement and its three derivatives need " +
-                                    std::to_string(nn) + " samples each when the stream is choppy");
+  for (int ch = 0; ch < kChannelCount; ++ch)
+    if (carries(config_, kChannels[ch]) && truth[ch].size() != nn)
+      throw std::invalid_argument("Encoder::add_truth: " + std::string(kChannels[ch].name) + " has " +
+                                  std::to_string(truth[ch].size()) + " samples, the stream's lattices need " +
+                                  std::to_string(nn) + " (" + std::string(carrier(kChannels[ch].group)) +
+                                  " carries it)");
   TruthFrame& f = truth_[tick];
-  saturated_ += clamped_copy(truth.height, config_.height_step_m, f.height);
-  if (config_.normals) {
-    saturated_ += clamped_copy(truth.slope_x, config_.slope_step, f.slope_x);
-    saturated_ += clamped_copy(truth.slope_z, config_.slope_step, f.slope_z);
-  }
-  if (config_.choppy) {
-    std::vector<float>* to[5] = {&f.disp_x, &f.disp_z, &f.disp_xx, &f.disp_zz, &f.disp_xz};
-    for (int j = 0; j < 5; ++j) saturated_ += clamped_copy(disp[j], j < 2 ? config_.disp_step_m : config_.slope_step, *to[j]);
-  }
+  for (int ch = 0; ch < kChannelCount; ++ch)
+    if (carries(config_, kChannels[ch])) saturated_ += clamped_copy(truth[ch], static_cast<float>(step_of(config_, kChannels[ch].unit)), f[ch]);
   if (tick == predictions_tick_) predictions_.clear();  // corrected against the truth it replaces
   if (!have_truth_ || tick > newest_) newest_ = tick;
   have_truth_ = true;
@@ -176,8 +163,8 @@ std::shared_ptr<const EncodedFrame> Encoder::explicit_key(Tick tick) {
   const double step = static_cast<double>(config_.height_step_m);
   std::vector<std::int64_t> f1(nn), f0(nn);
   for (std::size_t i = 0; i < nn; ++i) {
-    f1[i] = model::to_fixed(static_cast<double>(t1.height[i]) / step, kHeightFracBits);
-    f0[i] = model::to_fixed(static_cast<double>(t0.height[i]) / step, kHeightFracBits);
+    f1[i] = model::to_fixed(static_cast<double>(t1[ChannelId::height][i]) / step, kHeightFracBits);
+    f0[i] = model::to_fixed(static_cast<double>(t0[ChannelId::height][i]) / step, kHeightFracBits);
   }
   HalfSpectrum s1, s0;
   model_.spectrum_of(f1.data(), s1);
@@ -250,20 +237,12 @@ Corrections Encoder::correct(Tick tick, const ModalState& predicted) {
   const TruthFrame& truth = truth_.at(tick);
   model_.synthesize(predicted.cur, scenes_.at(tick)->scene.choppiness, fields_);
   Corrections corr;
-  const double hunit = static_cast<double>(config_.height_step_m) / 65536.0;
-  const double sunit = static_cast<double>(config_.slope_step) / 4096.0;
-  const double dunit = static_cast<double>(config_.disp_step_m) / 65536.0;
-  correct_channel(fields_.height, truth.height, hunit, config_.height_step_m, kHeightQuantumShift, corr.height);
-  if (config_.normals) {
-    correct_channel(fields_.slope_x, truth.slope_x, sunit, config_.slope_step, kSlopeQuantumShift, corr.slope_x);
-    correct_channel(fields_.slope_z, truth.slope_z, sunit, config_.slope_step, kSlopeQuantumShift, corr.slope_z);
-  }
-  if (config_.choppy) {
-    correct_channel(fields_.disp_x, truth.disp_x, dunit, config_.disp_step_m, kDispQuantumShift, corr.disp_x);
-    correct_channel(fields_.disp_z, truth.disp_z, dunit, config_.disp_step_m, kDispQuantumShift, corr.disp_z);
-    correct_channel(fields_.disp_xx, truth.disp_xx, sunit, config_.slope_step, kSlopeQuantumShift, corr.disp_xx);
-    correct_channel(fields_.disp_zz, truth.disp_zz, sunit, config_.slope_step, kSlopeQuantumShift, corr.disp_zz);
-    correct_channel(fields_.disp_xz, truth.disp_xz, sunit, config_.slope_step, kSlopeQuantumShift, corr.disp_xz);
+  for (int ch = 0; ch < kChannelCount; ++ch) {
+    const ChannelUnit unit = kChannels[ch].unit;
+    if (!carries(config_, kChannels[ch])) continue;
+    const float step = static_cast<float>(step_of(config_, unit));
+    correct_channel(fields_[ch], truth[ch], static_cast<double>(step) / static_cast<double>(1 << frac_bits(unit)), step,
+                    quantum_shift(unit), corr[ch]);
   }
   return corr;
 }
@@ -275,9 +254,9 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predic
   frame->key = key != nullptr;
   frame->id = {tick, next_serial_++};
   frame->base = key ? frame->id : base;
-  frame->stats.corrections_height = corr.height.size();
-  frame->stats.corrections_slope = corr.slope_x.size() + corr.slope_z.size();
-  frame->stats.corrections_choppy = corr.total() - corr.height.size() - frame->stats.corrections_slope;
+  std::size_t* by_group[] = {&frame->stats.corrections_height, &frame->stats.corrections_slope,
+                             &frame->stats.corrections_choppy};
+  for (int ch = 0; ch < kChannelCount; ++ch) *by_group[static_cast<int>(kChannels[ch].group)] += corr[ch].size();
   frame->reconstruction.tick = tick;
   frame->reconstruction.complete = true;
   to_float(fields_, config_, frame->reconstruction);
@@ -301,8 +280,8 @@ std::shared_ptr<EncodedFrame> Encoder::finish_frame(Tick tick, ModalState predic
   static const std::vector<KeyCoefficient> kNoCoefficients;
   chunk_frame(*frame, layout, proto, explicit_key ? key->coefficients : kNoCoefficients, corr);
 
-  if (!corr.height.empty())
-    model_.add_correction(predicted, height_correction_field(model_.samples(), corr.height), key ? 0 : tick - base.tick);
+  if (!corr[ChannelId::height].empty())
+    model_.add_correction(predicted, height_correction_field(model_.samples(), corr[ChannelId::height]), key ? 0 : tick - base.tick);
   // Deltas of one tick from different baselines often land on the same state (without
   // corrections, advancing is path-independent): one id for one state lets later deltas from
   // either be encoded once for every client.

@@ -41,13 +41,10 @@ struct EncoderOptions {
   double modeled_key_max_correction_share = 0.02;
 };
 
-// A view of one sim frame (row-major z * n + x); slopes required when the stream has normals, the
-// displacement and its derivatives (choppiness applied) when it is choppy.
-struct TruthView {
-  std::span<const float> height = {};
-  std::span<const float> slope_x = {}, slope_z = {};
-  std::span<const float> disp_x = {}, disp_z = {}, disp_xx = {}, disp_zz = {}, disp_xz = {};
-};
+// A view of one sim frame (row-major z * n + x), per channel (common/channels.hpp): each channel
+// the stream carries is required - the slopes with normals, the displacement and its derivatives
+// (choppiness applied) when it is choppy.
+using TruthView = PerChannel<std::span<const float>>;
 
 struct FrameStats {
   std::size_t payload_bytes = 0;
@@ -108,9 +105,7 @@ class Encoder {
   bool forget_states();
 
  private:
-  struct TruthFrame {
-    std::vector<float> height, slope_x, slope_z, disp_x, disp_z, disp_xx, disp_zz, disp_xz;
-  };
+  using TruthFrame = PerChannel<std::vector<float>>;
   struct KeyCoding {
     bool modeled = true;
     std::vector<KeyCoefficient> coefficients;  // explicit keys only

@@ -11,22 +11,22 @@ namespace ocean::codec {
 
 namespace {
 
-// Per channel in coding order: quarter steps of height and displacement, quarter slope steps of
-// the slopes and the displacement's derivatives.
-constexpr int kQuantumShift[kCorrectionChannels] = {kHeightQuantumShift, kSlopeQuantumShift, kSlopeQuantumShift,
-                                                    kDispQuantumShift,   kDispQuantumShift,  kSlopeQuantumShift,
-                                                    kSlopeQuantumShift,  kSlopeQuantumShift};
-
 // Per channel in coding order: what one unit of its field is in the output's units.
 std::array<double, kCorrectionChannels> output_scales(const StreamConfig& config) {
-  const double h = static_cast<double>(config.height_step_m) / 65536.0;
-  const double s = static_cast<double>(config.slope_step) / 4096.0;
-  const double d = static_cast<double>(config.disp_step_m) / 65536.0;
-  return {h, s, s, d, d, s, s, s};
+  std::array<double, kCorrectionChannels> scales;
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) {
+    const ChannelUnit unit = kChannels[ch].unit;
+    scales[ch] = step_of(config, unit) / static_cast<double>(1 << frac_bits(unit));
+  }
+  return scales;
 }
 
+int channel_shift(int ch) { return quantum_shift(kChannels[ch].unit); }
+
 std::array<std::vector<float>*, kCorrectionChannels> outputs(ReconstructedFrame& out) {
-  return {&out.height, &out.slope_x, &out.slope_z, &out.disp_x, &out.disp_z, &out.disp_xx, &out.disp_zz, &out.disp_xz};
+  std::array<std::vector<float>*, kCorrectionChannels> to;
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) to[ch] = &(out.*kReconstructedChannels[ch]);
+  return to;
 }
 
 void jacobian(ReconstructedFrame& out, std::size_t begin, std::size_t end) {
@@ -64,12 +64,10 @@ std::vector<CorrectionSum> summed(const std::vector<Correction>& corrections, in
 }  // namespace
 
 void apply_corrections(SampleFields& f, const Corrections& c) {
-  std::vector<std::int64_t>* fields[kCorrectionChannels] = {&f.height, &f.slope_x, &f.slope_z,  &f.disp_x,
-                                                            &f.disp_z, &f.disp_xx, &f.disp_zz, &f.disp_xz};
   for (int ch = 0; ch < kCorrectionChannels; ++ch) {
-    const int shift = kQuantumShift[ch];
-    std::vector<std::int64_t>& field = *fields[ch];
-    for (const Correction& k : channel(c, ch)) field[k.pos] = wadd(field[k.pos], wshl(k.value, shift));
+    const int shift = channel_shift(ch);
+    std::vector<std::int64_t>& field = f[ch];
+    for (const Correction& k : c[ch]) field[k.pos] = wadd(field[k.pos], wshl(k.value, shift));
   }
 }
 
@@ -97,19 +95,17 @@ ModalState key_state(const ModalModel& model, std::span<const KeyCoefficient> co
 }
 
 void to_float(const SampleFields& f, const StreamConfig& config, ReconstructedFrame& out, const ParallelFor& parallel) {
-  const std::vector<std::int64_t>* from[kCorrectionChannels] = {&f.height,  &f.slope_x, &f.slope_z,  &f.disp_x,
-                                                                &f.disp_z,  &f.disp_xx, &f.disp_zz, &f.disp_xz};
   const auto scales = output_scales(config);
   const auto to = outputs(out);
-  for (int ch = 0; ch < kCorrectionChannels; ++ch) to[ch]->resize(from[ch]->size());
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) to[ch]->resize(f[ch].size());
   out.jacobian.resize(out.disp_xx.size());
   // Sample by sample, so any split of the samples gives the same floats.
-  const std::size_t samples = f.height.size();
+  const std::size_t samples = f[ChannelId::height].size();
   const int parts = parallel ? kParallelParts : 1;
   run_jobs(parallel, parts, [&](int part) {
     const std::size_t begin = samples * part / parts, end = samples * (part + 1) / parts;
     for (int ch = 0; ch < kCorrectionChannels; ++ch)
-      if (!from[ch]->empty()) scale_fields(from[ch]->data() + begin, end - begin, scales[ch], to[ch]->data() + begin);
+      if (!f[ch].empty()) scale_fields(f[ch].data() + begin, end - begin, scales[ch], to[ch]->data() + begin);
     jacobian(out, begin, end);
   });
 }
@@ -121,7 +117,7 @@ void to_float(const UnroundedFields& f, const Corrections& corrections, const St
   std::vector<CorrectionSum> sums[kCorrectionChannels];
   for (int ch = 0; ch < kCorrectionChannels; ++ch) {
     to[ch]->resize(f.channels[ch].size());
-    sums[ch] = summed(channel(corrections, ch), kQuantumShift[ch]);
+    sums[ch] = summed(corrections[ch], channel_shift(ch));
   }
   out.jacobian.resize(out.disp_xx.size());
   const std::vector<StreamConfig::Lattice> lattices = config.lattices();

@@ -27,6 +27,13 @@ struct ReconstructedFrame {
   std::vector<float> disp_x, disp_z, disp_xx, disp_zz, disp_xz, jacobian;
 };
 
+// ReconstructedFrame's field of each channel (common/channels.hpp), in the table's order.
+inline constexpr ChannelMembers<ReconstructedFrame, std::vector<float>> kReconstructedChannels = {
+    &ReconstructedFrame::height, &ReconstructedFrame::slope_x, &ReconstructedFrame::slope_z,
+    &ReconstructedFrame::disp_x, &ReconstructedFrame::disp_z,  &ReconstructedFrame::disp_xx,
+    &ReconstructedFrame::disp_zz, &ReconstructedFrame::disp_xz};
+constexpr const auto& channel_members(const ReconstructedFrame*) { return kReconstructedChannels; }
+
 // fields += corrections (height and displacement in step/4 quanta, slopes and displacement
 // derivatives in slope_step/4 quanta).
 void apply_corrections(SampleFields& fields, const Corrections& corrections);

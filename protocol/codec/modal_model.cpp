@@ -67,8 +67,11 @@ ModalModel::ModalModel(const StreamConfig& config)
   // d/dx in spectral space is i kx; the factor converts height units per metre to slope units.
   const double factor = (static_cast<double>(config.height_step_m) / 65536.0) /
                         (static_cast<double>(config.slope_step) / 4096.0);
-  disp_factor_ = (static_cast<double>(config.height_step_m) / 65536.0) / (static_cast<double>(config.disp_step_m) / 65536.0);
-  jac_factor_ = factor;
+  for (int ch = 0; ch < kChannelCount; ++ch) {
+    const ChannelUnit unit = kChannels[ch].unit;
+    unit_factor_[ch] = (static_cast<double>(config.height_step_m) / 65536.0) /
+                       (step_of(config, unit) / static_cast<double>(1 << frac_bits(unit)));
+  }
   std::size_t largest = 0;
   wake_at_ = config.modes();
   for (const StreamConfig::Lattice& l : lattices_) {
@@ -249,10 +252,14 @@ void ModalModel::step_wake(WakeSpan s, std::uint64_t steps, Tick first, WakeForc
   }
 }
 
+// G = kx^gx kz^gz / |k| per mode (0 at DC and Nyquist), once; then in float for the choppiness.
 void ModalModel::build_choppy_factors(double choppiness) {
   const std::size_t m = a_.size();
-  if (ratio_[0].empty()) {
-    for (auto& r : ratio_) r.assign(m, 0.0);
+  const auto factored = [](const ChannelInfo& c) { return c.kind == ChannelKind::disp || c.kind == ChannelKind::derivative; };
+  for (int ch = 0; ch < kChannelCount; ++ch) {
+    const ChannelInfo& info = kChannels[ch];
+    if (!factored(info) || !carried(info, normals_, choppy_) || !ratio_[ch].empty()) continue;
+    ratio_[ch].assign(m, 0.0);
     for (const StreamConfig::Lattice& l : lattices_) {
       const int n = l.n, hc = n / 2 + 1;
       for (int r = 0; r < n; ++r) {
@@ -262,20 +269,19 @@ void ModalModel::build_choppy_factors(double choppiness) {
           const double kx = model::kTwoPi * c / l.patch_x_m;
           const double k = std::sqrt(kx * kx + kz * kz);
           if (k == 0.0) continue;
-          const std::size_t at = l.modes_at + static_cast<std::size_t>(r) * hc + c;
-          ratio_[0][at] = kx / k;
-          ratio_[1][at] = kz / k;
-          ratio_[2][at] = (kx * kx) / k;
-          ratio_[3][at] = (kz * kz) / k;
-          ratio_[4][at] = (kx * kz) / k;
+          double power = 1.0;
+          for (int i = 0; i < info.gx; ++i) power *= kx;
+          for (int i = 0; i < info.gz; ++i) power *= kz;
+          ratio_[ch][l.modes_at + static_cast<std::size_t>(r) * hc + c] = power / k;
         }
       }
     }
   }
-  for (int j = 0; j < 5; ++j) {
-    const double factor = j < 2 ? disp_factor_ : jac_factor_;
-    choppy_factor_[j].resize(m);
-    for (std::size_t i = 0; i < m; ++i) choppy_factor_[j][i] = static_cast<float>(choppiness * ratio_[j][i] * factor);
+  for (int ch = 0; ch < kChannelCount; ++ch) {
+    if (ratio_[ch].empty()) continue;
+    channel_factor_[ch].resize(m);
+    for (std::size_t i = 0; i < m; ++i)
+      channel_factor_[ch][i] = static_cast<float>(choppiness * ratio_[ch][i] * unit_factor_[ch]);
   }
   factor_choppiness_ = choppiness;
 }

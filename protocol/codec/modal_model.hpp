@@ -20,16 +20,13 @@
 namespace ocean::codec {
 
 // Units (CODEC.md 2): heights in step / 2^16, slopes in slope_step / 2^12; a spectrum is the
-// unnormalized DFT of a height field in those units.
-inline constexpr int kHeightFracBits = 16;
-inline constexpr int kSlopeFracBits = 12;
+// unnormalized DFT of a height field in those units. Displacement (codec version 3) counts like
+// heights in disp_step, the Jacobian's inputs like slopes; corrections count quarter steps.
+constexpr int frac_bits(ChannelUnit u) { return u == ChannelUnit::slope ? 12 : 16; }
+constexpr int quantum_shift(ChannelUnit u) { return frac_bits(u) - 2; }
+inline constexpr int kHeightFracBits = frac_bits(ChannelUnit::height);
+inline constexpr int kHeightQuantumShift = quantum_shift(ChannelUnit::height);
 inline constexpr int kRecurrenceBits = 48;   // a(k) in Q48
-inline constexpr int kHeightQuantumShift = 14;  // height corrections count step / 4 = 2^14 units
-inline constexpr int kSlopeQuantumShift = 10;   // slope corrections count slope_step / 4 = 2^10 units
-// Choppy channels (codec version 3): displacement in disp_step / 2^16 units, corrected in quarter
-// steps like heights; the Jacobian's inputs in slope units, corrected like slopes.
-inline constexpr int kDispFracBits = 16;
-inline constexpr int kDispQuantumShift = 14;
 // A delta's correction of the wake lattice counts as velocity by 1 / (this x lag) (CODEC.md 7.9):
 // 1 tracks the hulls' forcing fastest but feeds every quantization error back as motion, and the
 // free waves then keep needing corrections; 4 nearly silences them (test_wake_stream measures both).
@@ -47,20 +44,16 @@ struct ModalState {
   bool operator==(const ModalState&) const = default;
 };
 
-// Integer sample fields, row-major z * n + x.
-struct SampleFields {
-  std::vector<std::int64_t> height;            // step / 2^16 units
-  std::vector<std::int64_t> slope_x, slope_z;  // slope_step / 2^12 units; empty without normals
-  // Choppy streams only (else empty), all scaled by the scene's choppiness lambda:
-  std::vector<std::int64_t> disp_x, disp_z;    // D = -i lambda k/|k| X, disp_step / 2^16 units
-  std::vector<std::int64_t> disp_xx, disp_zz, disp_xz;  // dDx/dx, dDz/dz, dDx/dz, slope units
-};
+// Integer sample fields, row-major z * n + x, one per channel (common/channels.hpp), in units of
+// 2^-16 height or displacement steps or 2^-12 slope steps; empty where the stream does not carry
+// the channel. Choppy channels are scaled by the scene's choppiness lambda: D = -i lambda k/|k| X.
+struct SampleFields : PerChannel<std::vector<std::int64_t>> {};
 
 // The same channels before rounding: each the inverse transform's binary32 output, unscaled
 // (CODEC.md 7.2), in coding order, empty where not streamed. A decoder keeps a frame so and
 // rounds, corrects and converts it in one pass when it shows it (to_float, frame_reconstruction.hpp).
 struct UnroundedFields {
-  std::vector<float> channels[kCorrectionChannels];
+  PerChannel<std::vector<float>> channels;
 };
 
 class ModalModel {
@@ -142,7 +135,7 @@ class ModalModel {
   std::size_t samples_ = 0;
   bool normals_;
   bool choppy_;
-  double disp_factor_ = 0.0, jac_factor_ = 0.0;  // height units to displacement / slope units
+  PerChannel<double> unit_factor_;  // height units to each channel's units
   std::vector<std::int64_t> a_;  // Q48, per half-spectrum mode
   // The wake lattice's damped recurrence X(t+1) = a X(t) - b X(t-1): b in Q48 per mode from wake_at_.
   std::size_t wake_at_ = 0;
@@ -163,10 +156,10 @@ class ModalModel {
 
  private:
   std::vector<std::int32_t> key_modes_;
-  // Choppy: kx/k, kz/k, kx^2/k, kz^2/k, kx kz/k per half-spectrum mode (0 at DC and Nyquist), and
-  // their float factors for the choppiness they were last built for.
-  std::vector<double> ratio_[5];
-  std::vector<float> choppy_factor_[5];
+  // The channels with a factor G (ChannelInfo::gx, gz): G per half-spectrum mode (0 at DC and
+  // Nyquist), and in float with the choppiness they were last built for and the channel's units.
+  PerChannel<std::vector<double>> ratio_;
+  PerChannel<std::vector<float>> channel_factor_;
   double factor_choppiness_ = -1.0;
   std::vector<float> h_re_, h_im_;  // X(t) in binary32
   UnroundedFields unrounded_;  // what synthesize(SampleFields) rounds

@@ -31,14 +31,14 @@ void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, Unrounde
 }
 
 void ModalModel::synthesize(const HalfSpectrum& cur, double choppiness, SampleFields& out) {
-  std::vector<std::int64_t>* fields[kCorrectionChannels] = {&out.height, &out.slope_x, &out.slope_z,  &out.disp_x,
-                                                            &out.disp_z, &out.disp_xx, &out.disp_zz, &out.disp_xz};
+  std::vector<std::int64_t>* fields[kCorrectionChannels];
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) fields[ch] = &out[ch];
   synthesize_channels(cur, choppiness, unrounded_, fields);
 }
 
-// The channels in order - height, [slope_x, slope_z], [disp_x, disp_z, disp_xx, disp_zz, disp_xz] -
-// that have a transform this frame, sized; the others cleared (not streamed) or zeroed. They are
-// synthesized in consecutive pairs (CODEC.md 7.2), lattice by lattice.
+// The channels the stream carries that have a transform this frame, in coding order, sized; the
+// others cleared (not streamed) or zeroed. They are synthesized in consecutive pairs (CODEC.md
+// 7.2), lattice by lattice.
 int ModalModel::plan_channels(double choppiness, UnroundedFields& out, std::vector<std::int64_t>* const* rounded,
                               SynthesisChannel* channels) {
   int count = 0;
@@ -48,18 +48,15 @@ int ModalModel::plan_channels(double choppiness, UnroundedFields& out, std::vect
     out.channels[index].assign(zeros ? nn : 0, 0.0f);
     if (rounded) rounded[index]->assign(zeros ? nn : 0, 0);
   };
-  channels[count++] = {0, ChannelKind::height, nullptr};
-  for (int j = 1; j <= 2; ++j) {
-    if (normals_) channels[count++] = {j, j == 1 ? ChannelKind::slope_x : ChannelKind::slope_z, nullptr};
-    else without_transform(j, false);
-  }
   // A choppy stream at choppiness 0: every factor is 0, so every field is exactly 0.
-  const bool choppy_transforms = choppy_ && choppiness != 0.0;
-  if (choppy_transforms && choppiness != factor_choppiness_) build_choppy_factors(choppiness);
-  for (int j = 0; j < 5; ++j) {
-    if (choppy_transforms)
-      channels[count++] = {3 + j, j < 2 ? ChannelKind::disp : ChannelKind::derivative, choppy_factor_[j].data()};
-    else without_transform(3 + j, choppy_);
+  const bool factors = choppiness != 0.0;
+  if (factors && choppiness != factor_choppiness_) build_choppy_factors(choppiness);
+  for (int ch = 0; ch < kChannelCount; ++ch) {
+    const ChannelInfo& info = kChannels[ch];
+    const bool factored = info.kind == ChannelKind::disp || info.kind == ChannelKind::derivative;
+    if (!carried(info, normals_, choppy_)) without_transform(ch, false);
+    else if (factored && !factors) without_transform(ch, true);
+    else channels[count++] = {ch, info.kind, factored ? channel_factor_[ch].data() : nullptr};
   }
   for (int i = 0; i < count; ++i) {
     out.channels[channels[i].index].resize(nn);

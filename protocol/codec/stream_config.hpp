@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/cascade.hpp"
+#include "common/channels.hpp"
 #include "common/wake_lattice.hpp"
 #include "profile.hpp"
 
@@ -70,6 +71,11 @@ struct StreamConfig {
 };
 
 bool operator==(const StreamConfig& a, const StreamConfig& b);
+
+// Whether the stream carries the channel.
+inline bool carries(const StreamConfig& config, const ChannelInfo& channel) {
+  return carried(channel, config.normals, config.choppy);
+}
 
 // The fields a profile fixes, under the same names in Profile, StreamConfig and the wire's
 // StreamParams: one list for every copy between them.

@@ -73,15 +73,8 @@ TEST_CASE("synthesis spread over threads gives the bits of one thread") {
       alone.synthesize(state.cur, choppiness, a);
       spread.synthesize(state.cur, choppiness, b);
       INFO(name << " choppiness " << choppiness);
-      CHECK(a.height == b.height);
-      CHECK(a.slope_x == b.slope_x);
-      CHECK(a.slope_z == b.slope_z);
-      CHECK(a.disp_x == b.disp_x);
-      CHECK(a.disp_z == b.disp_z);
-      CHECK(a.disp_xx == b.disp_xx);
-      CHECK(a.disp_zz == b.disp_zz);
-      CHECK(a.disp_xz == b.disp_xz);
-      CHECK(!a.height.empty());
+      for (int ch = 0; ch < kChannelCount; ++ch) CHECK(a[ch] == b[ch]);
+      CHECK(!a[ChannelId::height].empty());
       // The output floats too: four parts of the samples side by side.
       codec::ReconstructedFrame fa, fb;
       codec::to_float(a, config, fa);
@@ -90,7 +83,7 @@ TEST_CASE("synthesis spread over threads gives the bits of one thread") {
       CHECK(fa.slope_z == fb.slope_z);
       CHECK(fa.disp_xz == fb.disp_xz);
       CHECK(fa.jacobian == fb.jacobian);
-      CHECK(fa.jacobian.size() == (p->choppy ? a.height.size() : 0));
+      CHECK(fa.jacobian.size() == (p->choppy ? a[ChannelId::height].size() : 0));
     }
   }
 }

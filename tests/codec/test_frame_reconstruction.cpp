@@ -71,19 +71,16 @@ TEST_CASE("a frame converted before rounding equals the rounded, corrected frame
           list.push_back({static_cast<std::uint32_t>(rng() % samples), value == 0 ? 1 : value});
         }
         std::sort(list.begin(), list.end(), [](const Correction& a, const Correction& b) { return a.pos < b.pos; });
-        auto& all = channel(corrections, ch);
+        auto& all = corrections[ch];
         all.insert(all.end(), list.begin(), list.end());
       }
 
     SampleFields rounded;
-    std::vector<std::int64_t>* fields[kCorrectionChannels] = {&rounded.height, &rounded.slope_x, &rounded.slope_z,
-                                                              &rounded.disp_x, &rounded.disp_z,  &rounded.disp_xx,
-                                                              &rounded.disp_zz, &rounded.disp_xz};
     for (int ch = 0; ch < kCorrectionChannels; ++ch) {
-      fields[ch]->resize(samples);
+      rounded[ch].resize(samples);
       for (const StreamConfig::Lattice& l : lattices)
         round_fields(unrounded.channels[ch].data() + l.samples_at, static_cast<std::size_t>(l.n) * l.n,
-                     synthesis_scale(l.n), fields[ch]->data() + l.samples_at);
+                     synthesis_scale(l.n), rounded[ch].data() + l.samples_at);
     }
     apply_corrections(rounded, corrections);
     ReconstructedFrame want, one_pass, spread;
@@ -123,20 +120,17 @@ TEST_CASE("synthesis before rounding rounds to the integer synthesis", "[reconst
     UnroundedFields unrounded;
     model.synthesize(cur, choppiness, rounded);
     model.synthesize(cur, choppiness, unrounded);
-    const std::vector<std::int64_t>* fields[kCorrectionChannels] = {&rounded.height, &rounded.slope_x, &rounded.slope_z,
-                                                                    &rounded.disp_x, &rounded.disp_z,  &rounded.disp_xx,
-                                                                    &rounded.disp_zz, &rounded.disp_xz};
     INFO("choppiness " << choppiness);
     for (int ch = 0; ch < kCorrectionChannels; ++ch) {
-      REQUIRE(unrounded.channels[ch].size() == fields[ch]->size());
+      REQUIRE(unrounded.channels[ch].size() == rounded[ch].size());
       std::size_t mismatches = 0;
       for (const StreamConfig::Lattice& l : config.lattices())
         for (std::size_t i = l.samples_at; i < l.samples_at + static_cast<std::size_t>(l.n) * l.n; ++i)
-          mismatches += round_field(unrounded.channels[ch][i], synthesis_scale(l.n)) != (*fields[ch])[i];
+          mismatches += round_field(unrounded.channels[ch][i], synthesis_scale(l.n)) != rounded[ch][i];
       CHECK(mismatches == 0);
     }
     std::int64_t largest = 0;
-    for (std::int64_t v : rounded.disp_x) largest = std::max(largest, v < 0 ? -v : v);
+    for (std::int64_t v : rounded[ocean::ChannelId::disp_x]) largest = std::max(largest, v < 0 ? -v : v);
     CHECK((choppiness == 0.0 ? largest == 0 : largest > 0));
   }
 }

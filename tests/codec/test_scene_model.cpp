@@ -117,9 +117,9 @@ Diff compare_with_sim(ocean::sim::Ocean& ocean, const StreamConfig& stream, cons
     ocean::sim::Frame frame;
     ocean.evaluate_band(tick_time_s(at, r), stream.grid, stream.grid, frame);
     for (std::size_t i = 0; i < frame.height.size(); ++i) {
-      d.height_m = std::max(d.height_m, std::fabs(static_cast<double>(fields.height[i]) * unit - frame.height[i]));
-      d.slope = std::max(d.slope, std::fabs(static_cast<double>(fields.slope_x[i]) * slope_unit - frame.slope_x[i]));
-      d.slope = std::max(d.slope, std::fabs(static_cast<double>(fields.slope_z[i]) * slope_unit - frame.slope_z[i]));
+      d.height_m = std::max(d.height_m, std::fabs(static_cast<double>(fields[ocean::ChannelId::height][i]) * unit - frame.height[i]));
+      d.slope = std::max(d.slope, std::fabs(static_cast<double>(fields[ocean::ChannelId::slope_x][i]) * slope_unit - frame.slope_x[i]));
+      d.slope = std::max(d.slope, std::fabs(static_cast<double>(fields[ocean::ChannelId::slope_z][i]) * slope_unit - frame.slope_z[i]));
     }
   }
   return d;
@@ -264,8 +264,8 @@ TEST_CASE("the predicted state agrees with the decoder's recurrence", "[scene_mo
         modal.synthesize(advanced.cur, 0.0, a);
         modal.synthesize(direct.cur, 0.0, b);
         double dh = 0.0;
-        for (std::size_t i = 0; i < a.height.size(); ++i)
-          dh = std::max(dh, std::fabs(static_cast<double>(a.height[i] - b.height[i])) * unit);
+        for (std::size_t i = 0; i < a[ocean::ChannelId::height].size(); ++i)
+          dh = std::max(dh, std::fabs(static_cast<double>(a[ocean::ChannelId::height][i] - b[ocean::ChannelId::height][i])) * unit);
         std::printf("advance vs state_at: %-18s tick %11llu + %3u: max |dh| %.2e m\n", named.name.c_str(),
                     static_cast<unsigned long long>(tick), steps, dh);
         INFO(named.name << " tick " << tick << " + " << steps);

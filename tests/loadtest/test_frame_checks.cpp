@@ -135,7 +135,7 @@ TEST_CASE("frame check: every choppy channel is held to its own bound") {
   truth.set_scene(0, choppy_scene());
   const ocean::sim::Frame& t = *truth.at(30, 32);
   const ErrorBounds bounds = choppy_bounds();
-  REQUIRE(channels_of(t).disp_xz.size() == 32u * 32u);
+  REQUIRE(channels_of(t)[ocean::ChannelId::disp_xz].size() == 32u * 32u);
   CHECK(within_bounds(frame_error(channels_of(t), channels_of(t)), bounds));
 
   // Within the bounds on every channel: passes, and each error is reported on its own.

@@ -13,36 +13,21 @@ constexpr std::size_t kMaxPooledBuffers = 8;
 
 sim::FrameRequest request_of(const Profile& profile) { return {profile.normals, profile.choppy}; }
 
-// A frame's optional channels, of a const frame or not.
-template <typename F>
-auto slopes_of(F& f) {
-  return std::array{&f.slope_x, &f.slope_z};
-}
-template <typename F>
-auto choppy_of(F& f) {
-  return std::array{&f.disp_x, &f.disp_z, &f.disp_xx, &f.disp_zz, &f.disp_xz, &f.jacobian};
-}
-
-// Empties the channels `request` does not name (capacity kept for the next tick).
+// Empties the fields `request` does not name (capacity kept for the next tick).
 void keep_requested(sim::Frame& f, sim::FrameRequest request) {
-  if (!request.slopes)
-    for (auto* v : slopes_of(f)) v->clear();
-  if (!request.choppy)
-    for (auto* v : choppy_of(f)) v->clear();
+  for (std::size_t i = 0; i < sim::kFrameFields.size(); ++i)
+    if (!sim::requested(i, request)) (f.*sim::kFrameFields[i]).clear();
 }
 
-// The channels `request` names, from a frame evaluated with at least those.
+// The fields `request` names, from a frame evaluated with at least those.
 void copy_requested(const sim::Frame& from, sim::Frame& to, sim::FrameRequest request) {
   to.n_x = from.n_x;
   to.n_z = from.n_z;
   to.patch_x_m = from.patch_x_m;
   to.patch_z_m = from.patch_z_m;
   to.time_s = from.time_s;
-  to.height = from.height;
-  if (request.slopes)
-    for (std::size_t c = 0; c < 2; ++c) *slopes_of(to)[c] = *slopes_of(from)[c];
-  if (request.choppy)
-    for (std::size_t c = 0; c < 6; ++c) *choppy_of(to)[c] = *choppy_of(from)[c];
+  for (std::size_t i = 0; i < sim::kFrameFields.size(); ++i)
+    if (sim::requested(i, request)) to.*sim::kFrameFields[i] = from.*sim::kFrameFields[i];
   keep_requested(to, request);
 }
 

@@ -51,8 +51,9 @@ void ProfileStream::add_truth(Tick tick, const sim::Frame& frame) {
   });
   encoded_.clear();
   encode_seconds_ = 0.0;
-  encoder_->add_truth(tick, codec::TruthView{frame.height, frame.slope_x, frame.slope_z, frame.disp_x, frame.disp_z,
-                                             frame.disp_xx, frame.disp_zz, frame.disp_xz});
+  codec::TruthView truth;
+  for (int ch = 0; ch < kChannelCount; ++ch) truth[ch] = frame.*sim::kFrameChannels[ch];
+  encoder_->add_truth(tick, truth);
   have_newest_ = true;
   newest_tick_ = tick;
 }
