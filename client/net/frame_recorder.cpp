@@ -1,6 +1,7 @@
 // The tick file has NpyWriter's layout: a fixed 128-byte header, so the length can be patched.
 #include "frame_recorder.hpp"
 
+#include <array>
 #include <algorithm>
 #include <bit>
 #include <cstring>
@@ -50,18 +51,18 @@ std::string ticks_path_for(const std::string& heights_path) {
 
 namespace {
 
-// Every channel a ReconstructedFrame may carry, as the recording names its file.
+// Every field a ReconstructedFrame may carry (its channels, then the Jacobian), as the recording
+// names its file.
 struct ChannelField {
-  const char* name;
+  std::string_view name;
   std::vector<float> codec::ReconstructedFrame::*field;
 };
-constexpr ChannelField kChannels[] = {
-    {"height", &codec::ReconstructedFrame::height},   {"slope_x", &codec::ReconstructedFrame::slope_x},
-    {"slope_z", &codec::ReconstructedFrame::slope_z}, {"disp_x", &codec::ReconstructedFrame::disp_x},
-    {"disp_z", &codec::ReconstructedFrame::disp_z},   {"disp_xx", &codec::ReconstructedFrame::disp_xx},
-    {"disp_zz", &codec::ReconstructedFrame::disp_zz}, {"disp_xz", &codec::ReconstructedFrame::disp_xz},
-    {"jacobian", &codec::ReconstructedFrame::jacobian},
-};
+constexpr auto kRecordedFields = [] {
+  std::array<ChannelField, kChannelCount + 1> all{};
+  for (std::size_t ch = 0; ch < kChannelCount; ++ch) all[ch] = {kChannels[ch].name, codec::kReconstructedChannels[ch]};
+  all[kChannelCount] = {"jacobian", &codec::ReconstructedFrame::jacobian};
+  return all;
+}();
 
 // "run.npy" + "height" -> "run.height.npy".
 std::string beside(const std::string& path, const std::string& what) {
@@ -97,9 +98,10 @@ void FrameRecorder::open(std::span<const int> lattices, const codec::Reconstruct
   TickNpyWriter sizes(beside(path_, "lattices"));
   for (const int n : lattices_) sizes.append(n);
   sizes.close();
-  for (const ChannelField& c : kChannels)
+  for (const ChannelField& c : kRecordedFields)
     if ((frame.*c.field).size() == samples)
-      channels_.push_back(std::unique_ptr<Channel>(new Channel{c.field, NpyWriter(beside(path_, c.name), 1, static_cast<int>(samples))}));
+      channels_.push_back(std::unique_ptr<Channel>(
+          new Channel{c.field, NpyWriter(beside(path_, std::string(c.name)), 1, static_cast<int>(samples))}));
 }
 
 bool FrameRecorder::append(std::int64_t tick, std::span<const int> lattices, const codec::ReconstructedFrame& frame) {

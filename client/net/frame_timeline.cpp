@@ -65,11 +65,10 @@ void FrameTimeline::fill(TimelineFrame& slot, const codec::ReconstructedFrame& f
   slot.tick = tick;
   slot.arrival_s = arrival_s;
   slot.predicted = predicted;
-  slot.height.assign(frame.height.begin(), frame.height.end());
-  slot.slope_x.assign(frame.slope_x.begin(), frame.slope_x.end());
-  slot.slope_z.assign(frame.slope_z.begin(), frame.slope_z.end());
-  slot.disp_x.assign(frame.disp_x.begin(), frame.disp_x.end());
-  slot.disp_z.assign(frame.disp_z.begin(), frame.disp_z.end());
+  for (const auto& [id, member] : kViewerChannels) {
+    const std::vector<float>& from = frame.*codec::kReconstructedChannels[static_cast<std::size_t>(index_of(id))];
+    (slot.*member).assign(from.begin(), from.end());
+  }
   slot.jacobian.assign(frame.jacobian.begin(), frame.jacobian.end());
   used_[static_cast<std::size_t>(&slot - frames_.data())] = true;
 }
@@ -185,9 +184,7 @@ void FrameTimeline::blend(const TimelineSample& sample, std::vector<float>& heig
 
 void FrameTimeline::blend(const TimelineSample& sample, FrameChannels& out) {
   if (!sample.a) return;
-  blend(sample, out.height, out.slope_x, out.slope_z);
-  mix(sample.weight, sample.a->disp_x, sample.b->disp_x, out.disp_x);
-  mix(sample.weight, sample.a->disp_z, sample.b->disp_z, out.disp_z);
+  for (const auto& [id, member] : kViewerChannels) mix(sample.weight, sample.a->*member, sample.b->*member, out.*member);
   mix(sample.weight, sample.a->jacobian, sample.b->jacobian, out.jacobian);
 }
 

@@ -35,12 +35,11 @@ struct FrameTimelineConfig {
   double clock_snap_s = 1.0;             // an estimate this far off is jumped to (reconnect, server restart)
 };
 
-struct TimelineFrame {
+// A frame held: the channels a viewer keeps (FrameChannels), by tick.
+struct TimelineFrame : FrameChannels {
   Tick tick = 0;
   double arrival_s = 0.0;
   bool predicted = false;  // made by the extrapolator; a real frame of its tick replaces it
-  std::vector<float> height, slope_x, slope_z;
-  std::vector<float> disp_x, disp_z, jacobian;  // choppy streams only
 };
 
 
