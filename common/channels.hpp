@@ -21,8 +21,8 @@ enum class ChannelGroup : std::uint8_t { always, normals, choppy };
 // a correction counts quarter steps.
 enum class ChannelUnit : std::uint8_t { height, slope, displacement };
 
-// How the channel's spectrum follows from the height spectrum H (CODEC.md 7.2), with
-// G = lambda kx^gx kz^gz / |k| for the displacement channels.
+// How the channel's spectrum follows from the height spectrum H (CODEC.md 7.2); the factored
+// kinds' real factor G is the row's (ChannelInfo::factor).
 enum class ChannelKind : std::uint8_t {
   none,        // B of an odd channel out: 0
   height,      // H
@@ -32,25 +32,52 @@ enum class ChannelKind : std::uint8_t {
   derivative,  // G H
 };
 
+// G = sign x (lambda, the scene's choppiness, where `choppy`) x kx^gx kz^gz |k|^gk; 0 at k = 0.
+struct ChannelFactor {
+  std::uint8_t gx = 0, gz = 0;
+  std::int8_t gk = 0;
+  bool choppy = false;
+  std::int8_t sign = 1;
+};
+
 struct ChannelInfo {
   std::string_view name;  // as reports, recordings (.npy) and errors name it
   ChannelGroup group;
   ChannelUnit unit;
   ChannelKind kind;
-  std::uint8_t gx = 0, gz = 0;  // G's powers of kx and kz (disp, derivative)
+  ChannelFactor factor = {};  // disp and derivative
 };
+
+constexpr bool factored(const ChannelInfo& c) { return c.kind == ChannelKind::disp || c.kind == ChannelKind::derivative; }
+
+// The displacement D = -i lambda k/|k| H (Tessendorf's choppy waves) and its derivatives
+// dDx/dx = lambda kx^2/|k| H, ...: the inputs of the Jacobian.
+inline constexpr ChannelFactor kDisplacement(std::uint8_t gx, std::uint8_t gz) { return {gx, gz, -1, true, 1}; }
 
 inline constexpr ChannelInfo kChannels[] = {
     {"height", ChannelGroup::always, ChannelUnit::height, ChannelKind::height},
     {"slope_x", ChannelGroup::normals, ChannelUnit::slope, ChannelKind::slope_x},
     {"slope_z", ChannelGroup::normals, ChannelUnit::slope, ChannelKind::slope_z},
-    {"disp_x", ChannelGroup::choppy, ChannelUnit::displacement, ChannelKind::disp, 1, 0},
-    {"disp_z", ChannelGroup::choppy, ChannelUnit::displacement, ChannelKind::disp, 0, 1},
-    {"disp_xx", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, 2, 0},
-    {"disp_zz", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, 0, 2},
-    {"disp_xz", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, 1, 1},
+    {"disp_x", ChannelGroup::choppy, ChannelUnit::displacement, ChannelKind::disp, kDisplacement(1, 0)},
+    {"disp_z", ChannelGroup::choppy, ChannelUnit::displacement, ChannelKind::disp, kDisplacement(0, 1)},
+    {"disp_xx", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, kDisplacement(2, 0)},
+    {"disp_zz", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, kDisplacement(0, 2)},
+    {"disp_xz", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, kDisplacement(1, 1)},
 };
 inline constexpr int kChannelCount = static_cast<int>(std::size(kChannels));
+
+// G of a row at (kx, kz) with |k| = k and inv_k = 1 / |k| (0 at k = 0), as the sim evaluates it:
+// the products taken left to right from lambda, which the wake's frames' bits depend on. (The
+// codec's own order is CODEC.md 7.2's: ModalModel.)
+template <typename T>
+T channel_factor(const ChannelFactor& f, T lambda, T kx, T kz, T k, T inv_k) {
+  T g = f.choppy ? lambda : T(1);
+  for (int i = 0; i < f.gx; ++i) g *= kx;
+  for (int i = 0; i < f.gz; ++i) g *= kz;
+  for (int i = 0; i < f.gk; ++i) g *= k;
+  for (int i = 0; i > f.gk; --i) g *= inv_k;
+  return f.sign < 0 ? -g : g;
+}
 
 // The table's rows by name, in its order.
 enum class ChannelId : std::uint8_t { height, slope_x, slope_z, disp_x, disp_z, disp_xx, disp_zz, disp_xz };

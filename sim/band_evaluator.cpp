@@ -56,6 +56,11 @@ void BandEvaluator::evaluate(double t, Frame& out, const FrameRequest& request) 
     fft_.execute(w2, out.disp_xz.data());
     combine_jacobian(out.disp_xx.data(), out.disp_zz.data(), out.disp_xz.data(), out.jacobian.data(), n);
   }
+  for (std::size_t ch = kFusedChannels; ch < kChannelCount; ++ch) {
+    if (!requested(ch, request)) continue;
+    derive_channel(modes_, kChannels[ch], lambda_, h, w0);
+    fft_.execute(w0, (out.*kFrameChannels[ch]).data());
+  }
   fft_.execute(spectrum_h_.get(), out.height.data());
 }
 
@@ -80,6 +85,8 @@ void BandEvaluator::execute_transforms_only(Frame& out, const FrameRequest& requ
     fft_.execute(w1, out.disp_zz.data());
     fft_.execute(w2, out.disp_xz.data());
   }
+  for (std::size_t ch = kFusedChannels; ch < kChannelCount; ++ch)
+    if (requested(ch, request)) fft_.execute(w0, (out.*kFrameChannels[ch]).data());
   fft_.execute(spectrum_h_.get(), out.height.data());
 }
 

@@ -146,6 +146,33 @@ void derive_displacement_gradient(const ModeTable& modes, float lambda, const ff
   }
 }
 
+void derive_channel(const ModeTable& modes, const ChannelInfo& channel, float lambda, const fftwf_complex* hc,
+                    fftwf_complex* out) {
+  for (int j = 0; j < modes.n_z; ++j) {
+    const std::size_t row = row_start(modes, j);
+    const float kz = modes.kz[j];
+    const float* h = floats(hc) + 2 * row;
+    float* o = floats(out) + 2 * row;
+    for (int i = 0; i < modes.columns; ++i) {
+      const float kx = modes.kx[i], inv_k = inverse_length(kx, kz);
+      const float re = h[2 * i], im = h[2 * i + 1];
+      float g = 1.0f;  // i g h: the slopes' kinds; -i g h: disp; g h: height and derivative
+      if (factored(channel)) g = channel_factor(channel.factor, lambda, kx, kz, 1.0f / inv_k, inv_k);
+      else if (channel.kind == ChannelKind::slope_x) g = kx;
+      else if (channel.kind == ChannelKind::slope_z) g = kz;
+      const bool times_i = channel.kind == ChannelKind::slope_x || channel.kind == ChannelKind::slope_z;
+      if (times_i || channel.kind == ChannelKind::disp) {
+        const float s = times_i ? g : -g;  // i s h = (-s im, s re)
+        o[2 * i] = -s * im;
+        o[2 * i + 1] = s * re;
+      } else {
+        o[2 * i] = g * re;
+        o[2 * i + 1] = g * im;
+      }
+    }
+  }
+}
+
 OCEAN_VECTOR_CLONES
 void combine_jacobian(const float* xx, const float* __restrict zz, const float* __restrict xz, float* jacobian,
                       std::size_t count) {

@@ -19,10 +19,12 @@ struct WakeSampler::Plan {
     for (int i = 0; i < columns; ++i) kx[i] = wavenumber(i, size_m);
     kz.resize(grid);
     for (int j = 0; j < grid; ++j) kz[j] = wavenumber(j < grid / 2 ? j : j - grid, size_m);
-    inverse_k.resize(static_cast<std::size_t>(grid) * columns);
+    length_k.resize(static_cast<std::size_t>(grid) * columns);
+    inverse_k.resize(length_k.size());
     for (int j = 0; j < grid; ++j)
       for (int i = 0; i < columns; ++i) {
         const double k = std::hypot(kx[i], kz[j]);
+        length_k[static_cast<std::size_t>(j) * columns + i] = k;
         inverse_k[static_cast<std::size_t>(j) * columns + i] = k > 0.0 ? 1.0 / k : 0.0;
       }
   }
@@ -31,7 +33,7 @@ struct WakeSampler::Plan {
   FftwArray<fftwf_complex> spectrum;
   std::vector<std::complex<double>> band;  // the wake's modes on this grid's half spectrum
   double size_m = 0.0;
-  std::vector<double> kx, kz, inverse_k;
+  std::vector<double> kx, kz, length_k, inverse_k;
 };
 
 WakeSampler::WakeSampler() = default;
@@ -47,7 +49,7 @@ WakeSampler::Plan& WakeSampler::plan(int grid) {
 
 namespace {
 
-// One channel: each mode times `factor(kx, kz, 1/k)`, a real number, or i times it where
+// One channel: each mode times `factor(kx, kz, k, 1/k)`, a real number, or i times it where
 // `Imaginary` (a derivative), synthesized into `out`.
 template <bool Imaginary, typename Factor>
 void synthesize(WakeSampler::Plan& p, Factor factor, std::vector<float>& out) {
@@ -55,7 +57,7 @@ void synthesize(WakeSampler::Plan& p, Factor factor, std::vector<float>& out) {
   for (int j = 0; j < grid; ++j)
     for (int i = 0; i < columns; ++i) {
       const std::size_t m = static_cast<std::size_t>(j) * columns + i;
-      const double f = factor(p.kx[i], p.kz[j], p.inverse_k[m]);
+      const double f = factor(p.kx[i], p.kz[j], p.length_k[m], p.inverse_k[m]);
       const std::complex<double> v = p.band[m];
       p.spectrum[m][0] = static_cast<float>(Imaginary ? -(v.imag() * f) : v.real() * f);
       p.spectrum[m][1] = static_cast<float>(Imaginary ? v.real() * f : v.imag() * f);
@@ -64,20 +66,15 @@ void synthesize(WakeSampler::Plan& p, Factor factor, std::vector<float>& out) {
   p.fft.execute(p.spectrum.get(), out.data());
 }
 
-// A channel's factor of the height spectrum (common/channels.hpp; -i G and G for the choppy
-// kinds), its products taken left to right as they always were: the frames' bits depend on it.
-double channel_factor(const ChannelInfo& c, double lambda, double kx, double kz, double inv_k) {
+// A channel's factor of the height spectrum (common/channels.hpp: -i G for disp, G for
+// derivative), its products taken as they always were: the frames' bits depend on it.
+double wake_factor(const ChannelInfo& c, double lambda, double kx, double kz, double k, double inv_k) {
   switch (c.kind) {
     case ChannelKind::height: return 1.0;
     case ChannelKind::slope_x: return kx;
     case ChannelKind::slope_z: return kz;
-    case ChannelKind::disp:
-    case ChannelKind::derivative: {
-      double g = c.kind == ChannelKind::disp ? -lambda : lambda;
-      for (int i = 0; i < c.gx; ++i) g *= kx;
-      for (int i = 0; i < c.gz; ++i) g *= kz;
-      return g * inv_k;
-    }
+    case ChannelKind::disp: return -ocean::channel_factor(c.factor, lambda, kx, kz, k, inv_k);
+    case ChannelKind::derivative: return ocean::channel_factor(c.factor, lambda, kx, kz, k, inv_k);
     case ChannelKind::none: break;
   }
   return 0.0;
@@ -122,7 +119,9 @@ void WakeSampler::sample(std::span<const WakeField* const> wakes, int grid, Fram
     std::vector<float>& field = out.*kFrameChannels[static_cast<std::size_t>(ch)];
     field.clear();
     if (!requested(static_cast<std::size_t>(ch), request)) continue;
-    const auto factor = [&](double kx, double kz, double inv_k) { return channel_factor(c, lambda, kx, kz, inv_k); };
+    const auto factor = [&](double kx, double kz, double k, double inv_k) {
+      return wake_factor(c, lambda, kx, kz, k, inv_k);
+    };
     if (imaginary(c.kind)) synthesize<true>(p, factor, field);
     else synthesize<false>(p, factor, field);
   }

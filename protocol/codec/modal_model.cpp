@@ -20,6 +20,16 @@
 namespace ocean::codec {
 namespace {
 
+// G / lambda of a row (CODEC.md 7.2): kx^gx kz^gz, times |k| or divided by it per power of |k|.
+double ratio_of(const ChannelFactor& f, double kx, double kz, double k) {
+  double g = 1.0;
+  for (int i = 0; i < f.gx; ++i) g *= kx;
+  for (int i = 0; i < f.gz; ++i) g *= kz;
+  for (int i = 0; i < f.gk; ++i) g *= k;
+  for (int i = 0; i > f.gk; --i) g /= k;
+  return f.sign < 0 ? -g : g;
+}
+
 const StreamConfig& require_valid(const StreamConfig& config) {
   const std::string err = validate(config);
   if (!err.empty()) throw std::invalid_argument("stream config: " + err);
@@ -252,10 +262,10 @@ void ModalModel::step_wake(WakeSpan s, std::uint64_t steps, Tick first, WakeForc
   }
 }
 
-// G = kx^gx kz^gz / |k| per mode (0 at DC and Nyquist), once; then in float for the choppiness.
+// G per mode without lambda (0 at DC and Nyquist), once per stream; then in float with the
+// choppiness (the rows that carry it) and the channel's units (CODEC.md 7.2).
 void ModalModel::build_choppy_factors(double choppiness) {
   const std::size_t m = a_.size();
-  const auto factored = [](const ChannelInfo& c) { return c.kind == ChannelKind::disp || c.kind == ChannelKind::derivative; };
   for (int ch = 0; ch < kChannelCount; ++ch) {
     const ChannelInfo& info = kChannels[ch];
     if (!factored(info) || !carried(info, normals_, choppy_) || !ratio_[ch].empty()) continue;
@@ -268,11 +278,7 @@ void ModalModel::build_choppy_factors(double choppiness) {
         for (int c = 0; c < n / 2; ++c) {
           const double kx = model::kTwoPi * c / l.patch_x_m;
           const double k = std::sqrt(kx * kx + kz * kz);
-          if (k == 0.0) continue;
-          double power = 1.0;
-          for (int i = 0; i < info.gx; ++i) power *= kx;
-          for (int i = 0; i < info.gz; ++i) power *= kz;
-          ratio_[ch][l.modes_at + static_cast<std::size_t>(r) * hc + c] = power / k;
+          if (k != 0.0) ratio_[ch][l.modes_at + static_cast<std::size_t>(r) * hc + c] = ratio_of(info.factor, kx, kz, k);
         }
       }
     }
@@ -280,8 +286,10 @@ void ModalModel::build_choppy_factors(double choppiness) {
   for (int ch = 0; ch < kChannelCount; ++ch) {
     if (ratio_[ch].empty()) continue;
     channel_factor_[ch].resize(m);
+    const bool scaled = kChannels[ch].factor.choppy;
     for (std::size_t i = 0; i < m; ++i)
-      channel_factor_[ch][i] = static_cast<float>(choppiness * ratio_[ch][i] * unit_factor_[ch]);
+      channel_factor_[ch][i] = static_cast<float>(scaled ? choppiness * ratio_[ch][i] * unit_factor_[ch]
+                                                         : ratio_[ch][i] * unit_factor_[ch]);
   }
   factor_choppiness_ = choppiness;
 }

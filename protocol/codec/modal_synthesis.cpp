@@ -48,15 +48,13 @@ int ModalModel::plan_channels(double choppiness, UnroundedFields& out, std::vect
     out.channels[index].assign(zeros ? nn : 0, 0.0f);
     if (rounded) rounded[index]->assign(zeros ? nn : 0, 0);
   };
-  // A choppy stream at choppiness 0: every factor is 0, so every field is exactly 0.
-  const bool factors = choppiness != 0.0;
-  if (factors && choppiness != factor_choppiness_) build_choppy_factors(choppiness);
+  if (choppiness != factor_choppiness_) build_choppy_factors(choppiness);
   for (int ch = 0; ch < kChannelCount; ++ch) {
     const ChannelInfo& info = kChannels[ch];
-    const bool factored = info.kind == ChannelKind::disp || info.kind == ChannelKind::derivative;
+    // At choppiness 0 a factor with lambda is 0, so the field is exactly 0.
     if (!carried(info, normals_, choppy_)) without_transform(ch, false);
-    else if (factored && !factors) without_transform(ch, true);
-    else channels[count++] = {ch, info.kind, factored ? channel_factor_[ch].data() : nullptr};
+    else if (factored(info) && info.factor.choppy && choppiness == 0.0) without_transform(ch, true);
+    else channels[count++] = {ch, info.kind, factored(info) ? channel_factor_[ch].data() : nullptr};
   }
   for (int i = 0; i < count; ++i) {
     out.channels[channels[i].index].resize(nn);
