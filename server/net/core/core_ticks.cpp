@@ -5,6 +5,7 @@
 
 #include "frame_records.hpp"
 #include "message_builders.hpp"
+#include "server_log.hpp"
 #include "stream_wire.hpp"
 #include "stream_wire.hpp"
 
