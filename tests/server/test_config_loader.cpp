@@ -34,7 +34,7 @@ TEST_CASE("no flags gives the documented defaults", "[config]") {
   CHECK(r.config.tick_rate_hz == 30);
   CHECK(r.config.epoch_unix_ms == 1767225600000);  // 2026-01-01T00:00:00Z, per Python's datetime
   CHECK(r.config.profiles == std::vector<std::string>{"mobile", "desktop"});
-  CHECK_FALSE(r.config.ws_listen);  // no WebSocket port unless asked for
+  CHECK(r.config.stream_listen.empty());  // no WebSocket port unless asked for
   CHECK(r.config.ws_origins.empty());
   CHECK(r.config.admission_target == 0.85);  // AdmissionBudget's target
 }
@@ -78,7 +78,7 @@ TEST_CASE("flags set every kind of option", "[config]") {
   CHECK(c.admin_token == "s3cret");
   CHECK(c.idle_timeout_s == 2.5);
   CHECK(c.log_level == "debug");
-  CHECK(*c.ws_listen == ListenAddress{"0.0.0.0", 7701});
+  CHECK(c.stream_listen.at("ws") == ListenAddress{"0.0.0.0", 7701});
   CHECK(c.ws_origins == std::vector<std::string>{"https://ocean.example:8443", "http://localhost:8080"});
 }
 
@@ -137,12 +137,19 @@ tls-key = "/etc/ocean/privkey.pem"
   CHECK(from_file.config.profiles == std::vector<std::string>{"mobile", "lite"});
   CHECK(from_file.config.epoch_unix_ms == 1795280400250);  // same instant as 17:00:00.250Z
   CHECK(from_file.config.tick_rate_hz == 60);
+  CHECK(from_file.config.stream_listen.at("ws") == ListenAddress{"127.0.0.1", 7002});
 
   const ConfigLoadResult overridden = load({"--wind-speed", "7", "--config", file.path(), "--depth", "30"});
   REQUIRE(overridden.message == "");
   CHECK(overridden.config.scene.wind_speed_mps == 7.0);
   CHECK(overridden.config.scene.depth_m == 30.0);
   CHECK(overridden.config.listen.port == 7001);  // untouched by flags
+
+  // A transport's listen option turned off over an address takes the transport out.
+  ServerConfig config;
+  config.stream_listen["ws"] = ListenAddress{"127.0.0.1", 7002};
+  CHECK(apply_config_toml(config, "ws-listen = \"off\"\n", "off.toml") == "");
+  CHECK(config.stream_listen.empty());
 }
 
 TEST_CASE("every kind of bad value is refused with a message naming it", "[config]") {

@@ -53,7 +53,7 @@ TEST_CASE("client/net connections stream from the server on TCP and UDP") {
 
 TEST_CASE("client/net over WebSocket: frames as the encoder sent them, a refusal's reason kept, a silent upgrade ended") {
   ServerConfig config = session_test_config();
-  config.ws_listen = ListenAddress{"127.0.0.1", 0};
+  config.stream_listen["ws"] = ListenAddress{"127.0.0.1", 0};
   config.max_clients = 1;
   SessionHarness harness(config);
   asio::io_context io;

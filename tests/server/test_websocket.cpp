@@ -25,7 +25,7 @@ namespace {
 
 ServerConfig websocket_config() {
   ServerConfig config = session_test_config();
-  config.ws_listen = ListenAddress{"127.0.0.1", 0};
+  config.stream_listen["ws"] = ListenAddress{"127.0.0.1", 0};
   config.ws_origins = {"http://viewer.example:8080"};
   return config;
 }
@@ -215,7 +215,7 @@ TEST_CASE("every stream transport opens links that carry its name, and the prima
   asio::io_context context;
   asio::ip::tcp::acceptor acceptor(context, asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), 0));
   ServerConfig config;
-  REQUIRE(stream_transports().front().address(config) == &config.listen);
+  REQUIRE(listen_address(stream_transports().front(), config) == &config.listen);
   for (const StreamTransport& transport : stream_transports()) {
     asio::ip::tcp::socket client(context);
     client.connect(acceptor.local_endpoint());
@@ -237,7 +237,7 @@ TEST_CASE("every stream transport opens links that carry its name, and the prima
   CHECK(row("carrier-pigeon") == nullptr);
   // A transport the config leaves off has no address: no listener, no gauge.
   REQUIRE(row("ws") != nullptr);
-  CHECK(row("ws")->address(config) == nullptr);
-  config.ws_listen = ListenAddress{"127.0.0.1", 0};
-  CHECK(row("ws")->address(config) == &*config.ws_listen);
+  CHECK(listen_address(*row("ws"), config) == nullptr);
+  config.stream_listen["ws"] = ListenAddress{"127.0.0.1", 0};
+  CHECK(listen_address(*row("ws"), config) == &config.stream_listen.at("ws"));
 }

@@ -161,7 +161,7 @@ std::string Server::listening_line() const {
     line += ' ';
     line += t.name;
     line += '=';
-    line += at(t.address(config_), port_of(t.name));
+    line += at(listen_address(t, config_), port_of(t.name));
   }
   line += " metrics=" + at(config_.metrics_listen ? &*config_.metrics_listen : nullptr, metrics_port_);
   line += " web=" + at(config_.web_listen ? &*config_.web_listen : nullptr, web_http_ ? std::optional(web_port_) : std::nullopt);

@@ -15,7 +15,7 @@ namespace ocean::server {
 // One listener per stream transport the config enables, the primary one first.
 void Server::open_listeners() {
   for (const StreamTransport& transport : stream_transports())
-    if (const ListenAddress* address = transport.address(config_))
+    if (const ListenAddress* address = listen_address(transport, config_))
       listeners_.push_back(std::make_unique<Listener>(context_, transport, *address));
 }
 

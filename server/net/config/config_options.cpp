@@ -5,6 +5,7 @@
 #include "profile.hpp"
 #include "quoted.hpp"
 #include "scene_names.hpp"
+#include "stream_listen_options.hpp"
 #include "timeline_log.hpp"
 
 #include <charconv>
@@ -14,6 +15,7 @@
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 namespace ocean::server {
 namespace {
@@ -34,7 +36,8 @@ std::string hex_digit_error(std::string_view path) {
   return "file '" + std::string(path) + "' must hold exactly 64 hex digits (a 32-byte key)";
 }
 
-const ConfigOption kOptions[] = {
+// The addresses the server listens on: the primary transport's (TCP), UDP's, the metrics'.
+const ConfigOption kNetworkOptions[] = {
     {"listen", "ADDR:PORT", "TCP address to accept clients on; UDP uses it too unless --udp-listen is given (port 0 = any free port)",
      ValueKind::text, false,
      [](ServerConfig& c, std::string_view v) {
@@ -55,10 +58,11 @@ const ConfigOption kOptions[] = {
      ValueKind::text, false,
      [](ServerConfig& c, std::string_view v) { return apply_address(c.metrics_listen, v, true); },
      [](const ServerConfig& c) { return show_optional_address(c.metrics_listen, "off"); }},
-    {"ws-listen", "ADDR:PORT|off", "WebSocket address for browser clients (binary messages, no UDP); 'off' (default) disables it",
-     ValueKind::text, false,
-     [](ServerConfig& c, std::string_view v) { return apply_address(c.ws_listen, v, true); },
-     [](const ServerConfig& c) { return show_optional_address(c.ws_listen, "off"); }},
+};
+
+// After those, each optional stream transport's listen option (stream_listen_options: --ws-listen),
+// then these.
+const ConfigOption kOptions[] = {
     {"ws-origins", "LIST",
      "comma-separated page origins (scheme://host[:port]) whose WebSocket handshakes are accepted, or '*' for any; "
      "clients that send no Origin are always accepted",
@@ -312,17 +316,26 @@ const ConfigOption kOptions[] = {
 
 }  // namespace
 
-std::span<const ConfigOption> config_options() { return kOptions; }
+std::span<const ConfigOption> config_options() {
+  static const std::vector<ConfigOption> options = [] {
+    const std::span<const ConfigOption> transports = stream_listen_options();
+    std::vector<ConfigOption> all(std::begin(kNetworkOptions), std::end(kNetworkOptions));
+    all.insert(all.end(), transports.begin(), transports.end());
+    all.insert(all.end(), std::begin(kOptions), std::end(kOptions));
+    return all;
+  }();
+  return options;
+}
 
 const ConfigOption* find_config_option(std::string_view name) {
-  for (const ConfigOption& option : kOptions)
+  for (const ConfigOption& option : config_options())
     if (option.name == name) return &option;
   return nullptr;
 }
 
 std::string describe_config(const ServerConfig& config) {
   std::string out;
-  for (const ConfigOption& option : kOptions) {
+  for (const ConfigOption& option : config_options()) {
     if (!out.empty()) out += ' ';
     out.append(option.name);
     out += '=';

@@ -60,6 +60,17 @@ std::string apply_address(std::optional<ListenAddress>& target, std::string_view
   return error;
 }
 
+std::string apply_address(std::map<std::string, ListenAddress, std::less<>>& by_name, std::string_view name,
+                          std::string_view value) {
+  std::optional<ListenAddress> address;
+  if (std::string error = apply_address(address, value, true); !error.empty()) return error;
+  if (address)
+    by_name.insert_or_assign(std::string(name), *address);
+  else if (const auto found = by_name.find(name); found != by_name.end())
+    by_name.erase(found);
+  return {};
+}
+
 std::string show_optional_address(const std::optional<ListenAddress>& address, const char* absent) {
   return address ? address->to_string() : absent;
 }

@@ -8,6 +8,8 @@
 
 #include <charconv>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,6 +40,9 @@ bool read_file(const std::string& path, std::string& contents);
 // A listen address, or (allow_off) "off" for none.
 std::string apply_address(std::optional<ListenAddress>& target, std::string_view value, bool allow_off);
 std::string show_optional_address(const std::optional<ListenAddress>& address, const char* absent);
+// The same, for one name of a map of addresses: "off" takes the name out.
+std::string apply_address(std::map<std::string, ListenAddress, std::less<>>& by_name, std::string_view name,
+                          std::string_view value);
 // Sets target from one of the names in the model's table (scene_names.hpp).
 template <typename Kind>
 std::string apply_name(Kind& target, std::string_view value, std::optional<Kind> (*from_name)(std::string_view),

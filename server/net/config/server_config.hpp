@@ -8,8 +8,11 @@
 #include "vessel_track.hpp"
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -34,11 +37,18 @@ struct ServerConfig {
   // changes it (podman -p 17700:7700/udp, a Service's port); 0 = the bound UDP port.
   int udp_public_port = 0;
   std::optional<ListenAddress> metrics_listen = ListenAddress{"127.0.0.1", 9464};  // empty = off
-  // WebSocket clients (browsers): off unless given. A browser's handshake names the page's
-  // Origin; only these are let in ("*": any). Clients that send no Origin always are.
-  std::optional<ListenAddress> ws_listen;
+  // The optional stream transports' addresses (kStreamTransports, config/stream_transports.hpp:
+  // "ws" by --ws-listen), by transport name; one absent is off. One map rather than a field each,
+  // so that a new transport's row is all the configuration needs.
+  std::map<std::string, ListenAddress, std::less<>> stream_listen;
+  const ListenAddress* stream_address(std::string_view transport) const {
+    const auto found = stream_listen.find(transport);
+    return found == stream_listen.end() ? nullptr : &found->second;
+  }
+  // WebSocket clients (browsers, "ws"): a browser's handshake names the page's Origin; only these
+  // are let in ("*": any). Clients that send no Origin always are.
   std::vector<std::string> ws_origins;
-  // The browser viewer's page, served over HTTP (off unless given); it connects to ws_listen,
+  // The browser viewer's page, served over HTTP (off unless given); it connects to the "ws" transport,
   // whose Origin check then also lets in this page as the browser names it. web_root empty: the
   // build tree's web/ or the installed share/ocean/web.
   std::optional<ListenAddress> web_listen;

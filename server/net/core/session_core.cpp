@@ -345,7 +345,7 @@ void SessionCore::update_client_gauges() {
     // back to 0 (a transport missing here kept its last count for good).
     std::map<std::string_view, double> by_transport{{"udp", 0.0}};
     for (const StreamTransport& transport : stream_transports())
-      if (transport.address(host_.config)) by_transport[transport.name] = 0.0;
+      if (listen_address(transport, host_.config)) by_transport[transport.name] = 0.0;
     for (const auto& session : sessions_)
       if (session->stream == stream.get()) by_transport[session->transport()] += 1.0;
     for (const auto& [transport, count] : by_transport) host_.metrics.clients(stream->profile().name, transport).set(count);

@@ -1,8 +1,16 @@
 #include "tcp_link.hpp"
 
+#include "open_link.hpp"
+#include "transport_context.hpp"
+
 #include <asio/write.hpp>
 
 namespace ocean::server {
+
+std::shared_ptr<StreamLink> TcpLink::open(asio::ip::tcp::socket socket, const TransportContext& context) {
+  return std::make_shared<TcpLink>(std::move(socket), context.queue_bytes);
+}
+template std::shared_ptr<StreamLink> open_link<TcpLink>(asio::ip::tcp::socket, const TransportContext&);
 
 void TcpLink::do_read() {
   stream_.read_some(asio::buffer(read_buffer_), [self = self<TcpLink>()](std::error_code error, std::size_t n) {

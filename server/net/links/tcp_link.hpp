@@ -11,10 +11,14 @@
 
 namespace ocean::server {
 
+struct TransportContext;  // transport_context.hpp
+
 class TcpLink final : public SocketStreamLink {
  public:
   TcpLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes)
       : SocketStreamLink(std::move(socket), max_queue_bytes) {}
+  // Its row's factory (config/stream_transports.hpp).
+  static std::shared_ptr<StreamLink> open(asio::ip::tcp::socket socket, const TransportContext& context);
 
   std::string_view transport() const override { return "tcp"; }
   void set_max_message_bytes(std::size_t bytes) override { framer_.set_max_message_bytes(bytes); }

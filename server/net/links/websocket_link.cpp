@@ -1,5 +1,7 @@
 #include "websocket_link.hpp"
 
+#include "open_link.hpp"
+#include "transport_context.hpp"
 #include "wire_limits.hpp"
 
 #include <asio/write.hpp>
@@ -36,6 +38,13 @@ WebSocketLink::WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue
       origins_(std::move(origins)),
       on_refused_(std::move(on_refused)),
       protocol_(protocol_handlers(), protocol::kDefaultMaxMessageBytes) {}
+
+std::shared_ptr<StreamLink> WebSocketLink::open(asio::ip::tcp::socket socket, const TransportContext& context) {
+  return std::make_shared<WebSocketLink>(std::move(socket), context.queue_bytes,
+                                         OriginPolicy{context.config.ws_origins, context.web_port}, context.refused,
+                                         context.tls);
+}
+template std::shared_ptr<StreamLink> open_link<WebSocketLink>(asio::ip::tcp::socket, const TransportContext&);
 
 WebSocketProtocol::Handlers WebSocketLink::protocol_handlers() {
   WebSocketProtocol::Handlers handlers;

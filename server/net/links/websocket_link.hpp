@@ -17,6 +17,8 @@
 
 namespace ocean::server {
 
+struct TransportContext;  // transport_context.hpp
+
 // Which browser pages may connect: a handshake's Origin must be one of these exactly
 // ("https://ocean.example:8443"), or anything with "*". A client that sends no Origin header (not
 // a browser: a native tool or a test) is always let in, as over plain TCP; one that sends an empty
@@ -42,6 +44,9 @@ class WebSocketLink final : public SocketStreamLink {
   WebSocketLink(asio::ip::tcp::socket socket, std::size_t max_queue_bytes, OriginPolicy origins,
                 std::function<void(const std::string& reason, const std::string& peer)> on_refused = {},
                 const std::shared_ptr<asio::ssl::context>& tls = nullptr);
+  // Its row's factory (config/stream_transports.hpp): the Origin policy is --ws-origins and the
+  // server's own page.
+  static std::shared_ptr<StreamLink> open(asio::ip::tcp::socket socket, const TransportContext& context);
 
   std::string_view transport() const override { return "ws"; }
   void set_max_message_bytes(std::size_t bytes) override { protocol_.set_max_message_bytes(bytes); }

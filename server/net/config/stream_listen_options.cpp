@@ -1,0 +1,51 @@
+#include "stream_listen_options.hpp"
+
+#include "option_values.hpp"
+#include "stream_transports.hpp"
+
+#include <array>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace ocean::server {
+namespace {
+
+// The optional stream transports' listen options, one per row of kStreamTransports after the
+// primary. The rows' text is copied at compile time: the rows also name their links' factories,
+// link code that this library must never reference at run time (its fuzzer links it alone).
+struct ListenRow {
+  std::string_view name, option, help;
+};
+consteval std::array<ListenRow, std::size(kStreamTransports) - 1> listen_rows() {
+  std::array<ListenRow, std::size(kStreamTransports) - 1> rows{};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const StreamTransport& row = kStreamTransports[i + 1];
+    rows[i] = {row.name, row.option, row.help};
+  }
+  return rows;
+}
+constexpr auto kListenRows = listen_rows();
+
+template <std::size_t I>
+std::string apply_stream_listen(ServerConfig& c, std::string_view v) {
+  return apply_address(c.stream_listen, kListenRows[I].name, v);
+}
+template <std::size_t I>
+std::string show_stream_listen(const ServerConfig& c) {
+  const ListenAddress* address = c.stream_address(kListenRows[I].name);
+  return address ? address->to_string() : std::string("off");
+}
+template <std::size_t... I>
+constexpr std::array<ConfigOption, sizeof...(I)> listen_options(std::index_sequence<I...>) {
+  return {ConfigOption{kListenRows[I].option, "ADDR:PORT|off", kListenRows[I].help, ValueKind::text, false,
+                       apply_stream_listen<I>, show_stream_listen<I>}...};
+}
+constexpr auto kListenOptions = listen_options(std::make_index_sequence<kListenRows.size()>());
+
+}  // namespace
+
+std::span<const ConfigOption> stream_listen_options() { return kListenOptions; }
+
+}  // namespace ocean::server
