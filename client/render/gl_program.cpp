@@ -41,6 +41,12 @@ bool has_extension(const char* name) {
 
 GLuint build_program(const char* label, const char* vertex_source, const char* fragment_source,
                      std::initializer_list<AttributeSlot> attributes, std::string& error) {
+  return build_program(label, vertex_source, fragment_source, std::span<const AttributeSlot>(attributes.begin(), attributes.size()),
+                       error);
+}
+
+GLuint build_program(const char* label, const char* vertex_source, const char* fragment_source,
+                     std::span<const AttributeSlot> attributes, std::string& error) {
   const GLuint vs = compile(GL_VERTEX_SHADER, label, vertex_source, error);
   if (!vs) return 0;
   const GLuint fs = compile(GL_FRAGMENT_SHADER, label, fragment_source, error);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <span>
 #include <string>
 
 #include <GLES2/gl2.h>
@@ -19,5 +20,7 @@ bool has_extension(const char* name);
 
 GLuint build_program(const char* label, const char* vertex_source, const char* fragment_source,
                      std::initializer_list<AttributeSlot> attributes, std::string& error);
+GLuint build_program(const char* label, const char* vertex_source, const char* fragment_source,
+                     std::span<const AttributeSlot> attributes, std::string& error);
 
 }  // namespace ocean::render

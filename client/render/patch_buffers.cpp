@@ -4,49 +4,43 @@ namespace ocean::render {
 
 void PatchBuffers::create() {
   destroy();
-  GLuint names[6];
-  glGenBuffers(6, names);
+  GLuint names[2 + kOceanStreamCount];
+  glGenBuffers(static_cast<GLsizei>(std::size(names)), names);
   positions = names[0];
   indices = names[1];
-  height = names[2];
-  slope = names[3];
-  displacement = names[4];
-  jacobian = names[5];
+  for (std::size_t i = 0; i < kOceanStreamCount; ++i) streams[i] = names[2 + i];
 }
 
 void PatchBuffers::destroy() {
-  const GLuint names[6] = {positions, indices, height, slope, displacement, jacobian};
-  for (GLuint b : names)
+  for (GLuint b : {positions, indices})
+    if (b) glDeleteBuffers(1, &b);
+  for (GLuint b : streams)
     if (b) glDeleteBuffers(1, &b);
   *this = {};
 }
 
-void PatchBuffers::bind(bool has_displacement, bool has_jacobian) const {
+void PatchBuffers::bind(const StreamsPresent& present) const {
   const auto stream = [](GLuint location, GLuint buffer, GLint components) {
     glBindBuffer(GL_ARRAY_BUFFER, buffer);
     glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, 0, nullptr);
     glEnableVertexAttribArray(location);
   };
   stream(kGrid, positions, 2);
-  stream(kHeight, height, 1);
-  stream(kSlope, slope, 2);
-  if (has_displacement) {
-    stream(kDisp, displacement, 2);
-  } else {
-    glDisableVertexAttribArray(kDisp);
-    glVertexAttrib2f(kDisp, 0.0f, 0.0f);
-  }
-  if (has_jacobian) {
-    stream(kJacobian, jacobian, 1);
-  } else {
-    glDisableVertexAttribArray(kJacobian);
-    glVertexAttrib1f(kJacobian, 1.0f);
+  for (std::size_t i = 0; i < kOceanStreamCount; ++i) {
+    const OceanStream& s = kOceanStreams[i];
+    if (present[i]) {
+      stream(s.slot, streams[i], s.components);
+      continue;
+    }
+    glDisableVertexAttribArray(s.slot);
+    glVertexAttrib2f(s.slot, s.absent[0], s.absent[1]);
   }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices);
 }
 
 void PatchBuffers::unbind() {
-  for (GLuint a : {kGrid, kHeight, kSlope, kDisp, kJacobian}) glDisableVertexAttribArray(a);
+  glDisableVertexAttribArray(kGrid);
+  for (const OceanStream& s : kOceanStreams) glDisableVertexAttribArray(s.slot);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 

@@ -2,7 +2,10 @@
 // and triangle indices, and the per-frame attribute streams bound to the ocean shader's slots.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
 #include <GLES2/gl2.h>
@@ -12,14 +15,33 @@ namespace ocean::render {
 // Attribute slots of shaders/ocean.vert.glsl, fixed before linking.
 enum OceanAttribute : GLuint { kGrid = 0, kHeight = 1, kSlope = 2, kDisp = 3, kJacobian = 4 };
 
-struct PatchBuffers {
-  GLuint positions = 0, indices = 0;                      // static
-  GLuint height = 0, slope = 0, displacement = 0, jacobian = 0;  // streamed
+// The shader's streamed attributes, one row each, in slot order from kHeight: the name the shader
+// reads, its floats per vertex, and the constant a vertex reads when a frame lacks the stream.
+struct OceanStream {
+  OceanAttribute slot;
+  const char* name;
+  GLint components;
+  float absent[2];
+};
+inline constexpr OceanStream kOceanStreams[] = {
+    {kHeight, "a_height", 1, {0.0f, 0.0f}},
+    {kSlope, "a_slope", 2, {0.0f, 0.0f}},
+    {kDisp, "a_disp", 2, {0.0f, 0.0f}},        // no displacement
+    {kJacobian, "a_jacobian", 1, {1.0f, 0.0f}},  // J = 1: no fold, no foam
+};
+inline constexpr std::size_t kOceanStreamCount = std::size(kOceanStreams);
+// Which streams a frame gave, by kOceanStreams' order.
+using StreamsPresent = std::array<bool, kOceanStreamCount>;
 
+struct PatchBuffers {
+  GLuint positions = 0, indices = 0;            // static
+  std::array<GLuint, kOceanStreamCount> streams{};  // by kOceanStreams' order
+
+  GLuint stream(OceanAttribute a) const { return streams[a - kHeight]; }
   void create();
   void destroy();
-  // Enables the attribute arrays; a stream not present becomes a constant (no displacement, J = 1).
-  void bind(bool has_displacement, bool has_jacobian) const;
+  // Enables the attribute arrays; a stream not present becomes its row's constant.
+  void bind(const StreamsPresent& present) const;
   static void unbind();
 };
 

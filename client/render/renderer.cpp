@@ -40,10 +40,9 @@ bool Renderer::build_ocean_program(OceanProgram& program, bool coarse, bool wake
   if (lace) fragment.insert(fragment.find('\n') + 1, "#define FOAM_LACE\n");
   const std::string name = std::string("ocean") + (coarse ? " (coarse cascade)" : "") + (wake ? " (wake)" : "") +
                            (lace ? " (lace)" : "");
-  program.id = build_program(name.c_str(), vertex.c_str(), fragment.c_str(),
-                             {{kGrid, "a_grid"}, {kHeight, "a_height"}, {kSlope, "a_slope"},
-                              {kDisp, "a_disp"}, {kJacobian, "a_jacobian"}},
-                             error_);
+  std::array<AttributeSlot, 1 + kOceanStreamCount> slots{{{kGrid, "a_grid"}}};
+  for (std::size_t i = 0; i < kOceanStreamCount; ++i) slots[1 + i] = {kOceanStreams[i].slot, kOceanStreams[i].name};
+  program.id = build_program(name.c_str(), vertex.c_str(), fragment.c_str(), slots, error_);
   if (!program.id) return false;
   const auto loc = [&](const char* name) { return glGetUniformLocation(program.id, name); };
   program.u = {loc("u_clip_from_rel"), loc("u_tile_offset"), loc("u_eye_height"), loc("u_choppiness"),
@@ -177,28 +176,29 @@ bool Renderer::upload_frame(const FrameStreams& f) {
   max_height_ = max_h;
   const auto [sx, sz] = slopes_or_differences(n, patch_x_, patch_z_, f.height, f.slope_x, f.slope_z, scratch_slope_x_,
                                               scratch_slope_z_);
-  has_disp_ = f.disp_x != nullptr;
+  const bool has_disp = f.disp_x != nullptr;
   max_disp_ = 0.0f;
-  if (has_disp_) {
+  if (has_disp) {
     float max_d2 = 0.0f;
     for (std::size_t i = 0; i < count; ++i) max_d2 = std::max(max_d2, f.disp_x[i] * f.disp_x[i] + f.disp_z[i] * f.disp_z[i]);
     max_disp_ = std::sqrt(max_d2) * desc_.choppiness;
   }
-  has_jacobian_ = f.jacobian != nullptr;
 
   // The tile mesh takes every sample; the far block every coarsest-stride sample, repeated.
-  const auto stream = [&](GLuint tile_buffer, GLuint far_buffer, std::initializer_list<const float*> fields) {
+  const auto stream = [&](OceanAttribute a, std::initializer_list<const float*> fields) {
+    present_[a - kHeight] = fields.begin()[0] != nullptr;
+    if (!present_[a - kHeight]) return;
     expand_periodic(n, fields, scratch_);
-    upload_stream(tile_buffer, scratch_);
+    upload_stream(tile_.stream(a), scratch_);
     if (far_span_ > 1) {
       expand_periodic_strided(n, 1 << lod_levels_, far_span_, fields, scratch_);
-      upload_stream(far_buffer, scratch_);
+      upload_stream(far_.stream(a), scratch_);
     }
   };
-  stream(tile_.height, far_.height, {f.height});
-  stream(tile_.slope, far_.slope, {sx, sz});
-  if (has_disp_) stream(tile_.displacement, far_.displacement, {f.disp_x, f.disp_z});
-  if (has_jacobian_) stream(tile_.jacobian, far_.jacobian, {f.jacobian});
+  stream(kHeight, {f.height});
+  stream(kSlope, {sx, sz});
+  stream(kDisp, {f.disp_x, f.disp_z});
+  stream(kJacobian, {f.jacobian});
   has_frame_ = true;
   return true;
 }
@@ -289,7 +289,7 @@ void Renderer::draw_tiles(const TileSelection& tiles) {
   // Tiles and chunks first (nearest first), then the far blocks with their own buffers.
   const OceanUniforms& u = ocean_program().u;
   const bool coarse = coarse_.active(), wake = wake_.active();
-  tile_.bind(has_disp_, has_jacobian_);
+  tile_.bind(present_);
   for (const TileDraw& t : tiles.draws) {
     if (t.span > 1) continue;
     const IndexRange& range = index_ranges_[((t.chunk + 1) * (lod_levels_ + 1) + t.level) * kEdgeMaskCount + t.coarser_edges];
@@ -305,7 +305,7 @@ void Renderer::draw_tiles(const TileSelection& tiles) {
   bool far_bound = false;
   for (const TileDraw& t : tiles.draws) {
     if (t.span == 1) continue;
-    if (!far_bound) far_.bind(has_disp_, has_jacobian_);
+    if (!far_bound) far_.bind(present_);
     far_bound = true;
     glUniform2f(u.tile_offset, t.offset_relative.x, t.offset_relative.y);
     if (coarse) glUniform2fv(u.coarse_origin, 1, glm::value_ptr(coarse_origin(t.ix, t.iz)));

@@ -214,7 +214,8 @@ class Renderer {
   int n_ = 0, lod_levels_ = 0;
   float patch_x_ = 0.0f, patch_z_ = 0.0f;
 
-  bool has_frame_ = false, has_disp_ = false, has_jacobian_ = false;
+  bool has_frame_ = false;
+  StreamsPresent present_{};  // the streams the last frame gave
   float max_height_ = 0.0f, max_disp_ = 0.0f;
   std::vector<glm::vec3> horizon_ring_;
   std::vector<float> scratch_, scratch_slope_x_, scratch_slope_z_;
