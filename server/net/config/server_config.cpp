@@ -113,6 +113,22 @@ std::string validate_in_square(const model::VesselTrack& track, double origin_x_
   return {};
 }
 
+namespace {
+
+// The page, the WebSocket and their TLS go together.
+std::string validate_browser_listeners(const ServerConfig& config) {
+  if (config.web_listen && !config.stream_address("ws"))
+    return "--web-listen serves the browser viewer, which connects over WebSocket: give --ws-listen too";
+  if (config.tls_cert.empty() != config.tls_key.empty())
+    return config.tls_cert.empty() ? "--tls-key needs --tls-cert (the certificate the key belongs to)"
+                                   : "--tls-cert needs --tls-key (the certificate's private key)";
+  if (!config.tls_cert.empty() && !config.stream_address("ws"))
+    return "--tls-cert secures the browser listeners (--ws-listen, --web-listen): give --ws-listen too";
+  return {};
+}
+
+}  // namespace
+
 std::string validate_server_config(const ServerConfig& config) {
   if (std::string error = model::validate(config.scene); !error.empty()) return name_scene_flag(error);
   std::string schedule_error;
@@ -156,13 +172,7 @@ std::string validate_server_config(const ServerConfig& config) {
     return "--log-level '" + config.log_level + "': must be one of trace, debug, info, warn, error, critical, off";
   if (!config.admin_token_file.empty() && config.admin_token.empty())
     return "--admin-token-file '" + config.admin_token_file + "': the token is empty";
-  if (config.web_listen && !config.stream_address("ws"))
-    return "--web-listen serves the browser viewer, which connects over WebSocket: give --ws-listen too";
-  if (config.tls_cert.empty() != config.tls_key.empty())
-    return config.tls_cert.empty() ? "--tls-key needs --tls-cert (the certificate the key belongs to)"
-                                   : "--tls-cert needs --tls-key (the certificate's private key)";
-  if (!config.tls_cert.empty() && !config.stream_address("ws"))
-    return "--tls-cert secures the browser listeners (--ws-listen, --web-listen): give --ws-listen too";
+  if (std::string error = validate_browser_listeners(config); !error.empty()) return error;
   if (std::string error = validate_profiles(config); !error.empty()) return error;
   // Every scene it will compute, the scheduled ones too, must fit every offered stream.
   std::vector<const Profile*> offered;
