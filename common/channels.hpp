@@ -1,8 +1,8 @@
 // The channels a frame carries: one row each, in coding order (the order of a chunk body's
-// corrections, CODEC.md 7.3). The codec, the sim's frame, the encoder's truth and the load test's
-// verdict iterate this table: their fields are a PerChannel, or, where readers name the fields
-// (the sim's Frame, the decoder's ReconstructedFrame), members listed beside the struct in the
-// table's order (ChannelMembers, whose length the compiler holds to the table's).
+// corrections, CODEC.md 6, and of synthesis, 7.2). The codec, the sim's frame, the encoder's truth
+// and the load test's verdict iterate this table: their fields are a PerChannel, or, where readers
+// name the fields (the sim's Frame, the decoder's ReconstructedFrame), members listed beside the
+// struct in the table's order (ChannelMembers, whose length the compiler holds to the table's).
 #pragma once
 
 #include <array>
@@ -48,21 +48,23 @@ struct ChannelInfo {
   ChannelFactor factor = {};  // disp and derivative
 };
 
-constexpr bool factored(const ChannelInfo& c) { return c.kind == ChannelKind::disp || c.kind == ChannelKind::derivative; }
+constexpr bool factored(const ChannelInfo& c) {
+  return c.kind == ChannelKind::disp || c.kind == ChannelKind::derivative;
+}
 
 // The displacement D = -i lambda k/|k| H (Tessendorf's choppy waves) and its derivatives
 // dDx/dx = lambda kx^2/|k| H, ...: the inputs of the Jacobian.
-inline constexpr ChannelFactor kDisplacement(std::uint8_t gx, std::uint8_t gz) { return {gx, gz, -1, true, 1}; }
+constexpr ChannelFactor displacement_factor(std::uint8_t gx, std::uint8_t gz) { return {gx, gz, -1, true, 1}; }
 
 inline constexpr ChannelInfo kChannels[] = {
     {"height", ChannelGroup::always, ChannelUnit::height, ChannelKind::height},
     {"slope_x", ChannelGroup::normals, ChannelUnit::slope, ChannelKind::slope_x},
     {"slope_z", ChannelGroup::normals, ChannelUnit::slope, ChannelKind::slope_z},
-    {"disp_x", ChannelGroup::choppy, ChannelUnit::displacement, ChannelKind::disp, kDisplacement(1, 0)},
-    {"disp_z", ChannelGroup::choppy, ChannelUnit::displacement, ChannelKind::disp, kDisplacement(0, 1)},
-    {"disp_xx", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, kDisplacement(2, 0)},
-    {"disp_zz", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, kDisplacement(0, 2)},
-    {"disp_xz", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, kDisplacement(1, 1)},
+    {"disp_x", ChannelGroup::choppy, ChannelUnit::displacement, ChannelKind::disp, displacement_factor(1, 0)},
+    {"disp_z", ChannelGroup::choppy, ChannelUnit::displacement, ChannelKind::disp, displacement_factor(0, 1)},
+    {"disp_xx", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, displacement_factor(2, 0)},
+    {"disp_zz", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, displacement_factor(0, 2)},
+    {"disp_xz", ChannelGroup::choppy, ChannelUnit::slope, ChannelKind::derivative, displacement_factor(1, 1)},
 };
 inline constexpr int kChannelCount = static_cast<int>(std::size(kChannels));
 

@@ -34,7 +34,7 @@ constexpr const auto& channel_members(const Frame*) { return kFrameChannels; }
 // Every field of a frame: its channels, then the Jacobian made of the choppy ones.
 inline constexpr auto kFrameFields = [] {
   std::array<std::vector<float> Frame::*, kChannelCount + 1> all{};
-  for (int ch = 0; ch < kChannelCount; ++ch) all[static_cast<std::size_t>(ch)] = kFrameChannels[static_cast<std::size_t>(ch)];
+  for (std::size_t ch = 0; ch < kChannelCount; ++ch) all[ch] = kFrameChannels[ch];
   all[kChannelCount] = &Frame::jacobian;
   return all;
 }();

@@ -264,7 +264,7 @@ void ModalModel::step_wake(WakeSpan s, std::uint64_t steps, Tick first, WakeForc
 
 // G per mode without lambda (0 at DC and Nyquist), once per stream; then in float with the
 // choppiness (the rows that carry it) and the channel's units (CODEC.md 7.2).
-void ModalModel::build_choppy_factors(double choppiness) {
+void ModalModel::build_factors(double choppiness) {
   const std::size_t m = a_.size();
   for (int ch = 0; ch < kChannelCount; ++ch) {
     const ChannelInfo& info = kChannels[ch];

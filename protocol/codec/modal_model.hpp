@@ -119,7 +119,8 @@ class ModalModel {
   };
   int plan_channels(double choppiness, UnroundedFields& out, std::vector<std::int64_t>* const* rounded,
                     SynthesisChannel* channels);
-  void build_choppy_factors(double choppiness);
+  // G of every factored row the stream carries, in float for this choppiness (CODEC.md 7.2).
+  void build_factors(double choppiness);
   // Both synthesize()s: `rounded` null, or the SampleFields' channels in coding order.
   void synthesize_channels(const HalfSpectrum& cur, double choppiness, UnroundedFields& out,
                            std::vector<std::int64_t>* const* rounded);

@@ -48,7 +48,7 @@ int ModalModel::plan_channels(double choppiness, UnroundedFields& out, std::vect
     out.channels[index].assign(zeros ? nn : 0, 0.0f);
     if (rounded) rounded[index]->assign(zeros ? nn : 0, 0);
   };
-  if (choppiness != factor_choppiness_) build_choppy_factors(choppiness);
+  if (choppiness != factor_choppiness_) build_factors(choppiness);
   for (int ch = 0; ch < kChannelCount; ++ch) {
     const ChannelInfo& info = kChannels[ch];
     // At choppiness 0 a factor with lambda is 0, so the field is exactly 0.
