@@ -98,19 +98,18 @@ std::vector<std::uint8_t> encode_body(const BodyLayout& layout, std::uint32_t be
   const double after_key = rc.cost_bits();
   if (end > layout.spectral_items) {
     const SampleRange r = samples_of(layout, begin, end);
-    double after[3] = {after_key, after_key, after_key};  // the cost after each group's channels
+    double group_bits[3] = {};  // what each ChannelGroup's channels cost
     for (int ch = 0; ch < kCorrectionChannels; ++ch) {
       const ChannelInfo& info = kChannels[ch];
       if (!carried(info, layout.normals, layout.choppy)) continue;
+      const double before = rc.cost_bits();
       encode_channel(rc, *m, ch, corr[ch], r);
-      after[static_cast<int>(info.group)] = rc.cost_bits();
+      group_bits[static_cast<int>(info.group)] += rc.cost_bits() - before;
     }
-    const double after_height = after[0];
-    const double after_slopes = std::max(after_height, after[1]);
     if (cost) {
-      cost->height_bits += after_height - after_key;
-      cost->slope_bits += after_slopes - after_height;
-      cost->choppy_bits += std::max(after_slopes, after[2]) - after_slopes;
+      cost->height_bits += group_bits[static_cast<int>(ChannelGroup::always)];
+      cost->slope_bits += group_bits[static_cast<int>(ChannelGroup::normals)];
+      cost->choppy_bits += group_bits[static_cast<int>(ChannelGroup::choppy)];
     }
   }
   if (cost) cost->key_bits += after_key;

@@ -240,9 +240,8 @@ Corrections Encoder::correct(Tick tick, const ModalState& predicted) {
   for (int ch = 0; ch < kChannelCount; ++ch) {
     const ChannelUnit unit = kChannels[ch].unit;
     if (!carries(config_, kChannels[ch])) continue;
-    const float step = static_cast<float>(step_of(config_, unit));
-    correct_channel(fields_[ch], truth[ch], static_cast<double>(step) / static_cast<double>(1 << frac_bits(unit)), step,
-                    quantum_shift(unit), corr[ch]);
+    correct_channel(fields_[ch], truth[ch], unit_scale(config_, unit), step_of(config_, unit), quantum_shift(unit),
+                    corr[ch]);
   }
   return corr;
 }

@@ -14,10 +14,7 @@ namespace {
 // Per channel in coding order: what one unit of its field is in the output's units.
 std::array<double, kCorrectionChannels> output_scales(const StreamConfig& config) {
   std::array<double, kCorrectionChannels> scales;
-  for (int ch = 0; ch < kCorrectionChannels; ++ch) {
-    const ChannelUnit unit = kChannels[ch].unit;
-    scales[ch] = step_of(config, unit) / static_cast<double>(1 << frac_bits(unit));
-  }
+  for (int ch = 0; ch < kCorrectionChannels; ++ch) scales[ch] = unit_scale(config, kChannels[ch].unit);
   return scales;
 }
 

@@ -78,9 +78,7 @@ ModalModel::ModalModel(const StreamConfig& config)
   const double factor = (static_cast<double>(config.height_step_m) / 65536.0) /
                         (static_cast<double>(config.slope_step) / 4096.0);
   for (int ch = 0; ch < kChannelCount; ++ch) {
-    const ChannelUnit unit = kChannels[ch].unit;
-    unit_factor_[ch] = (static_cast<double>(config.height_step_m) / 65536.0) /
-                       (step_of(config, unit) / static_cast<double>(1 << frac_bits(unit)));
+    unit_factor_[ch] = unit_scale(config, ChannelUnit::height) / unit_scale(config, kChannels[ch].unit);
   }
   std::size_t largest = 0;
   wake_at_ = config.modes();

@@ -24,6 +24,10 @@ namespace ocean::codec {
 // heights in disp_step, the Jacobian's inputs like slopes; corrections count quarter steps.
 constexpr int frac_bits(ChannelUnit u) { return u == ChannelUnit::slope ? 12 : 16; }
 constexpr int quantum_shift(ChannelUnit u) { return frac_bits(u) - 2; }
+// What one unit of a channel's fields is in its own measure (metres, or a slope): step / 2^bits.
+inline double unit_scale(const StreamConfig& config, ChannelUnit u) {
+  return step_of(config, u) / static_cast<double>(1 << frac_bits(u));
+}
 inline constexpr int kHeightFracBits = frac_bits(ChannelUnit::height);
 inline constexpr int kHeightQuantumShift = quantum_shift(ChannelUnit::height);
 inline constexpr int kRecurrenceBits = 48;   // a(k) in Q48

@@ -12,18 +12,23 @@
 namespace ocean::server {
 namespace {
 
-// The optional stream transports' listen options, one per row of kStreamTransports after the
-// primary. The rows' text is copied at compile time: the rows also name their links' factories,
-// link code that this library must never reference at run time (its fuzzer links it alone).
+// The optional stream transports' listen options, one per row of kStreamTransports that names one
+// (the primary's, --listen, is an ordinary option). The rows' text is copied at compile time: the
+// rows also name their links' factories, link code that this library must never reference at run
+// time (its fuzzer links it alone).
 struct ListenRow {
   std::string_view name, option, help;
 };
-consteval std::array<ListenRow, std::size(kStreamTransports) - 1> listen_rows() {
-  std::array<ListenRow, std::size(kStreamTransports) - 1> rows{};
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const StreamTransport& row = kStreamTransports[i + 1];
-    rows[i] = {row.name, row.option, row.help};
-  }
+consteval std::size_t listen_row_count() {
+  std::size_t count = 0;
+  for (const StreamTransport& row : kStreamTransports) count += !row.option.empty();
+  return count;
+}
+consteval std::array<ListenRow, listen_row_count()> listen_rows() {
+  std::array<ListenRow, listen_row_count()> rows{};
+  std::size_t i = 0;
+  for (const StreamTransport& row : kStreamTransports)
+    if (!row.option.empty()) rows[i++] = {row.name, row.option, row.help};
   return rows;
 }
 constexpr auto kListenRows = listen_rows();

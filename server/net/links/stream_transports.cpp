@@ -7,7 +7,7 @@ namespace ocean::server {
 std::span<const StreamTransport> stream_transports() { return kStreamTransports; }
 
 const ListenAddress* listen_address(const StreamTransport& transport, const ServerConfig& config) {
-  if (&transport == &kStreamTransports[0]) return &config.listen;
+  if (transport.option.empty()) return &config.listen;  // the primary: --listen, an ordinary option
   return config.stream_address(transport.name);
 }
 
